@@ -1,0 +1,350 @@
+#include "penumbraCasterTopology.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace penumbra
+{
+namespace
+{
+
+constexpr std::uint32_t InvalidIndex = ~std::uint32_t(0);
+
+bool IsFinite(const glm::dvec3& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+/// Welds points closer than `tolerance` (grid hashing, each point checked against its 27 cells).
+/// Returns, for every input point, its welded index or InvalidIndex for non-finite points.
+std::vector<std::uint32_t> WeldPoints(const std::vector<glm::dvec3>& points, double tolerance,
+  std::vector<glm::dvec3>& welded)
+{
+  struct CellHash
+  {
+    std::size_t operator()(const glm::i64vec3& c) const
+    {
+      return std::size_t(c.x * 73856093LL) ^ std::size_t(c.y * 19349663LL) ^
+        std::size_t(c.z * 83492791LL);
+    }
+  };
+  std::unordered_map<glm::i64vec3, std::vector<std::uint32_t>, CellHash> grid;
+  grid.reserve(points.size());
+  const double cellSize = tolerance > 0.0 ? tolerance : 1.0;
+  const double tolerance2 = tolerance * tolerance;
+
+  std::vector<std::uint32_t> map(points.size(), InvalidIndex);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const glm::dvec3& p = points[i];
+    if (!IsFinite(p))
+    {
+      continue;
+    }
+    const glm::i64vec3 cell(glm::floor(p / cellSize));
+    std::uint32_t found = InvalidIndex;
+    for (int dz = -1; dz <= 1 && found == InvalidIndex; ++dz)
+    {
+      for (int dy = -1; dy <= 1 && found == InvalidIndex; ++dy)
+      {
+        for (int dx = -1; dx <= 1 && found == InvalidIndex; ++dx)
+        {
+          auto it = grid.find(cell + glm::i64vec3(dx, dy, dz));
+          if (it == grid.end())
+          {
+            continue;
+          }
+          for (std::uint32_t candidate : it->second)
+          {
+            const glm::dvec3 d = welded[candidate] - p;
+            if (glm::dot(d, d) <= tolerance2)
+            {
+              found = candidate;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (found == InvalidIndex)
+    {
+      found = static_cast<std::uint32_t>(welded.size());
+      welded.push_back(p);
+      grid[cell].push_back(found);
+    }
+    map[i] = found;
+  }
+  return map;
+}
+
+/// Appends the triangles of one polygon, ear-cut when it has more than three corners.
+void TriangulatePolygon(vtkPolyData* input, vtkIdType npts, const vtkIdType* ids,
+  vtkPolygon* polygon, vtkIdList* local, std::vector<glm::uvec3>& triangles)
+{
+  if (npts < 3)
+  {
+    return;
+  }
+  if (npts == 3)
+  {
+    triangles.emplace_back(ids[0], ids[1], ids[2]);
+    return;
+  }
+  polygon->Initialize(static_cast<int>(npts), ids, input->GetPoints());
+  local->Reset();
+  if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
+  {
+    for (vtkIdType t = 0; t + 2 < local->GetNumberOfIds(); t += 3)
+    {
+      triangles.emplace_back(
+        ids[local->GetId(t)], ids[local->GetId(t + 1)], ids[local->GetId(t + 2)]);
+    }
+    return;
+  }
+  // Ear cutting gives up on degenerate polygons: a fan still covers what they cover.
+  for (vtkIdType k = 1; k + 1 < npts; ++k)
+  {
+    triangles.emplace_back(ids[0], ids[k], ids[k + 1]);
+  }
+}
+
+void AppendStrip(vtkIdType npts, const vtkIdType* ids, std::vector<glm::uvec3>& triangles)
+{
+  for (vtkIdType k = 0; k + 2 < npts; ++k)
+  {
+    // Every other triangle of a strip is wound backwards.
+    if (k % 2 == 0)
+    {
+      triangles.emplace_back(ids[k], ids[k + 1], ids[k + 2]);
+    }
+    else
+    {
+      triangles.emplace_back(ids[k + 1], ids[k], ids[k + 2]);
+    }
+  }
+}
+
+void BuildEdges(CasterTopology& topo)
+{
+  struct HalfEdge
+  {
+    std::uint32_t A, B, Triangle;
+    std::int32_t Sign;
+  };
+  std::vector<HalfEdge> halfEdges;
+  halfEdges.reserve(topo.Triangles.size() * 3);
+  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
+  {
+    const glm::uvec3& tri = topo.Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
+      if (from < to)
+      {
+        halfEdges.push_back({ from, to, t, +1 });
+      }
+      else
+      {
+        halfEdges.push_back({ to, from, t, -1 });
+      }
+    }
+  }
+  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& l, const HalfEdge& r) {
+    return l.A != r.A ? l.A < r.A : (l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle);
+  });
+
+  topo.Uses.reserve(halfEdges.size());
+  TopologyReport& report = topo.Report;
+  for (std::size_t i = 0; i < halfEdges.size();)
+  {
+    std::size_t j = i;
+    Edge edge{ halfEdges[i].A, halfEdges[i].B, static_cast<std::uint32_t>(topo.Uses.size()), 0,
+      EdgeKind::Boundary };
+    for (; j < halfEdges.size() && halfEdges[j].A == edge.A && halfEdges[j].B == edge.B; ++j)
+    {
+      topo.Uses.push_back({ halfEdges[j].Triangle, halfEdges[j].Sign });
+    }
+    edge.UseCount = static_cast<std::uint32_t>(j - i);
+    if (edge.UseCount == 1)
+    {
+      edge.Kind = EdgeKind::Boundary;
+      ++report.BoundaryEdges;
+    }
+    else if (edge.UseCount == 2)
+    {
+      const bool opposite = topo.Uses[edge.FirstUse].Sign != topo.Uses[edge.FirstUse + 1].Sign;
+      edge.Kind = opposite ? EdgeKind::Manifold : EdgeKind::Inconsistent;
+      report.InconsistentEdges += opposite ? 0 : 1;
+    }
+    else
+    {
+      edge.Kind = EdgeKind::NonManifold;
+      ++report.NonManifoldEdges;
+    }
+    topo.Edges.push_back(edge);
+    i = j;
+  }
+  topo.ClosedAndOriented = !topo.Edges.empty() && report.BoundaryEdges == 0 &&
+    report.InconsistentEdges == 0 && report.NonManifoldEdges == 0;
+}
+
+CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
+  const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance, TopologyReport report)
+{
+  CasterTopology topo;
+  report.InputPoints = points.size();
+  report.InputTriangles = triangles.size();
+
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const glm::dvec3& p : points)
+  {
+    if (IsFinite(p))
+    {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    else
+    {
+      ++report.NonFinitePoints;
+    }
+  }
+  if (report.NonFinitePoints == points.size())
+  {
+    report.NonFiniteTriangles = triangles.size();
+    topo.Report = report;
+    return topo;
+  }
+  topo.Origin = 0.5 * (lo + hi);
+  const double diagonal = glm::length(hi - lo);
+
+  std::vector<glm::dvec3> relative(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    relative[i] = points[i] - topo.Origin;
+  }
+  const std::vector<std::uint32_t> map =
+    WeldPoints(relative, relativeWeldTolerance * diagonal, topo.Points);
+  report.WeldedPoints = points.size() - report.NonFinitePoints - topo.Points.size();
+
+  topo.Triangles.reserve(triangles.size());
+  for (const glm::uvec3& tri : triangles)
+  {
+    if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size() ||
+      map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
+    {
+      ++report.NonFiniteTriangles;
+      continue;
+    }
+    const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
+    const glm::dvec3 e1 = topo.Points[w.y] - topo.Points[w.x];
+    const glm::dvec3 e2 = topo.Points[w.z] - topo.Points[w.x];
+    const glm::dvec3 n = glm::cross(e1, e2);
+    // Zero-area triangles occlude nothing and have no facing; relative test keeps slivers.
+    const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
+    if (w.x == w.y || w.y == w.z || w.z == w.x || glm::dot(n, n) <= 1e-28 * scale * scale)
+    {
+      ++report.DegenerateTriangles;
+      continue;
+    }
+    topo.Triangles.push_back(w);
+  }
+
+  if (!topo.Triangles.empty())
+  {
+    glm::dvec3 rlo(std::numeric_limits<double>::max()), rhi(-std::numeric_limits<double>::max());
+    for (const glm::uvec3& tri : topo.Triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        rlo = glm::min(rlo, topo.Points[tri[k]]);
+        rhi = glm::max(rhi, topo.Points[tri[k]]);
+      }
+    }
+    topo.BoundsMin = rlo;
+    topo.BoundsMax = rhi;
+  }
+  topo.Report = report;
+  BuildEdges(topo);
+  return topo;
+}
+
+} // namespace
+
+std::string TopologyReport::Describe() const
+{
+  std::ostringstream os;
+  if (this->SkippedVerts || this->SkippedLines)
+  {
+    os << "ignored " << this->SkippedVerts << " vertex and " << this->SkippedLines
+       << " line cells (they cast no shadow); ";
+  }
+  if (this->NonFinitePoints)
+  {
+    os << this->NonFinitePoints << " points with NaN or infinite coordinates dropped with "
+       << this->NonFiniteTriangles << " triangles; ";
+  }
+  if (this->DegenerateTriangles)
+  {
+    os << this->DegenerateTriangles << " degenerate (zero-area) triangles dropped; ";
+  }
+  std::string text = os.str();
+  if (text.size() >= 2)
+  {
+    text.resize(text.size() - 2);
+  }
+  return text;
+}
+
+CasterTopology CasterTopology::Build(const std::vector<glm::dvec3>& points,
+  const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance)
+{
+  return BuildFromSoup(points, triangles, relativeWeldTolerance, TopologyReport());
+}
+
+CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTolerance)
+{
+  TopologyReport report;
+  std::vector<glm::dvec3> points;
+  std::vector<glm::uvec3> triangles;
+  if (input && input->GetPoints())
+  {
+    vtkPoints* pts = input->GetPoints();
+    points.resize(static_cast<std::size_t>(pts->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+    {
+      pts->GetPoint(i, &points[static_cast<std::size_t>(i)].x);
+    }
+    report.SkippedVerts = static_cast<std::size_t>(input->GetNumberOfVerts());
+    report.SkippedLines = static_cast<std::size_t>(input->GetNumberOfLines());
+
+    vtkNew<vtkPolygon> polygon;
+    vtkNew<vtkIdList> local;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+    {
+      polys->GetCurrentCell(npts, ids);
+      TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+    }
+    auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+    for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+    {
+      strips->GetCurrentCell(npts, ids);
+      AppendStrip(npts, ids, triangles);
+    }
+  }
+  return BuildFromSoup(points, triangles, relativeWeldTolerance, report);
+}
+
+} // namespace penumbra

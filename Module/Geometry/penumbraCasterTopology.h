@@ -1,0 +1,98 @@
+/**
+ * @file penumbraCasterTopology.h
+ * @brief Triangle and edge topology of a shadow caster, built from any vtkPolyData.
+ *
+ * Shadow volumes need every edge of the caster linked to the triangles that use it and the
+ * direction in which each triangle walks it. This header builds that once per data change:
+ * polygons and strips are triangulated, coincident points welded (split normals and texture
+ * seams duplicate points), non-finite points and degenerate triangles dropped, and every edge
+ * classified as manifold, boundary or non-manifold.
+ *
+ * Positions are stored relative to the centre of the caster's bounds so that float uploads and
+ * facing tests keep their precision far from the origin.
+ */
+#ifndef penumbraCasterTopology_h
+#define penumbraCasterTopology_h
+
+#include "vtkPenumbraGeometryModule.h" // for export macro
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace penumbra
+{
+
+enum class EdgeKind : std::uint8_t
+{
+  Boundary,   ///< one triangle
+  Manifold,   ///< two triangles walking it in opposite directions
+  Inconsistent, ///< two triangles walking it in the same direction (flipped winding)
+  NonManifold ///< three or more triangles
+};
+
+/// One triangle's use of an edge: +1 when it walks Edge::A -> Edge::B, -1 otherwise.
+struct EdgeUse
+{
+  std::uint32_t Triangle;
+  std::int32_t Sign;
+};
+
+/// An undirected edge, A < B, with its uses at [FirstUse, FirstUse + UseCount) in Uses.
+struct Edge
+{
+  std::uint32_t A;
+  std::uint32_t B;
+  std::uint32_t FirstUse;
+  std::uint32_t UseCount;
+  EdgeKind Kind;
+};
+
+/// What the build met in the input, so that callers can warn about it.
+struct TopologyReport
+{
+  std::size_t InputPoints = 0;
+  std::size_t WeldedPoints = 0;
+  std::size_t NonFinitePoints = 0;
+  std::size_t InputTriangles = 0; ///< after triangulating polygons and strips
+  std::size_t DegenerateTriangles = 0;
+  std::size_t NonFiniteTriangles = 0;
+  std::size_t SkippedVerts = 0;
+  std::size_t SkippedLines = 0;
+  std::size_t BoundaryEdges = 0;
+  std::size_t InconsistentEdges = 0;
+  std::size_t NonManifoldEdges = 0;
+
+  /// One line per problem worth a warning; empty when the input was a clean surface.
+  std::string Describe() const;
+};
+
+struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
+{
+  glm::dvec3 Origin{ 0.0 };          ///< centre of the bounds; Points are relative to it
+  std::vector<glm::dvec3> Points;     ///< welded, relative to Origin
+  std::vector<glm::uvec3> Triangles;  ///< indices into Points, none degenerate
+  std::vector<Edge> Edges;
+  std::vector<EdgeUse> Uses;
+  glm::dvec3 BoundsMin{ 0.0 }, BoundsMax{ 0.0 }; ///< relative to Origin
+  /// Every edge manifold and consistently oriented: front faces alone bound the shadow.
+  bool ClosedAndOriented = false;
+  TopologyReport Report;
+
+  bool Empty() const { return this->Triangles.empty(); }
+  /// Relative weld tolerance used by Build (times the bounds diagonal).
+  static constexpr double DefaultWeldTolerance = 1e-7;
+
+  static CasterTopology Build(vtkPolyData* input, double relativeWeldTolerance = DefaultWeldTolerance);
+  /// Same, from raw triangles (used by tests and fuzzing).
+  static CasterTopology Build(const std::vector<glm::dvec3>& points,
+    const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance = DefaultWeldTolerance);
+};
+
+} // namespace penumbra
+
+#endif

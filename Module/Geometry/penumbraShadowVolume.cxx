@@ -1,0 +1,147 @@
+#include "penumbraShadowVolume.h"
+
+#include <cstdlib>
+
+namespace penumbra
+{
+namespace
+{
+
+/// A positional light strictly outside the caster's bounds sees the whole caster inside an open
+/// half-space, so a fan over the silhouette at infinity equals the projected light cap.
+bool LightOutsideBounds(const CasterTopology& topo, const glm::dvec4& light)
+{
+  const glm::dvec3 p(light);
+  const glm::dvec3 margin = 1e-9 * (topo.BoundsMax - topo.BoundsMin) + 1e-300;
+  return glm::any(glm::lessThan(p, topo.BoundsMin - margin)) ||
+    glm::any(glm::greaterThan(p, topo.BoundsMax + margin));
+}
+
+void AppendTriangle(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b,
+  std::uint32_t c)
+{
+  out.push_back(a);
+  out.push_back(b);
+  out.push_back(c);
+}
+
+} // namespace
+
+int ShadowVolume::Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light)
+{
+  const glm::uvec3& tri = topo.Triangles[triangle];
+  const glm::dvec3& p0 = topo.Points[tri.x];
+  const glm::dvec3 normal = glm::cross(topo.Points[tri.y] - p0, topo.Points[tri.z] - p0);
+  const glm::dvec3 toLight = glm::dvec3(light) - light.w * p0;
+  const double d = glm::dot(normal, toLight);
+  return d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
+}
+
+ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored)
+{
+  ShadowVolume volume;
+  const auto n = static_cast<std::uint32_t>(topo.Points.size());
+  const bool directional = light.w == 0.0;
+
+  // Facing weight per triangle; see the counting rule in the header.
+  std::vector<std::int8_t> weight(topo.Triangles.size());
+  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
+  {
+    const int facing = Facing(topo, t, light);
+    weight[t] = static_cast<std::int8_t>(topo.ClosedAndOriented ? (facing > 0 ? 1 : 0) : facing);
+    if (weight[t] != 0)
+    {
+      ++volume.CastingTriangles;
+      const glm::uvec3& tri = topo.Triangles[t];
+      const bool flip = (weight[t] < 0) != mirrored;
+      AppendTriangle(volume.LightCap, tri.x, flip ? tri.z : tri.y, flip ? tri.y : tri.z);
+    }
+  }
+
+  for (const Edge& edge : topo.Edges)
+  {
+    int multiplicity = 0;
+    for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
+    {
+      multiplicity += topo.Uses[u].Sign * weight[topo.Uses[u].Triangle];
+    }
+    if (mirrored)
+    {
+      multiplicity = -multiplicity;
+    }
+    if (multiplicity == 0)
+    {
+      continue;
+    }
+    const bool forward = multiplicity > 0;
+    volume.Silhouette.push_back({ forward ? edge.A : edge.B, forward ? edge.B : edge.A,
+      static_cast<std::uint32_t>(std::abs(multiplicity)) });
+  }
+
+  // Side of edge a->b (walked counter-clockwise as seen from the light): outward-facing quad
+  // (b, a, a_inf, b_inf). Towards a directional light every point sweeps to the same point at
+  // infinity, so the quad is the triangle (b, a, inf) and there is no dark cap.
+  for (const SilhouetteEdge& e : volume.Silhouette)
+  {
+    for (std::uint32_t k = 0; k < e.Multiplicity; ++k)
+    {
+      AppendTriangle(volume.Sides, e.To, e.From, e.From + n);
+      if (!directional)
+      {
+        AppendTriangle(volume.Sides, e.To, e.From + n, e.To + n);
+      }
+    }
+  }
+
+  if (!directional && !volume.Silhouette.empty())
+  {
+    if (LightOutsideBounds(topo, light))
+    {
+      const std::uint32_t centre = volume.Silhouette.front().From + n;
+      for (const SilhouetteEdge& e : volume.Silhouette)
+      {
+        if (e.From + n == centre || e.To + n == centre)
+        {
+          continue; // degenerate fan triangle
+        }
+        for (std::uint32_t k = 0; k < e.Multiplicity; ++k)
+        {
+          AppendTriangle(volume.DarkCap, centre, e.To + n, e.From + n);
+        }
+      }
+    }
+    else
+    {
+      for (std::size_t i = 0; i < volume.LightCap.size(); i += 3)
+      {
+        AppendTriangle(volume.DarkCap, volume.LightCap[i] + n, volume.LightCap[i + 2] + n,
+          volume.LightCap[i + 1] + n);
+      }
+    }
+  }
+  return volume;
+}
+
+bool ShadowVolume::SilhouetteIsBalanced(std::size_t pointCount) const
+{
+  std::vector<long long> degree(pointCount, 0);
+  for (const SilhouetteEdge& e : this->Silhouette)
+  {
+    if (e.From >= pointCount || e.To >= pointCount)
+    {
+      return false;
+    }
+    degree[e.From] += e.Multiplicity;
+    degree[e.To] -= e.Multiplicity;
+  }
+  for (long long d : degree)
+  {
+    if (d != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace penumbra

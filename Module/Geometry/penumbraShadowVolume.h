@@ -1,0 +1,62 @@
+/**
+ * @file penumbraShadowVolume.h
+ * @brief Silhouettes and shadow-volume meshes of a caster for one light, without OpenGL.
+ *
+ * Counting rule (see Documentation/silhouettes.md): every triangle that is not edge-on to the
+ * light bounds its own volume (the triangle, wound to face the light, swept away from it). The
+ * caster's volume is the sum of those volumes, so a point's stencil count is the number of
+ * triangles between it and the light: zero means lit, whatever the mesh's orientation or
+ * manifoldness. Edges shared by two triangles whose swept sides cancel drop out; what is left on
+ * an edge is its multiplicity m_e = sum over its triangles of (walk sign x facing weight), drawn
+ * |m_e| times. For a closed, consistently oriented mesh the back faces shadow nothing that the
+ * front faces do not, so only front faces count (weight 1/0 instead of +1/-1) and m_e is +-1.
+ *
+ * Vertex indices refer to a buffer of 2N vertices: i < N is caster point i, N + i the same point
+ * swept to infinity away from the light (w = 0 in the vertex shader).
+ */
+#ifndef penumbraShadowVolume_h
+#define penumbraShadowVolume_h
+
+#include "penumbraCasterTopology.h"
+
+namespace penumbra
+{
+
+/// A silhouette edge walked From -> To, Multiplicity (> 0) times.
+struct SilhouetteEdge
+{
+  std::uint32_t From;
+  std::uint32_t To;
+  std::uint32_t Multiplicity;
+};
+
+struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
+{
+  std::vector<SilhouetteEdge> Silhouette;
+  /// Triangles of the swept silhouette (indices into the 2N buffer): enough for z-pass.
+  std::vector<std::uint32_t> Sides;
+  /// The casting triangles wound to face the light: the light cap, z-fail only.
+  std::vector<std::uint32_t> LightCap;
+  /// The far end of the volume at infinity (empty for directional lights): z-fail only.
+  std::vector<std::uint32_t> DarkCap;
+  /// Triangles that cast (for statistics and tests).
+  std::size_t CastingTriangles = 0;
+
+  /**
+   * Builds the volume of `topo` for a light given in the caster's object space relative to
+   * topo.Origin: (x, y, z, 1) for a positional light, (dx, dy, dz, 0) for the direction towards
+   * a directional light. `mirrored` (actor matrix with negative determinant) reverses every
+   * winding so that world-space volumes stay positively oriented.
+   */
+  static ShadowVolume Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored);
+
+  /// +1 when the triangle faces the light, -1 when it faces away, 0 when edge-on.
+  static int Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light);
+
+  /// True when every vertex has as many silhouette edges leaving as entering (closed loops).
+  bool SilhouetteIsBalanced(std::size_t pointCount) const;
+};
+
+} // namespace penumbra
+
+#endif

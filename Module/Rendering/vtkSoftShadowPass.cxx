@@ -1,0 +1,923 @@
+#include "vtkSoftShadowPass.h"
+
+#include "vtkSoftShadowPassInternals.h"
+
+#include "vtkActor.h"
+#include "vtkCollectionIterator.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationObjectBaseVectorKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkLightsPass.h"
+#include "vtkMapper.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
+#include "vtk_glew.h"
+
+#include "penumbraReceiverDec.h"
+#include "penumbraResolveFS.h"
+#include "penumbraResolveVS.h"
+#include "penumbraShadowVolumeFS.h"
+#include "penumbraShadowVolumeVS.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <array>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkSoftShadowPass);
+vtkCxxSetObjectMacro(vtkSoftShadowPass, DelegatePass, vtkRenderPass);
+
+vtkInformationKeyMacro(vtkSoftShadowPass, LIGHT_RADIUS, Double);
+vtkInformationKeyMacro(vtkSoftShadowPass, CASTS_SHADOWS, Integer);
+vtkInformationKeyMacro(vtkSoftShadowPass, RECEIVES_SHADOWS, Integer);
+
+namespace
+{
+
+glm::dmat4 ToGlm(const vtkMatrix4x4* m)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      result[column][row] = m->GetElement(row, column);
+    }
+  }
+  return result;
+}
+
+struct Plane
+{
+  glm::dvec3 Normal;
+  double Offset;
+  double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) - this->Offset; }
+};
+
+/**
+ * Whether a caster's shadow volume may reach the near-plane rectangle (McGuire et al.): true when
+ * the caster's bounds meet the convex hull of that rectangle and the light (for a directional
+ * light, the rectangle swept towards it). Conservative: only separating planes of the hull are
+ * tried, so "true" may be a false alarm, which costs z-fail but never correctness.
+ */
+bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners)
+{
+  const glm::dvec3 centre =
+    0.25 * (nearCorners[0] + nearCorners[1] + nearCorners[2] + nearCorners[3]);
+  const double size = glm::length(nearCorners[2] - nearCorners[0]);
+  const glm::dvec3 apex = light.w != 0.0 ? glm::dvec3(light) / light.w : glm::dvec3(0.0);
+  const glm::dvec3 towardsLight =
+    light.w != 0.0 ? apex - centre : glm::normalize(glm::dvec3(light)) * size;
+  const glm::dvec3 inside = centre + 0.5 * towardsLight;
+
+  std::array<Plane, 5> planes;
+  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane) {
+    glm::dvec3 n = glm::cross(b - a, c - a);
+    const double length = glm::length(n);
+    if (!(length > 1e-12 * size * size))
+    {
+      return false; // light on the near plane, or swept parallel to it
+    }
+    n /= length;
+    plane = { n, glm::dot(n, a) };
+    if (plane.Distance(inside) < 0.0)
+    {
+      plane = { -n, -plane.Offset };
+    }
+    return plane.Distance(inside) > 1e-9 * size;
+  };
+  if (!makePlane(nearCorners[0], nearCorners[1], nearCorners[2], planes[0]))
+  {
+    return true;
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec3& a = nearCorners[i];
+    const glm::dvec3& b = nearCorners[(i + 1) % 4];
+    const glm::dvec3 c = light.w != 0.0 ? apex : a + towardsLight;
+    if (!makePlane(a, b, c, planes[i + 1]))
+    {
+      return true;
+    }
+  }
+  const glm::dvec3 margin = 1e-6 * (boxMax - boxMin) + 1e-9 * size;
+  const glm::dvec3 lo = boxMin - margin, hi = boxMax + margin;
+  for (const Plane& plane : planes)
+  {
+    // The box corner furthest along the plane normal decides whether the box is all outside.
+    const glm::dvec3 furthest(plane.Normal.x > 0 ? hi.x : lo.x, plane.Normal.y > 0 ? hi.y : lo.y,
+      plane.Normal.z > 0 ? hi.z : lo.z);
+    if (plane.Distance(furthest) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
+{
+  vtkInformation* info = prop->GetPropertyKeys();
+  if (!info)
+  {
+    vtkNew<vtkInformation> keys;
+    prop->SetPropertyKeys(keys);
+    info = keys;
+  }
+  info->Append(vtkOpenGLRenderPass::RenderPasses(), pass);
+}
+
+vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
+  penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners);
+
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkSoftShadowPass::vtkInternals
+{
+public:
+  struct ShadowLight
+  {
+    vtkLight* Light;
+    int CollectionIndex; ///< index in the renderer's light collection
+    int ShaderIndex;     ///< index among switched-on lights: the N of lightColorN in VTK's shaders
+    int Layer;           ///< layer of the LI buffer
+    glm::dvec4 World;    ///< (position, 1) or (direction towards the light, 0)
+    float Attenuation;
+  };
+
+  penumbra::ShadowCaches Caches;
+  std::vector<ShadowLight> Lights;
+  std::vector<penumbra::CasterCache*> Casters;
+  std::vector<vtkProp*> Receivers;
+  std::set<vtkLight*> WarnedLights;
+
+  std::string ShaderConfiguration;
+  vtkTimeStamp ShaderStageTime;
+  bool ApplyShadows = false;
+
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> DepthStencil;
+  vtkNew<vtkTextureObject> LightIntensity;
+  int Size[2] = { 0, 0 };
+  int Origin[2] = { 0, 0 };
+  int Layers = 0;
+
+  vtkNew<vtkOpenGLBufferObject> ResolveTriangle;
+  vtkNew<vtkOpenGLVertexArrayObject> ResolveVAO;
+  vtkShaderProgram* ResolveVAOProgram = nullptr;
+
+  vtkNew<vtkOpaquePass> DepthPass;
+  vtkNew<vtkLightsPass> LightsPass;
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  std::vector<vtkSmartPointer<vtkImageData>> VisibilityImages;
+
+  glm::dmat4 WorldToClip{ 1.0 };
+  std::array<glm::dvec3, 4> NearCorners;
+
+  const ShadowLight* FindLight(int collectionIndex) const
+  {
+    for (const ShadowLight& light : this->Lights)
+    {
+      if (light.CollectionIndex == collectionIndex)
+      {
+        return &light;
+      }
+    }
+    return nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::vtkSoftShadowPass()
+  : Internals(new vtkInternals)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  this->SetDelegatePass(steps);
+}
+
+vtkSoftShadowPass::~vtkSoftShadowPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    os << "\n";
+    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+  os << indent << "ShadowsEnabled: " << this->ShadowsEnabled << "\n";
+  os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
+  os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
+     << "\n";
+  os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::SetLightRadius(vtkLight* light, double radius)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!(radius >= 0.0) || !std::isfinite(radius))
+  {
+    vtkGenericWarningMacro(
+      "vtkSoftShadowPass::SetLightRadius: radius " << radius << " is not a finite, non-negative "
+                                                   << "number; using 0 (hard shadows).");
+    radius = 0.0;
+  }
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  light->GetInformation()->Set(LIGHT_RADIUS(), radius);
+  light->Modified();
+}
+
+double vtkSoftShadowPass::GetLightRadius(vtkLight* light)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  return info && info->Has(LIGHT_RADIUS()) ? info->Get(LIGHT_RADIUS()) : 0.0;
+}
+
+namespace
+{
+void SetPropFlag(vtkProp* prop, vtkInformationIntegerKey* key, bool value)
+{
+  if (!prop)
+  {
+    return;
+  }
+  if (!prop->GetPropertyKeys())
+  {
+    vtkNew<vtkInformation> keys;
+    prop->SetPropertyKeys(keys);
+  }
+  prop->GetPropertyKeys()->Set(key, value ? 1 : 0);
+  prop->Modified();
+}
+
+bool GetPropFlag(vtkProp* prop, vtkInformationIntegerKey* key)
+{
+  vtkInformation* info = prop ? prop->GetPropertyKeys() : nullptr;
+  return !(info && info->Has(key)) || info->Get(key) != 0;
+}
+} // namespace
+
+void vtkSoftShadowPass::SetCastsShadows(vtkProp* prop, bool casts)
+{
+  SetPropFlag(prop, CASTS_SHADOWS(), casts);
+}
+
+bool vtkSoftShadowPass::GetCastsShadows(vtkProp* prop)
+{
+  return GetPropFlag(prop, CASTS_SHADOWS());
+}
+
+void vtkSoftShadowPass::SetReceivesShadows(vtkProp* prop, bool receives)
+{
+  SetPropFlag(prop, RECEIVES_SHADOWS(), receives);
+}
+
+bool vtkSoftShadowPass::GetReceivesShadows(vtkProp* prop)
+{
+  return GetPropFlag(prop, RECEIVES_SHADOWS());
+}
+
+bool vtkSoftShadowPass::LightCastsShadows(vtkLight* light)
+{
+  return light && light->GetSwitch() && !light->LightTypeIsHeadlight() &&
+    light->GetIntensity() > 0.0 && light->GetShadowAttenuation() > 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  vtkInternals& internals = *this->Internals;
+  this->NumberOfRenderedProps = 0;
+  this->NumberOfShadowingLights = 0;
+  this->NumberOfShadowVolumeTriangles = 0;
+
+  auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
+  internals.Lights.clear();
+  internals.ApplyShadows = false;
+  if (this->ShadowsEnabled && window)
+  {
+    internals.Window = window;
+    renderer->GetTiledSizeAndOrigin(
+      &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
+    // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
+    internals.LightsPass->Render(s);
+    this->CollectShadowingLights(renderer);
+  }
+  this->UpdateShaderConfiguration();
+
+  if (internals.Lights.empty() || internals.Size[0] <= 0 || internals.Size[1] <= 0)
+  {
+    internals.Lights.clear();
+    this->RenderDelegate(s);
+    return;
+  }
+
+  this->AddReceiverKeys(s);
+  this->PrepareFramebuffer(window);
+  internals.LightIntensity->Activate();
+  this->RenderDepth(s);
+  internals.LightIntensity->Deactivate();
+  this->UpdateCasters(s);
+  this->RenderLightIntensity(renderer, window);
+  internals.LightIntensity->Activate();
+  internals.ApplyShadows = true;
+  this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
+
+  this->RenderDelegate(s);
+
+  internals.ApplyShadows = false;
+  internals.LightIntensity->Deactivate();
+  this->RemoveReceiverKeys();
+  internals.Caches.PurgeUnused();
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+void vtkSoftShadowPass::RenderDelegate(const vtkRenderState* s)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  }
+  else
+  {
+    vtkWarningMacro("No delegate pass: nothing is rendered.");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  vtkLight* light;
+  int collectionIndex = 0;
+  int shaderIndex = 0;
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it)); ++collectionIndex)
+  {
+    if (!light->GetSwitch())
+    {
+      continue; // VTK's shaders number switched-on lights only
+    }
+    const int index = shaderIndex++;
+    if (!LightCastsShadows(light))
+    {
+      continue;
+    }
+    const glm::dvec3 position = glm::make_vec3(light->GetTransformedPosition());
+    glm::dvec4 world(position, 1.0);
+    if (!light->GetPositional())
+    {
+      const glm::dvec3 towards = position - glm::make_vec3(light->GetTransformedFocalPoint());
+      const double length = glm::length(towards);
+      if (!(length > 0.0) || !std::isfinite(length))
+      {
+        if (internals.WarnedLights.insert(light).second)
+        {
+          vtkWarningMacro("Directional light " << light << " has no direction (position equals "
+                                               << "focal point): it casts no shadow.");
+        }
+        continue;
+      }
+      world = glm::dvec4(towards / length, 0.0);
+    }
+    else if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
+    {
+      if (internals.WarnedLights.insert(light).second)
+      {
+        vtkWarningMacro("Light " << light << " has a non-finite position: it casts no shadow.");
+      }
+      continue;
+    }
+    internals.Lights.push_back({ light, collectionIndex, index,
+      static_cast<int>(internals.Lights.size()), world,
+      static_cast<float>(light->GetShadowAttenuation()) });
+  }
+}
+
+void vtkSoftShadowPass::UpdateShaderConfiguration()
+{
+  vtkInternals& internals = *this->Internals;
+  std::ostringstream configuration;
+  for (const auto& light : internals.Lights)
+  {
+    configuration << light.ShaderIndex << ":" << light.Layer << " ";
+  }
+  if (configuration.str() != internals.ShaderConfiguration)
+  {
+    internals.ShaderConfiguration = configuration.str();
+    internals.ShaderStageTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Receivers.clear();
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    auto actor = vtkActor::SafeDownCast(prop);
+    // Translucent surfaces are drawn over the LI buffer of what lies behind them: never shadow them.
+    if (actor && GetReceivesShadows(actor) && !actor->HasTranslucentPolygonalGeometry())
+    {
+      AddRenderPassKey(actor, this);
+      internals.Receivers.push_back(actor);
+    }
+  }
+}
+
+void vtkSoftShadowPass::RemoveReceiverKeys()
+{
+  for (vtkProp* prop : this->Internals->Receivers)
+  {
+    prop->GetPropertyKeys()->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
+  }
+  this->Internals->Receivers.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = internals.Size[0], height = internals.Size[1];
+  const int layers = static_cast<int>(internals.Lights.size());
+
+  if (!internals.Framebuffer->GetFBOIndex())
+  {
+    internals.Framebuffer->SetContext(window);
+    internals.DepthStencil->SetContext(window);
+    internals.LightIntensity->SetContext(window);
+  }
+  if (static_cast<int>(internals.DepthStencil->GetWidth()) != width ||
+    static_cast<int>(internals.DepthStencil->GetHeight()) != height)
+  {
+    internals.DepthStencil->AllocateDepthStencil(width, height);
+  }
+  if (static_cast<int>(internals.LightIntensity->GetWidth()) != width ||
+    static_cast<int>(internals.LightIntensity->GetHeight()) != height || internals.Layers != layers)
+  {
+    internals.LightIntensity->SetMinificationFilter(vtkTextureObject::Nearest);
+    internals.LightIntensity->SetMagnificationFilter(vtkTextureObject::Nearest);
+    internals.LightIntensity->Allocate3D(width, height, layers, 1, VTK_FLOAT);
+    internals.Layers = layers;
+  }
+  internals.VisibilityImages.clear();
+}
+
+void vtkSoftShadowPass::BindFramebuffer(int layer)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLFramebufferObject* fbo = internals.Framebuffer;
+  fbo->Bind();
+  // VTK 9.1 attaches depth without stencil and ignores a new slice of the same texture: attach
+  // the depth-stencil texture ourselves and re-add the LI layer.
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+    internals.DepthStencil->GetHandle(), 0);
+  fbo->RemoveColorAttachment(0);
+  fbo->AddColorAttachment(0, internals.LightIntensity, static_cast<unsigned int>(layer));
+}
+
+void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLState* ostate = internals.Window->GetState();
+  ostate->PushFramebufferBindings();
+  this->BindFramebuffer(0);
+  // No colour output at all: the LI texture is bound for sampling while this pass draws.
+  ostate->vtkglDrawBuffer(GL_NONE);
+
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglStencilMask(0xFF);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+  vtkRenderState depthState(s->GetRenderer());
+  depthState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  depthState.SetFrameBuffer(internals.Framebuffer);
+  internals.DepthPass->Render(&depthState);
+
+  ostate->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Caches.BeginFrame();
+  internals.Casters.clear();
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (!actor || !actor->GetVisibility() || !GetCastsShadows(actor) || !actor->HasOpaqueGeometry() ||
+      !actor->GetMapper())
+    {
+      continue;
+    }
+    vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0);
+    if (!data)
+    {
+      continue;
+    }
+    bool rebuilt = false;
+    penumbra::MeshCache* mesh = internals.Caches.FindMesh(data, this, rebuilt);
+    if (mesh->Topology.Empty())
+    {
+      continue;
+    }
+    penumbra::CasterCache* caster = internals.Caches.FindCaster(actor);
+    caster->Mesh = mesh;
+    const penumbra::CasterTopology& topo = mesh->Topology;
+    caster->ObjectToWorld =
+      ToGlm(actor->GetMatrix()) * glm::translate(glm::dmat4(1.0), topo.Origin);
+    caster->WorldMin = glm::dvec3(std::numeric_limits<double>::max());
+    caster->WorldMax = -caster->WorldMin;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 local((corner & 1) ? topo.BoundsMax.x : topo.BoundsMin.x,
+        (corner & 2) ? topo.BoundsMax.y : topo.BoundsMin.y,
+        (corner & 4) ? topo.BoundsMax.z : topo.BoundsMin.z);
+      const glm::dvec3 world(caster->ObjectToWorld * glm::dvec4(local, 1.0));
+      caster->WorldMin = glm::min(caster->WorldMin, world);
+      caster->WorldMax = glm::max(caster->WorldMax, world);
+    }
+    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
+    for (const auto& light : internals.Lights)
+    {
+      penumbra::VolumeCache& volume = caster->Volumes[light.Light];
+      if (volume.Update(*mesh, worldToObject * light.World, mirrored))
+      {
+        ++this->NumberOfSilhouetteUpdates;
+      }
+    }
+    internals.Casters.push_back(caster);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLState* ostate = window->GetState();
+
+  vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
+  vtkMatrix3x3* normals;
+  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
+    ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
+  // VTK keeps its key matrices transposed for OpenGL: element [i][j] is glm's column i, row j.
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      internals.WorldToClip[i][j] = worldToClip->GetElement(i, j);
+    }
+  }
+  const glm::dmat4 clipToWorld = glm::inverse(internals.WorldToClip);
+  const std::array<glm::dvec2, 4> ndc = { { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } } };
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec4 p = clipToWorld * glm::dvec4(ndc[i], -1.0, 1.0);
+    internals.NearCorners[i] = glm::dvec3(p) / p.w;
+  }
+
+  vtkShaderProgram* volumeProgram = window->GetShaderCache()->ReadyShaderProgram(
+    penumbraShadowVolumeVS, penumbraShadowVolumeFS, "");
+  if (!volumeProgram)
+  {
+    vtkErrorMacro("Could not compile the shadow-volume shader.");
+    return;
+  }
+
+  ostate->PushFramebufferBindings();
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable stencilTest(ostate, GL_STENCIL_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+  ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+
+  for (const auto& light : internals.Lights)
+  {
+    this->BindFramebuffer(light.Layer);
+    internals.Framebuffer->ActivateDrawBuffer(0);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglStencilMask(0xFF);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ostate->vtkglEnable(GL_STENCIL_TEST);
+    ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+    ostate->vtkglDepthFunc(GL_LESS);
+    window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
+    for (penumbra::CasterCache* caster : internals.Casters)
+    {
+      this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
+        light.Light, light.World, internals.WorldToClip, internals.NearCorners);
+    }
+
+    // Resolve: every geometry pixel with a non-zero count is in this light's shadow.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglEnable(GL_DEPTH_CLAMP); // the triangle lies on the far plane
+    this->DrawResolve(window, 0.0f);
+    ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  }
+  ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  ostate->PopFramebufferBindings();
+}
+
+namespace
+{
+/// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
+vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
+  penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners)
+{
+  penumbra::VolumeCache& volume = caster.Volumes[light];
+  const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
+                    lightCap = volume.CapCount();
+  if (sides == 0 && lightCap == 0)
+  {
+    return 0;
+  }
+  const glm::mat4 objectToClip(worldToClip * caster.ObjectToWorld);
+  const glm::vec4 lightObject(volume.Light);
+  program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
+  program->SetUniform4f("lightMC", glm::value_ptr(lightObject));
+  caster.Mesh->Bind(program);
+  volume.Upload();
+  volume.Indices->Bind();
+
+  vtkIdType drawn = 0;
+  const bool zFail =
+    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
+  if (!zFail)
+  {
+    // z-pass: count volume faces in front of the visible surface; caps are not needed.
+    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
+    drawn = static_cast<vtkIdType>(sides / 3);
+  }
+  else
+  {
+    // z-fail: count faces behind it, caps included; depth clamping keeps the far end at
+    // infinity from being clipped.
+    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    ostate->vtkglEnable(GL_DEPTH_CLAMP);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
+    // The light cap lies on the caster's own surface: pushed away from the eye, a visible point
+    // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
+    ostate->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 4.0f);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
+    glPolygonOffset(0.0f, 0.0f);
+    ostate->vtkglDisable(GL_POLYGON_OFFSET_FILL);
+    ostate->vtkglDisable(GL_DEPTH_CLAMP);
+    drawn = static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
+  }
+  volume.Indices->Release();
+  caster.Mesh->VAO->Release();
+  return drawn;
+}
+} // namespace
+
+void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraResolveFS, "");
+  if (!program)
+  {
+    vtkErrorMacro("Could not compile the LI resolve shader.");
+    return;
+  }
+  if (internals.ResolveTriangle->GetHandle() == 0)
+  {
+    const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
+    internals.ResolveTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
+    internals.ResolveVAOProgram = nullptr;
+  }
+  if (internals.ResolveVAOProgram != program)
+  {
+    // Releases the old VAO: must come before Bind.
+    internals.ResolveVAO->ShaderProgramChanged();
+    internals.ResolveVAO->Bind();
+    internals.ResolveVAO->AddAttributeArray(
+      program, internals.ResolveTriangle, "ndCoordIn", 0, 2 * sizeof(float), VTK_FLOAT, 2, false);
+    internals.ResolveVAOProgram = program;
+  }
+  internals.ResolveVAO->Bind();
+  program->SetUniformf("lightIntensity", lightIntensity);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  internals.ResolveVAO->Release();
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkInternals::ShadowLight* light = internals.FindLight(lightIndex);
+  vtkOpenGLRenderWindow* window = internals.Window;
+  if (!light || !window || internals.Layers == 0)
+  {
+    return nullptr;
+  }
+  if (internals.VisibilityImages.size() < internals.Lights.size())
+  {
+    internals.VisibilityImages.resize(internals.Lights.size());
+  }
+  vtkSmartPointer<vtkImageData>& image = internals.VisibilityImages[light->Layer];
+  if (image)
+  {
+    return image;
+  }
+  window->MakeCurrent();
+  vtkPixelBufferObject* download = internals.LightIntensity->Download();
+  if (!download)
+  {
+    vtkErrorMacro("Could not read the light-intensity buffer back.");
+    return nullptr;
+  }
+  const int width = internals.Size[0], height = internals.Size[1];
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  const float* data = static_cast<const float*>(download->MapPackedBuffer());
+  vtkNew<vtkFloatArray> values;
+  values->SetName("Visibility");
+  values->SetNumberOfValues(pixels);
+  std::copy(data + light->Layer * pixels, data + (light->Layer + 1) * pixels,
+    values->GetPointer(0));
+  download->UnmapPackedBuffer();
+  download->Delete();
+
+  image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  const auto& lights = this->Internals->Lights;
+  if (lights.empty())
+  {
+    return true;
+  }
+  std::ostringstream declarations;
+  declarations << penumbraReceiverDec << "uniform float penumbraAttenuation[" << lights.size()
+               << "];\n//VTK::Light::Dec";
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec", declarations.str(), false);
+
+  std::ostringstream factors;
+  for (const auto& light : lights)
+  {
+    factors << "  float penumbraFactor" << light.ShaderIndex << " = penumbraLightFactor("
+            << light.Layer << ", penumbraAttenuation[" << light.Layer << "]);\n";
+  }
+  factors << "//VTK::Light::Impl";
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl", factors.str(), false);
+  return true;
+}
+
+bool vtkSoftShadowPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,
+  // directional and positional); only diffuse and specular are scaled, ambient stays.
+  for (const auto& light : this->Internals->Lights)
+  {
+    const std::string i = std::to_string(light.ShaderIndex);
+    const std::string factor = "penumbraFactor" + i;
+    vtkShaderProgram::Substitute(fragmentShader, "diffuse += (df * lightColor" + i + ");",
+      "diffuse += (df * " + factor + " * lightColor" + i + ");", true);
+    vtkShaderProgram::Substitute(fragmentShader, "specular += (sf * lightColor" + i + ");",
+      "specular += (sf * " + factor + " * lightColor" + i + ");", true);
+    vtkShaderProgram::Substitute(fragmentShader, "radiance = lightColor" + i + ";",
+      "radiance = " + factor + " * lightColor" + i + ";", true);
+    vtkShaderProgram::Substitute(fragmentShader, "radiance = lightColor" + i + " * attenuation;",
+      "radiance = " + factor + " * lightColor" + i + " * attenuation;", true);
+  }
+  return true;
+}
+
+bool vtkSoftShadowPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.Lights.empty() || !program->IsUniformUsed("penumbraApply"))
+  {
+    return true;
+  }
+  const bool apply = internals.ApplyShadows && GetReceivesShadows(prop);
+  program->SetUniformi("penumbraApply", apply ? 1 : 0);
+  program->SetUniformi("penumbraLI", internals.LightIntensity->GetTextureUnit());
+  program->SetUniform2i("penumbraOrigin", internals.Origin);
+  program->SetUniform2i("penumbraSize", internals.Size);
+  std::vector<float> attenuation;
+  for (const auto& light : internals.Lights)
+  {
+    attenuation.push_back(light.Attenuation);
+  }
+  program->SetUniform1fv(
+    "penumbraAttenuation", static_cast<int>(attenuation.size()), attenuation.data());
+  return true;
+}
+
+vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()
+{
+  return this->Internals->ShaderStageTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Caches.ReleaseGraphicsResources();
+  internals.Framebuffer->ReleaseGraphicsResources(w);
+  internals.DepthStencil->ReleaseGraphicsResources(w);
+  internals.LightIntensity->ReleaseGraphicsResources(w);
+  internals.ResolveTriangle->ReleaseGraphicsResources();
+  internals.ResolveVAO->ReleaseGraphicsResources();
+  internals.ResolveVAOProgram = nullptr;
+  internals.DepthPass->ReleaseGraphicsResources(w);
+  internals.Layers = 0;
+  internals.VisibilityImages.clear();
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}

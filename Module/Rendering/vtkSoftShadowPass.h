@@ -1,0 +1,160 @@
+/**
+ * @class   vtkSoftShadowPass
+ * @brief   Render pass that shadows a VTK scene with robust stencil shadow volumes.
+ *
+ * Drop it into any renderer (`renderer->SetPass(pass)`) and the scene renders as VTK would
+ * (opaque, translucent, volumes, overlays) with the opaque geometry shadowed by every
+ * switched-on light that can cast shadows: positional (point and spot) and directional scene or
+ * camera lights. Headlights cast no visible shadow and are skipped at no cost.
+ *
+ * Per frame the pass
+ * 1. updates, on the CPU and only when a light, an actor's matrix or its data changed, the
+ *    silhouette of every caster for every shadowing light (in the caster's object space);
+ * 2. renders the opaque geometry's depth into its own framebuffer, which has the stencil that
+ *    VTK 9.1's window lacks;
+ * 3. for each light, draws the casters' shadow volumes (swept to infinity in the vertex shader,
+ *    depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
+ *    otherwise) into the stencil and resolves it into that light's layer of the light-intensity
+ *    (LI) buffer, a float texture array (1 lit, 0 shadowed);
+ * 4. renders the scene through its delegate (by default VTK's own render steps) with the
+ *    mappers' fragment shaders edited so that each light's diffuse and specular terms are scaled
+ *    by 1 - ShadowAttenuation * (1 - LI), ambient untouched (Phong and PBR).
+ *
+ * Actors are excluded from casting or receiving with SetCastsShadows / SetReceivesShadows, which
+ * store keys in the prop's property keys. A light's size is a key in its information
+ * (SetLightRadius): world units for positional lights, angular radius in degrees for directional
+ * ones. Translucent actors neither cast nor receive.
+ *
+ * It also works as a delegate inside a vtkCameraPass / vtkSequencePass chain: set its delegate
+ * to the pass that draws the opaque geometry.
+ *
+ * @sa vtkShadowMapPass vtkRayTracedVisibility
+ */
+#ifndef vtkSoftShadowPass_h
+#define vtkSoftShadowPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkPenumbraRenderingModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkInformationDoubleKey;
+class vtkInformationIntegerKey;
+class vtkLight;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRenderPass;
+class vtkRenderer;
+
+class VTKPENUMBRARENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkSoftShadowPass* New();
+  vtkTypeMacro(vtkSoftShadowPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The pass that renders the scene once the light-intensity buffer is ready. Defaults to a
+   * vtkRenderStepsPass (the whole scene as VTK draws it).
+   */
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+
+  ///@{
+  /**
+   * Master switch: when off the pass only renders its delegate.
+   */
+  vtkSetMacro(ShadowsEnabled, bool);
+  vtkGetMacro(ShadowsEnabled, bool);
+  vtkBooleanMacro(ShadowsEnabled, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Light size, stored in the light's vtkInformation: radius in world units for positional
+   * lights, angular radius in degrees for directional lights. 0 (the default) gives hard shadows.
+   */
+  static void SetLightRadius(vtkLight* light, double radius);
+  static double GetLightRadius(vtkLight* light);
+  static vtkInformationDoubleKey* LIGHT_RADIUS();
+  ///@}
+
+  ///@{
+  /**
+   * Per-prop control through the prop's property keys; both default to true.
+   */
+  static void SetCastsShadows(vtkProp* prop, bool casts);
+  static bool GetCastsShadows(vtkProp* prop);
+  static void SetReceivesShadows(vtkProp* prop, bool receives);
+  static bool GetReceivesShadows(vtkProp* prop);
+  static vtkInformationIntegerKey* CASTS_SHADOWS();
+  static vtkInformationIntegerKey* RECEIVES_SHADOWS();
+  ///@}
+
+  /**
+   * True when this pass would shadow with `light`: switched on, not a headlight, with some
+   * intensity and shadow attenuation.
+   */
+  static bool LightCastsShadows(vtkLight* light);
+
+  /**
+   * The last frame's light intensity for the i-th light of the renderer's light collection, as a
+   * one-component float image of the viewport's size (1 lit, 0 in shadow; background 1), or
+   * nullptr for a light that cast no shadow. Reads the GPU buffer back: not for every frame.
+   */
+  vtkImageData* GetVisibilityImage(int lightIndex);
+
+  /**
+   * Number of lights shadowed in the last frame, and the shadow-volume triangles drawn for them.
+   */
+  vtkGetMacro(NumberOfShadowingLights, int);
+  vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
+  /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
+  vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /// Shader edits applied to the mappers of receiving props (vtkOpenGLRenderPass API).
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+  ///@}
+
+protected:
+  vtkSoftShadowPass();
+  ~vtkSoftShadowPass() override;
+
+  vtkRenderPass* DelegatePass = nullptr;
+  bool ShadowsEnabled = true;
+  int NumberOfShadowingLights = 0;
+  vtkIdType NumberOfShadowVolumeTriangles = 0;
+  vtkIdType NumberOfSilhouetteUpdates = 0;
+
+private:
+  vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
+  void operator=(const vtkSoftShadowPass&) = delete;
+
+  void RenderDelegate(const vtkRenderState* s);
+  void CollectShadowingLights(vtkRenderer* renderer);
+  void UpdateShaderConfiguration();
+  void AddReceiverKeys(const vtkRenderState* s);
+  void RemoveReceiverKeys();
+  void PrepareFramebuffer(vtkOpenGLRenderWindow* window);
+  void BindFramebuffer(int layer);
+  void RenderDepth(const vtkRenderState* s);
+  void UpdateCasters(const vtkRenderState* s);
+  void RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  void DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity);
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,104 @@
+/**
+ * @class   vtkSoftShadowPassInternals
+ * @brief   Caches of vtkSoftShadowPass: caster meshes, their shadow volumes per light, GPU buffers.
+ *
+ * Everything here is rebuilt only when its inputs change: a mesh when its data's MTime moves, a
+ * volume when the light seen from the caster's object space (or the mesh) changes. A camera
+ * orbit therefore costs no CPU geometry work and no upload.
+ */
+#ifndef vtkSoftShadowPassInternals_h
+#define vtkSoftShadowPassInternals_h
+
+#include "penumbraCasterTopology.h"
+#include "penumbraShadowVolume.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <memory>
+
+class vtkActor;
+class vtkDataObject;
+class vtkLight;
+class vtkObject;
+class vtkPolyData;
+class vtkShaderProgram;
+
+namespace penumbra
+{
+
+/// Topology and vertex buffer of one data object, shared by every actor that shows it.
+struct MeshCache
+{
+  vtkWeakPointer<vtkDataObject> Data;
+  vtkMTimeType BuiltAt = 0;
+  std::size_t Generation = 0; ///< bumped on every rebuild, so volumes know they are stale
+  CasterTopology Topology;
+  vtkNew<vtkOpenGLBufferObject> Vertices;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* VAOProgram = nullptr;
+  bool Uploaded = false;
+  bool Used = false;
+
+  /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`.
+  bool Update(vtkDataObject* data, vtkObject* owner);
+  /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
+  /// binds the VAO for `program`.
+  void Bind(vtkShaderProgram* program);
+  void ReleaseGraphicsResources();
+};
+
+/// One caster's shadow volume for one light, on the CPU and in an index buffer.
+struct VolumeCache
+{
+  glm::dvec4 Light{ 0.0 };
+  bool Mirrored = false;
+  std::size_t MeshGeneration = ~std::size_t(0);
+  ShadowVolume Volume;
+  vtkNew<vtkOpenGLBufferObject> Indices;
+  bool Uploaded = false;
+  bool Used = false;
+
+  /// Rebuilds when the light (object space) or the mesh changed. Returns true when it did.
+  bool Update(const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored);
+  void Upload();
+  std::size_t SideCount() const { return this->Volume.Sides.size(); }
+  std::size_t CapCount() const { return this->Volume.LightCap.size(); }
+  std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }
+};
+
+/// An actor that casts shadows this frame.
+struct CasterCache
+{
+  vtkWeakPointer<vtkActor> Actor;
+  MeshCache* Mesh = nullptr;
+  glm::dmat4 ObjectToWorld{ 1.0 }; ///< actor matrix with the mesh origin folded in
+  glm::dvec3 WorldMin{ 0.0 }, WorldMax{ 0.0 };
+  std::map<vtkLight*, VolumeCache> Volumes;
+  bool Used = false;
+};
+
+/// The GPU-free data of the pass, plus what it keeps between frames.
+struct ShadowCaches
+{
+  std::map<vtkDataObject*, std::unique_ptr<MeshCache>> Meshes;
+  std::map<vtkActor*, std::unique_ptr<CasterCache>> Casters;
+
+  /// Finds or creates the mesh of `data` and brings it up to date.
+  MeshCache* FindMesh(vtkDataObject* data, vtkObject* owner, bool& rebuilt);
+  CasterCache* FindCaster(vtkActor* actor);
+  /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
+  void BeginFrame();
+  void PurgeUnused();
+  void ReleaseGraphicsResources();
+};
+
+} // namespace penumbra
+
+#endif

@@ -1,0 +1,9 @@
+"""Soft shadows for VTK: shadow volumes, penumbra wedges and ray-traced ground truth.
+
+    import penumbra
+    shadows = penumbra.vtkSoftShadowPass()
+    renderer.SetPass(shadows)
+"""
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL factories first)
+
+from .vtkPenumbraRendering import *  # noqa: F401,F403

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine:
+#   ./build.sh demo   install what is missing, build, render the example scene to build/demo/
+#   ./build.sh test   install what is missing, build, run the whole test suite (ctest under Xvfb)
+#   ./build.sh build  install what is missing and build only
+set -euo pipefail
+cd "$(dirname "$0")"
+ROOT=$PWD
+BUILD_DIR=${BUILD_DIR:-$ROOT/build}
+JOBS=${JOBS:-$(nproc)}
+
+PACKAGES=(build-essential cmake libvtk9-dev python3-vtk9 libglm-dev libembree-dev
+          xvfb xauth python3-numpy)
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "== installing: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure_and_build() {
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release \
+    -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+# Debian's VTK talks to X only: every render runs under a virtual display.
+with_display() {
+  if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1920x1080x24" "$@"; fi
+}
+
+cmd=${1:-}
+case "$cmd" in
+  build)
+    install_missing; configure_and_build ;;
+  demo)
+    install_missing; configure_and_build
+    mkdir -p "$BUILD_DIR/demo"
+    with_display "$BUILD_DIR/bin/PenumbraDemo" --output "$BUILD_DIR/demo" ;;
+  test)
+    install_missing; configure_and_build
+    cd "$BUILD_DIR"
+    with_display ctest --output-on-failure -j "$JOBS" ;;
+  *)
+    echo "usage: $0 {demo|test|build}" >&2; exit 2 ;;
+esac
