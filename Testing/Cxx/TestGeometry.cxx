@@ -1,0 +1,434 @@
+// Unit tests of the GPU-free geometry core: topology, silhouettes and shadow volumes.
+//
+// The central check emulates the stencil on the CPU. For a query point q the shadow volume's
+// winding number (signed crossings of a ray from q with the volume's triangles, infinity replaced
+// by a far finite distance) must equal the number of casting triangles that the segment from q
+// to the light crosses: every triangle occludes whatever its orientation, and for closed,
+// consistently oriented meshes the front faces alone count. This covers sides, caps, the dark-cap
+// fan, multiplicities and mirrored matrices at once.
+#include "penumbraCasterTopology.h"
+#include "penumbraShadowVolume.h"
+
+#include "vtkNew.h"
+#include "vtkParametricBoy.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricKlein.h"
+#include "vtkParametricMobius.h"
+#include "vtkPlaneSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkSphereSource.h"
+#include "vtkCubeSource.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <random>
+#include <string>
+
+using namespace penumbra;
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::printf("FAIL: %s\n", what.c_str());
+    ++Failures;
+  }
+}
+
+/// Möller-Trumbore; returns the ray parameter or -1, and whether the hit is too close to an
+/// edge to count robustly.
+double RayTriangle(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& a,
+  const glm::dvec3& b, const glm::dvec3& c, bool& nearEdge)
+{
+  const glm::dvec3 e1 = b - a, e2 = c - a;
+  const glm::dvec3 p = glm::cross(dir, e2);
+  const double det = glm::dot(e1, p);
+  if (std::abs(det) < 1e-300)
+  {
+    return -1.0;
+  }
+  const glm::dvec3 s = origin - a;
+  const double u = glm::dot(s, p) / det;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(dir, q) / det;
+  const double t = glm::dot(e2, q) / det;
+  const double eps = 1e-9;
+  if (u < -eps || v < -eps || u + v > 1 + eps || t < -eps)
+  {
+    return -1.0;
+  }
+  if (u < eps || v < eps || u + v > 1 - eps || t < eps)
+  {
+    nearEdge = true;
+  }
+  return t;
+}
+
+glm::dvec3 VolumePoint(
+  const CasterTopology& topo, std::uint32_t index, const glm::dvec4& light, double far)
+{
+  const std::size_t n = topo.Points.size();
+  if (index < n)
+  {
+    return topo.Points[index];
+  }
+  const glm::dvec3& p = topo.Points[index - n];
+  const glm::dvec3 away = light.w != 0.0 ? p - glm::dvec3(light) : -glm::dvec3(light);
+  return p + far * away / glm::length(away);
+}
+
+/// Winding number of the closed volume (sides + dark cap + light cap) at q, or INT_MIN when
+/// every tried ray grazed an edge.
+int Winding(const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec4& light,
+  const glm::dvec3& q, std::mt19937& rng)
+{
+  const double far = 1e4 * (1.0 + glm::length(topo.BoundsMax - topo.BoundsMin));
+  std::normal_distribution<double> normal;
+  for (int attempt = 0; attempt < 20; ++attempt)
+  {
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
+    int winding = 0;
+    bool nearEdge = false;
+    for (const auto* list : { &volume.Sides, &volume.LightCap, &volume.DarkCap })
+    {
+      for (std::size_t i = 0; i < list->size(); i += 3)
+      {
+        const glm::dvec3 a = VolumePoint(topo, (*list)[i], light, far);
+        const glm::dvec3 b = VolumePoint(topo, (*list)[i + 1], light, far);
+        const glm::dvec3 c = VolumePoint(topo, (*list)[i + 2], light, far);
+        if (RayTriangle(q, dir, a, b, c, nearEdge) >= 0.0)
+        {
+          // Outward (counter-clockwise) normal along the ray: the ray leaves the volume.
+          winding += glm::dot(glm::cross(b - a, c - a), dir) > 0 ? 1 : -1;
+        }
+      }
+    }
+    if (!nearEdge)
+    {
+      return winding;
+    }
+  }
+  return std::numeric_limits<int>::min();
+}
+
+/// Casting triangles crossed by the segment from q to the light, per the counting rule.
+int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
+{
+  const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - q : glm::dvec3(light) * 1e6;
+  int count = 0;
+  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
+  {
+    const int facing = ShadowVolume::Facing(topo, t, light);
+    if (facing == 0 || (topo.ClosedAndOriented && facing < 0))
+    {
+      continue;
+    }
+    const glm::uvec3& tri = topo.Triangles[t];
+    const double hit = RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y],
+      topo.Points[tri.z], nearEdge);
+    if (hit >= 0.0 && hit <= 1.0)
+    {
+      ++count;
+    }
+  }
+  return count;
+}
+
+/// Compares winding and occluder counts at random points around the caster.
+void CheckVolume(const std::string& name, const CasterTopology& topo, const glm::dvec4& light,
+  std::mt19937& rng, int samples = 300)
+{
+  const ShadowVolume volume = ShadowVolume::Build(topo, light, false);
+  Check(volume.SilhouetteIsBalanced(topo.Points.size()), name + ": silhouette balanced");
+  const glm::dvec3 lo = topo.BoundsMin, hi = topo.BoundsMax;
+  const glm::dvec3 size = hi - lo + glm::dvec3(1e-3);
+  std::uniform_real_distribution<double> unit(-0.5, 1.5);
+  int compared = 0, mismatches = 0;
+  for (int i = 0; i < samples; ++i)
+  {
+    // Points around and behind the caster, where its shadow lies.
+    glm::dvec3 q = lo + size * glm::dvec3(unit(rng), unit(rng), unit(rng));
+    const glm::dvec3 away = light.w != 0.0 ? q - glm::dvec3(light) : -glm::dvec3(light);
+    q += glm::normalize(away) * glm::length(size) * std::uniform_real_distribution<double>(0, 1)(rng);
+    bool nearEdge = false;
+    const int expected = Occluders(topo, light, q, nearEdge);
+    const int winding = Winding(topo, volume, light, q, rng);
+    if (nearEdge || winding == std::numeric_limits<int>::min())
+    {
+      continue;
+    }
+    ++compared;
+    if (winding != expected)
+    {
+      if (mismatches++ < 3)
+      {
+        std::printf("  %s: q=(%g,%g,%g) winding %d, occluders %d\n", name.c_str(), q.x, q.y, q.z,
+          winding, expected);
+      }
+    }
+  }
+  Check(compared > samples / 2, name + ": enough robust samples");
+  Check(mismatches == 0, name + ": volume winding equals occluder count (" +
+      std::to_string(mismatches) + " of " + std::to_string(compared) + " differ)");
+}
+
+CasterTopology FromSource(vtkPolyDataAlgorithm* source)
+{
+  source->Update();
+  return CasterTopology::Build(source->GetOutput());
+}
+
+CasterTopology Parametric(vtkParametricFunction* function, int resolution)
+{
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(function);
+  source->SetUResolution(resolution);
+  source->SetVResolution(resolution);
+  source->SetWResolution(resolution);
+  source->GenerateTextureCoordinatesOff();
+  return FromSource(source);
+}
+
+std::vector<glm::dvec4> Lights(const CasterTopology& topo)
+{
+  const double r = glm::length(topo.BoundsMax - topo.BoundsMin);
+  return { { 0.3 * r, 2.0 * r, 0.7 * r, 1.0 }, { -1.5 * r, 0.2 * r, 0.1 * r, 1.0 },
+    { 0.1, 0.3, 1.0, 0.0 }, { 0.8, 0.1, -0.2, 0.0 } };
+}
+
+void TestClosedSphere(std::mt19937& rng)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(12);
+  const CasterTopology topo = FromSource(sphere);
+  Check(topo.ClosedAndOriented, "sphere is closed and oriented");
+  Check(topo.Report.BoundaryEdges == 0, "sphere has no boundary");
+  for (const glm::dvec4& light : Lights(topo))
+  {
+    const ShadowVolume volume = ShadowVolume::Build(topo, light, false);
+    // Brute force: an edge is a silhouette edge iff exactly one of its faces faces the light.
+    std::size_t expected = 0;
+    for (const Edge& e : topo.Edges)
+    {
+      const int f0 = ShadowVolume::Facing(topo, topo.Uses[e.FirstUse].Triangle, light) > 0;
+      const int f1 = ShadowVolume::Facing(topo, topo.Uses[e.FirstUse + 1].Triangle, light) > 0;
+      expected += f0 != f1;
+    }
+    Check(volume.Silhouette.size() == expected, "sphere silhouette edges match brute force");
+    bool unit = true;
+    for (const SilhouetteEdge& e : volume.Silhouette)
+    {
+      unit = unit && e.Multiplicity == 1;
+    }
+    Check(unit, "closed mesh silhouette multiplicities are 1");
+    CheckVolume("sphere", topo, light, rng);
+  }
+}
+
+void TestWelding(std::mt19937& rng)
+{
+  // A cube with split normals has 24 points; welded it is closed with 8.
+  vtkNew<vtkCubeSource> cube;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  const CasterTopology topo = FromSource(triangles);
+  Check(topo.Points.size() == 8, "cube welds to 8 points (got " + std::to_string(topo.Points.size()) + ")");
+  Check(topo.ClosedAndOriented, "welded cube is closed");
+  Check(topo.Triangles.size() == 12, "cube has 12 triangles");
+  for (const glm::dvec4& light : Lights(topo))
+  {
+    CheckVolume("cube", topo, light, rng);
+  }
+}
+
+void TestOpenSheet(std::mt19937& rng)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(4, 3);
+  const CasterTopology topo = FromSource(plane);
+  Check(!topo.ClosedAndOriented, "sheet is open");
+  Check(topo.Report.BoundaryEdges == 14, "sheet boundary edges");
+  for (const glm::dvec4& light : Lights(topo))
+  {
+    CheckVolume("sheet", topo, light, rng);
+  }
+  // Lit from below (back side): the sheet still casts, the same outline reversed.
+  const glm::dvec4 below(0.1, 0.2, -3.0, 1.0), above(0.1, 0.2, 3.0, 1.0);
+  const ShadowVolume back = ShadowVolume::Build(topo, below, false);
+  const ShadowVolume front = ShadowVolume::Build(topo, above, false);
+  Check(back.Silhouette.size() == 14 && front.Silhouette.size() == 14, "sheet outline both sides");
+  CheckVolume("sheet-from-below", topo, below, rng);
+}
+
+void TestNonManifoldAndInconsistent(std::mt19937& rng)
+{
+  // Three fins on one edge, one wound the other way, plus a flipped neighbour.
+  const std::vector<glm::dvec3> points = { { 0, 0, 0 }, { 0, 0, 1 }, { 1, 0, 0.5 }, { -0.5, 0.8, 0.5 },
+    { -0.5, -0.8, 0.5 }, { 1, 1, 0.5 } };
+  const std::vector<glm::uvec3> tris = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 2, 5 } };
+  const CasterTopology topo = CasterTopology::Build(points, tris);
+  Check(topo.Report.NonManifoldEdges == 1, "one non-manifold edge");
+  Check(topo.Report.InconsistentEdges == 1, "one inconsistently wound edge");
+  for (const glm::dvec4& light : Lights(topo))
+  {
+    CheckVolume("fins", topo, light, rng);
+  }
+}
+
+void TestNonOrientable(std::mt19937& rng)
+{
+  vtkNew<vtkParametricMobius> mobius;
+  vtkNew<vtkParametricKlein> klein;
+  vtkNew<vtkParametricBoy> boy;
+  const std::pair<const char*, vtkParametricFunction*> surfaces[] = { { "mobius", mobius },
+    { "klein", klein }, { "boy", boy } };
+  for (const auto& surface : surfaces)
+  {
+    const CasterTopology topo = Parametric(surface.second, 24);
+    Check(!topo.Empty(), std::string(surface.first) + " has triangles");
+    for (const glm::dvec4& light : Lights(topo))
+    {
+      CheckVolume(surface.first, topo, light, rng, 150);
+    }
+  }
+}
+
+void TestMirrored(std::mt19937& rng)
+{
+  // Mirroring the mesh (negative determinant) must give the same volume as mirroring the
+  // world-space result: build in object space with mirrored=true and compare windings.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(8);
+  const CasterTopology topo = FromSource(sphere);
+  CasterTopology mirrored = topo;
+  for (glm::dvec3& p : mirrored.Points)
+  {
+    p.x = -p.x;
+  }
+  const glm::dvec4 light(2.0, 3.0, 1.0, 1.0), lightObject(-2.0, 3.0, 1.0, 1.0);
+  const ShadowVolume volume = ShadowVolume::Build(topo, lightObject, true);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  int mismatches = 0;
+  for (int i = 0; i < 100; ++i)
+  {
+    const glm::dvec3 q(coord(rng), coord(rng) - 1.5, coord(rng));
+    // Winding in world space: evaluate with the mirrored points, the volume indices unchanged.
+    const int winding = Winding(mirrored, volume, light, q, rng);
+    bool nearEdge = false;
+    const int expected = Occluders(mirrored, light, q, nearEdge) > 0 ? 1 : 0;
+    if (!nearEdge && winding != std::numeric_limits<int>::min() && winding != expected)
+    {
+      ++mismatches;
+    }
+  }
+  Check(mismatches == 0, "mirrored caster keeps positive volumes");
+}
+
+void TestDegenerateInput()
+{
+  // NaN points, zero-area and repeated-vertex triangles, lines and vertices.
+  vtkNew<vtkPoints> pts;
+  pts->InsertNextPoint(0, 0, 0);
+  pts->InsertNextPoint(1, 0, 0);
+  pts->InsertNextPoint(0, 1, 0);
+  pts->InsertNextPoint(std::nan(""), 0, 0);
+  pts->InsertNextPoint(2, 0, 0); // collinear with 0 and 1
+  vtkNew<vtkCellArray> polys, lines, verts;
+  const vtkIdType good[3] = { 0, 1, 2 }, nan[3] = { 0, 3, 2 }, flat[3] = { 0, 1, 4 },
+                  repeated[3] = { 0, 0, 2 }, line[2] = { 0, 1 }, vert[1] = { 2 };
+  polys->InsertNextCell(3, good);
+  polys->InsertNextCell(3, nan);
+  polys->InsertNextCell(3, flat);
+  polys->InsertNextCell(3, repeated);
+  lines->InsertNextCell(2, line);
+  verts->InsertNextCell(1, vert);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(pts);
+  data->SetPolys(polys);
+  data->SetLines(lines);
+  data->SetVerts(verts);
+  const CasterTopology topo = CasterTopology::Build(data);
+  Check(topo.Triangles.size() == 1, "only the good triangle survives");
+  Check(topo.Report.NonFinitePoints == 1 && topo.Report.NonFiniteTriangles == 1, "NaN reported");
+  Check(topo.Report.DegenerateTriangles == 2, "degenerate triangles reported");
+  Check(topo.Report.SkippedLines == 1 && topo.Report.SkippedVerts == 1, "lines and verts reported");
+  Check(!topo.Report.Describe().empty(), "problems described");
+
+  vtkNew<vtkPolyData> empty;
+  Check(CasterTopology::Build(empty).Empty(), "empty polydata gives no triangles");
+  Check(CasterTopology::Build(nullptr).Empty(), "null polydata gives no triangles");
+  const ShadowVolume none = ShadowVolume::Build(CasterTopology::Build(empty), { 0, 1, 0, 1 }, false);
+  Check(none.Sides.empty() && none.LightCap.empty(), "empty caster casts nothing");
+}
+
+void FuzzRandomMeshes(std::mt19937& rng)
+{
+  // Random soups over a small shared point set: every kind of non-manifoldness, slivers,
+  // duplicates and flipped triangles, lit from random positions and directions.
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  int nanFree = 0, balanced = 0;
+  const int meshes = 150;
+  for (int m = 0; m < meshes; ++m)
+  {
+    const int pointCount = 4 + static_cast<int>(rng() % 12);
+    std::vector<glm::dvec3> points(pointCount);
+    for (auto& p : points)
+    {
+      p = { coord(rng), coord(rng), coord(rng) };
+      if (rng() % 7 == 0)
+      {
+        p = points[rng() % points.size()]; // coincident points to weld
+      }
+    }
+    std::vector<glm::uvec3> tris(1 + rng() % 20);
+    for (auto& t : tris)
+    {
+      t = { rng() % pointCount, rng() % pointCount, rng() % pointCount };
+    }
+    const CasterTopology topo = CasterTopology::Build(points, tris);
+    const glm::dvec4 light = rng() % 2 ? glm::dvec4(3 * coord(rng), 3 * coord(rng), 3 * coord(rng), 1.0)
+                                       : glm::dvec4(coord(rng), coord(rng), coord(rng), 0.0);
+    const ShadowVolume volume = ShadowVolume::Build(topo, light, rng() % 2 == 0);
+    balanced += volume.SilhouetteIsBalanced(topo.Points.size());
+    bool finite = true;
+    for (const glm::dvec3& p : topo.Points)
+    {
+      finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    }
+    nanFree += finite;
+    if (m % 10 == 0 && !topo.Empty())
+    {
+      CheckVolume("fuzz" + std::to_string(m), topo, light, rng, 40);
+    }
+  }
+  Check(balanced == meshes, "fuzz: every silhouette balanced");
+  Check(nanFree == meshes, "fuzz: no NaN in topology");
+}
+
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(12345);
+  TestClosedSphere(rng);
+  TestWelding(rng);
+  TestOpenSheet(rng);
+  TestNonManifoldAndInconsistent(rng);
+  TestNonOrientable(rng);
+  TestMirrored(rng);
+  TestDegenerateInput();
+  FuzzRandomMeshes(rng);
+  std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
+  return Failures ? 1 : 0;
+}
