@@ -155,7 +155,7 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners);
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount);
 
 } // namespace
 
@@ -245,6 +245,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
   os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
      << "\n";
+  os << indent << "NumberOfZFailVolumes: " << this->NumberOfZFailVolumes << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
 }
 
@@ -335,6 +336,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   this->NumberOfShadowingLights = 0;
   this->NumberOfShadowVolumeTriangles = 0;
+  this->NumberOfZFailVolumes = 0;
 
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
@@ -679,7 +681,8 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     for (penumbra::CasterCache* caster : internals.Casters)
     {
       this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-        light.Light, light.World, internals.WorldToClip, internals.NearCorners);
+        light.Light, light.World, internals.WorldToClip, internals.NearCorners,
+        this->NumberOfZFailVolumes);
     }
 
     // Resolve: every geometry pixel with a non-zero count is in this light's shadow.
@@ -701,7 +704,7 @@ namespace
 /// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners)
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount)
 {
   penumbra::VolumeCache& volume = caster.Volumes[light];
   const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
@@ -747,6 +750,7 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     ostate->vtkglDisable(GL_POLYGON_OFFSET_FILL);
     ostate->vtkglDisable(GL_DEPTH_CLAMP);
     drawn = static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
+    ++zFailCount;
   }
   volume.Indices->Release();
   caster.Mesh->VAO->Release();

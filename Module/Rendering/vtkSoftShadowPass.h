@@ -110,6 +110,8 @@ public:
    */
   vtkGetMacro(NumberOfShadowingLights, int);
   vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
+  /// Shadow volumes drawn with z-fail (caps) in the last frame; the rest used z-pass.
+  vtkGetMacro(NumberOfZFailVolumes, int);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
 
@@ -135,6 +137,7 @@ protected:
   bool ShadowsEnabled = true;
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
+  int NumberOfZFailVolumes = 0;
   vtkIdType NumberOfSilhouetteUpdates = 0;
 
 private:

@@ -1,0 +1,148 @@
+// Shared helpers of the rendering tests: scene building and comparison of the pass's visibility
+// with the ray-traced truth.
+#ifndef penumbraTestHarness_h
+#define penumbraTestHarness_h
+
+#include "vtkActor.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRayTracedVisibility.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace penumbra_test
+{
+
+inline int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+inline void Check(bool condition, const std::string& what)
+{
+  std::printf("%s: %s\n", condition ? "ok  " : "FAIL", what.c_str());
+  if (!condition)
+  {
+    ++Failures();
+  }
+}
+
+inline vtkSmartPointer<vtkActor> MakeActor(
+  vtkPolyDataAlgorithm* source, double r, double g, double b)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->SetAmbient(0.2);
+  actor->GetProperty()->SetDiffuse(0.8);
+  return actor;
+}
+
+/// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
+struct Comparison
+{
+  int Compared = 0;    ///< pixels where both see the same surface
+  int Shadowed = 0;    ///< of those, in shadow according to the truth
+  int Boundary = 0;    ///< disagreements within one pixel of a truth shadow boundary
+  int Mismatched = 0;  ///< disagreements elsewhere: wrong shadows
+  double MismatchFraction() const { return this->Compared ? double(this->Mismatched) / this->Compared : 1.0; }
+};
+
+/**
+ * Compares the last frame's visibility of light `lightIndex` with a fresh ray-traced truth.
+ * Pixels are compared where the rasterized and ray-traced depths agree and no neighbour sits
+ * across an object silhouette. A disagreement within one pixel of a truth shadow boundary is
+ * rasterization, not an error (sampling and tessellation move edges by up to a pixel).
+ */
+inline Comparison CompareWithTruth(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkSoftShadowPass* pass, int lightIndex)
+{
+  Comparison result;
+  vtkImageData* image = pass->GetVisibilityImage(lightIndex);
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(renderer);
+  truth->SetSamplesPerLight(1);
+  if (!image || !truth->Update() || !truth->GetVisibilityImage(lightIndex))
+  {
+    Check(false, "visibility images available for light " + std::to_string(lightIndex));
+    return result;
+  }
+  int size[2], origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  const int w = size[0], h = size[1];
+  std::vector<float> zbuffer(static_cast<size_t>(w) * h);
+  window->GetZbufferData(origin[0], origin[1], origin[0] + w - 1, origin[1] + h - 1, zbuffer.data());
+  auto pass_ = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  auto true_ = vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
+  auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
+  auto at = [w](int x, int y) { return static_cast<vtkIdType>(y) * w + x; };
+  for (int y = 1; y + 1 < h; ++y)
+  {
+    for (int x = 1; x + 1 < w; ++x)
+    {
+      const float d = depth->GetValue(at(x, y));
+      if (d >= 1.0f || zbuffer[at(x, y)] >= 1.0f || std::abs(d - zbuffer[at(x, y)]) > 1e-3f)
+      {
+        continue;
+      }
+      bool silhouette = false;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          silhouette |= std::abs(depth->GetValue(at(x + dx, y + dy)) - d) > 5e-3f;
+        }
+      }
+      if (silhouette)
+      {
+        continue;
+      }
+      ++result.Compared;
+      const float expected = true_->GetValue(at(x, y)), actual = pass_->GetValue(at(x, y));
+      result.Shadowed += expected < 0.5f;
+      if (std::abs(expected - actual) <= 0.5f)
+      {
+        continue;
+      }
+      bool nearBoundary = false;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          nearBoundary |= std::abs(true_->GetValue(at(x + dx, y + dy)) - actual) <= 0.5f;
+        }
+      }
+      ++(nearBoundary ? result.Boundary : result.Mismatched);
+    }
+  }
+  return result;
+}
+
+/// Checks a comparison against the stated tolerance: at most 0.2% of the compared pixels wrong
+/// away from shadow boundaries, and a scene that really has shadow in view.
+inline void CheckAgainstTruth(const std::string& name, const Comparison& c, double minShadowed = 0.01)
+{
+  std::printf("     %s: compared %d px, shadowed %d, boundary %d, wrong %d (%.3f%%)\n",
+    name.c_str(), c.Compared, c.Shadowed, c.Boundary, c.Mismatched, 100.0 * c.MismatchFraction());
+  Check(c.Compared > 0 && c.Shadowed >= minShadowed * c.Compared,
+    name + ": shadow in view (" + std::to_string(c.Shadowed) + " px)");
+  Check(c.MismatchFraction() <= 0.002, name + ": agrees with ray-traced truth");
+}
+
+} // namespace penumbra_test
+
+#endif
