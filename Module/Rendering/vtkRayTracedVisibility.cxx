@@ -1,0 +1,726 @@
+#include "vtkRayTracedVisibility.h"
+
+#include "penumbraCasterTopology.h"
+#include "vtkSoftShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <thread>
+#include <vector>
+
+namespace
+{
+
+/// One actor's (or composite leaf's) triangles in world space, relative to the scene origin.
+struct Mesh
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<glm::uvec3> Triangles;
+  bool Casts = true;
+};
+
+/// What the shadow rays of one light need, positions relative to the scene origin.
+struct ShadowLight
+{
+  int Index = 0; ///< in the renderer's light collection
+  bool Positional = true;
+  glm::dvec3 Position{ 0.0 };         ///< positional lights
+  double Radius = 0.0;                ///< positional lights, world units
+  glm::dvec3 Toward{ 0.0, 0.0, 1.0 }; ///< directional lights: unit direction toward the light
+  double OneMinusCosMax = 0.0;        ///< directional lights: 1 - cos(angular radius)
+  glm::dvec3 T{ 1.0, 0.0, 0.0 }, B{ 0.0, 1.0, 0.0 }; ///< directional lights: frame around Toward
+  float* Values = nullptr;
+};
+
+/// splitmix64: tiny, fast and good enough for jitter; one stream per (seed, pixel, light).
+struct Random
+{
+  std::uint64_t State;
+  explicit Random(std::uint64_t seed)
+    : State(seed)
+  {
+  }
+  std::uint64_t Next()
+  {
+    std::uint64_t z = (this->State += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  double Uniform() { return static_cast<double>(this->Next() >> 11) * 0x1.0p-53; }
+};
+
+std::uint64_t StreamSeed(unsigned int seed, std::uint64_t pixel, int light)
+{
+  Random mix(static_cast<std::uint64_t>(seed) * 0xD1B54A32D192ED03ULL);
+  mix.State ^= pixel * 0x9E3779B97F4A7C15ULL;
+  mix.Next();
+  mix.State ^= static_cast<std::uint64_t>(light + 1) * 0xC2B2AE3D27D4EB4FULL;
+  return mix.Next();
+}
+
+/// Orthonormal frame around unit n (Duff et al. 2017), branch-free and continuous enough.
+void Frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b)
+{
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);
+  const double c = n.x * n.y * a;
+  t = glm::dvec3(1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x);
+  b = glm::dvec3(c, sign + n.y * n.y * a, -n.y);
+}
+
+/// The k-th of n stratified points of the unit square: ceil(sqrt(n)) rows whose heights follow
+/// how many strata each holds, so that all n strata have the same area 1/n.
+glm::dvec2 Stratum(int k, int n, int rows, Random& random)
+{
+  // Row r holds the samples [floor(r n / rows), floor((r + 1) n / rows)).
+  int row = static_cast<int>((static_cast<std::int64_t>(k) * rows) / n);
+  while (row + 1 < rows && (static_cast<std::int64_t>(row + 1) * n) / rows <= k)
+  {
+    ++row;
+  }
+  while (row > 0 && (static_cast<std::int64_t>(row) * n) / rows > k)
+  {
+    --row;
+  }
+  const int first = static_cast<int>((static_cast<std::int64_t>(row) * n) / rows);
+  const int last = static_cast<int>((static_cast<std::int64_t>(row + 1) * n) / rows);
+  const int count = last - first;
+  const double u = (first + random.Uniform() * count) / n;
+  const double v = (k - first + random.Uniform()) / count;
+  return { u, v };
+}
+
+/// Shirley-Chiu concentric map of the unit square onto the unit disk: area preserving and with
+/// little distortion, so square strata stay compact on the light.
+glm::dvec2 ConcentricDisk(const glm::dvec2& s)
+{
+  const double a = 2.0 * s.x - 1.0, b = 2.0 * s.y - 1.0;
+  if (a == 0.0 && b == 0.0)
+  {
+    return { 0.0, 0.0 };
+  }
+  constexpr double quarterPi = 0.78539816339744830962;
+  double r, phi;
+  if (std::abs(a) > std::abs(b))
+  {
+    r = a;
+    phi = quarterPi * (b / a);
+  }
+  else
+  {
+    r = b;
+    phi = 2.0 * quarterPi - quarterPi * (a / b);
+  }
+  return { r * std::cos(phi), r * std::sin(phi) };
+}
+
+/// Direction uniform in solid angle inside the cone around w (frame t, b, w) whose half-angle
+/// has 1 - cos = oneMinusCosMax: the disk radius squared maps linearly onto 1 - cos(theta).
+glm::dvec3 ConeDirection(const glm::dvec2& square, double oneMinusCosMax, const glm::dvec3& t,
+  const glm::dvec3& b, const glm::dvec3& w)
+{
+  const glm::dvec2 d = ConcentricDisk(square);
+  const double rho2 = glm::dot(d, d);
+  if (rho2 <= 0.0)
+  {
+    return w;
+  }
+  const double oneMinusCos = rho2 * oneMinusCosMax;
+  const double cosTheta = 1.0 - oneMinusCos;
+  const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+  const double scale = sinTheta / std::sqrt(rho2);
+  return glm::normalize(d.x * scale * t + d.y * scale * b + cosTheta * w);
+}
+
+glm::dvec4 Multiply(const double m[16], const glm::dvec4& v)
+{
+  // vtkMatrix4x4 is row-major and acts on column vectors.
+  return { m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3] * v.w,
+    m[4] * v.x + m[5] * v.y + m[6] * v.z + m[7] * v.w,
+    m[8] * v.x + m[9] * v.y + m[10] * v.z + m[11] * v.w,
+    m[12] * v.x + m[13] * v.y + m[14] * v.z + m[15] * v.w };
+}
+
+glm::dvec3 Project(const double m[16], const glm::dvec3& p)
+{
+  const glm::dvec4 h = Multiply(m, glm::dvec4(p, 1.0));
+  return glm::dvec3(h) / h.w;
+}
+
+} // namespace
+
+class vtkRayTracedVisibility::vtkInternals
+{
+public:
+  RTCDevice Device = nullptr;
+  RTCScene Primary = nullptr;
+  RTCScene Shadow = nullptr;
+  std::vector<Mesh> Meshes; ///< indexed by primary geometry ID
+  glm::dvec3 Origin{ 0.0 };
+  double Epsilon = 0.0;
+  std::vector<vtkSmartPointer<vtkImageData>> Visibility; ///< per light of the collection
+  vtkSmartPointer<vtkImageData> Depth;
+
+  ~vtkInternals()
+  {
+    this->ReleaseScenes();
+    if (this->Device)
+    {
+      rtcReleaseDevice(this->Device);
+    }
+  }
+
+  void ReleaseScenes()
+  {
+    if (this->Primary)
+    {
+      rtcReleaseScene(this->Primary);
+      this->Primary = nullptr;
+    }
+    if (this->Shadow)
+    {
+      rtcReleaseScene(this->Shadow);
+      this->Shadow = nullptr;
+    }
+  }
+
+  void AddGeometry(RTCScene scene, unsigned int id, const Mesh& mesh)
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX,
+      0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.Points.size()));
+    for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+    {
+      vertices[3 * i + 0] = static_cast<float>(mesh.Points[i].x);
+      vertices[3 * i + 1] = static_cast<float>(mesh.Points[i].y);
+      vertices[3 * i + 2] = static_cast<float>(mesh.Points[i].z);
+    }
+    unsigned int* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), mesh.Triangles.size()));
+    for (std::size_t i = 0; i < mesh.Triangles.size(); ++i)
+    {
+      indices[3 * i + 0] = mesh.Triangles[i].x;
+      indices[3 * i + 1] = mesh.Triangles[i].y;
+      indices[3 * i + 2] = mesh.Triangles[i].z;
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+
+  /// Fraction of `light` seen from surface point p (relative to Origin) with unit normal n
+  /// facing the viewer.
+  double Trace(const glm::dvec3& p, const glm::dvec3& n, const ShadowLight& light, int samples,
+    Random& random) const
+  {
+    const glm::dvec3 origin = p + this->Epsilon * n;
+    glm::dvec3 w, t, b;
+    double oneMinusCosMax = 0.0;
+    double distance = 0.0;
+    if (light.Positional)
+    {
+      const glm::dvec3 toCentre = light.Position - p;
+      distance = glm::length(toCentre);
+      if (distance <= light.Radius || distance <= 0.0)
+      {
+        // Inside the light (or on a point light): nothing can come between.
+        return 1.0;
+      }
+      w = toCentre / distance;
+      if (light.Radius <= 0.0)
+      {
+        samples = 1;
+      }
+      else
+      {
+        // 1 - cos(asin(s)) without cancellation for small lights.
+        const double s = light.Radius / distance;
+        oneMinusCosMax = s * s / (1.0 + std::sqrt(std::max(0.0, 1.0 - s * s)));
+        Frame(w, t, b);
+      }
+    }
+    else
+    {
+      w = light.Toward;
+      t = light.T;
+      b = light.B;
+      oneMinusCosMax = light.OneMinusCosMax;
+      if (oneMinusCosMax <= 0.0)
+      {
+        samples = 1;
+      }
+    }
+
+    const int rows = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples))));
+    int visible = 0;
+    for (int k = 0; k < samples; ++k)
+    {
+      glm::dvec3 direction = w;
+      if (samples > 1)
+      {
+        direction = ConeDirection(Stratum(k, samples, rows, random), oneMinusCosMax, t, b, w);
+      }
+      if (glm::dot(direction, n) <= 0.0)
+      {
+        continue; // below the surface's own plane: the surface hides it
+      }
+      double tfar = std::numeric_limits<double>::infinity();
+      if (light.Positional)
+      {
+        // First intersection with the light's sphere along the direction from p.
+        const double along = distance * glm::dot(direction, w);
+        const double across2 = std::max(0.0, distance * distance - along * along);
+        const double inside = std::max(0.0, light.Radius * light.Radius - across2);
+        const glm::dvec3 target = p + (along - std::sqrt(inside)) * direction;
+        const glm::dvec3 toTarget = target - origin;
+        tfar = glm::length(toTarget);
+        direction = toTarget / tfar;
+        tfar *= 1.0 - 1e-6; // stop just short of the light itself
+      }
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRay ray;
+      ray.org_x = static_cast<float>(origin.x);
+      ray.org_y = static_cast<float>(origin.y);
+      ray.org_z = static_cast<float>(origin.z);
+      ray.dir_x = static_cast<float>(direction.x);
+      ray.dir_y = static_cast<float>(direction.y);
+      ray.dir_z = static_cast<float>(direction.z);
+      ray.tnear = static_cast<float>(this->Epsilon);
+      ray.tfar = static_cast<float>(tfar);
+      ray.time = 0.0f;
+      ray.mask = ~0u;
+      ray.id = 0;
+      ray.flags = 0;
+      rtcOccluded1(this->Shadow, &context, &ray);
+      // rtcOccluded1 sets tfar to -inf on a hit.
+      if (ray.tfar >= 0.0f)
+      {
+        ++visible;
+      }
+    }
+    return static_cast<double>(visible) / samples;
+  }
+};
+
+vtkStandardNewMacro(vtkRayTracedVisibility);
+vtkCxxSetObjectMacro(vtkRayTracedVisibility, Renderer, vtkRenderer);
+
+vtkRayTracedVisibility::vtkRayTracedVisibility()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkRayTracedVisibility::~vtkRayTracedVisibility()
+{
+  this->SetRenderer(nullptr);
+}
+
+void vtkRayTracedVisibility::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Renderer: " << this->Renderer << "\n";
+  os << indent << "SamplesPerLight: " << this->SamplesPerLight << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "NumberOfCasterTriangles: " << this->NumberOfCasterTriangles << "\n";
+  os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
+}
+
+vtkImageData* vtkRayTracedVisibility::GetVisibilityImage(int lightIndex)
+{
+  const auto& images = this->Internals->Visibility;
+  if (lightIndex < 0 || static_cast<std::size_t>(lightIndex) >= images.size())
+  {
+    return nullptr;
+  }
+  return images[static_cast<std::size_t>(lightIndex)];
+}
+
+vtkImageData* vtkRayTracedVisibility::GetDepthImage()
+{
+  return this->Internals->Depth;
+}
+
+namespace
+{
+
+vtkSmartPointer<vtkImageData> NewImage(int width, int height, const char* name, float value)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  scalars->SetName(name);
+  float* values = static_cast<float*>(image->GetScalarPointer());
+  std::fill(values, values + static_cast<std::size_t>(width) * height, value);
+  return image;
+}
+
+/// Appends the surface triangles of one dataset, transformed by `matrix`, to `meshes`.
+void CollectDataSet(
+  vtkDataObject* data, const double matrix[16], bool casts, std::vector<Mesh>& meshes)
+{
+  vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(data);
+  if (!poly)
+  {
+    vtkDataSet* dataSet = vtkDataSet::SafeDownCast(data);
+    if (!dataSet)
+    {
+      return;
+    }
+    vtkNew<vtkDataSetSurfaceFilter> surface;
+    surface->SetInputData(dataSet);
+    surface->Update();
+    poly = surface->GetOutput();
+  }
+  // Triangulated in the data's own frame, then moved: the topology keeps its precision there.
+  penumbra::CasterTopology topology = penumbra::CasterTopology::Build(poly);
+  if (topology.Empty())
+  {
+    return;
+  }
+  Mesh mesh;
+  mesh.Casts = casts;
+  mesh.Triangles = std::move(topology.Triangles);
+  mesh.Points.reserve(topology.Points.size());
+  for (const glm::dvec3& point : topology.Points)
+  {
+    mesh.Points.push_back(Project(matrix, topology.Origin + point));
+  }
+  meshes.push_back(std::move(mesh));
+}
+
+} // namespace
+
+bool vtkRayTracedVisibility::Update()
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Visibility.clear();
+  internals.Depth = nullptr;
+  this->NumberOfTriangles = 0;
+  this->NumberOfCasterTriangles = 0;
+  this->NumberOfShadowingLights = 0;
+
+  vtkRenderer* renderer = this->Renderer;
+  if (!renderer || !renderer->GetRenderWindow())
+  {
+    vtkErrorMacro("No renderer, or a renderer without a render window, to trace.");
+    return false;
+  }
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    vtkErrorMacro("The renderer's viewport is empty (" << width << " x " << height << ").");
+    return false;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (!camera)
+  {
+    vtkErrorMacro("The renderer has no camera.");
+    return false;
+  }
+  if (!internals.Device)
+  {
+    internals.Device = rtcNewDevice(nullptr);
+    if (!internals.Device)
+    {
+      vtkErrorMacro(
+        "Embree could not create a device (error " << rtcGetDeviceError(nullptr) << ").");
+      return false;
+    }
+  }
+
+  double progress = 0.0;
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+
+  // Geometry: every visible opaque actor, in world space.
+  internals.Meshes.clear();
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator actorIt;
+  actors->InitTraversal(actorIt);
+  while (vtkActor* actor = actors->GetNextActor(actorIt))
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    if (!actor->GetVisibility() || !mapper || actor->GetProperty()->GetOpacity() < 1.0)
+    {
+      continue;
+    }
+    mapper->Update();
+    double matrix[16];
+    vtkMatrix4x4::DeepCopy(matrix, actor->GetMatrix());
+    const bool casts = vtkSoftShadowPass::GetCastsShadows(actor);
+    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+    if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
+    {
+      auto it = vtk::TakeSmartPointer(composite->NewIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      {
+        CollectDataSet(it->GetCurrentDataObject(), matrix, casts, internals.Meshes);
+      }
+    }
+    else
+    {
+      CollectDataSet(input, matrix, casts, internals.Meshes);
+    }
+  }
+
+  // Embree traces in float: everything is moved next to the origin in double first.
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const Mesh& mesh : internals.Meshes)
+  {
+    for (const glm::dvec3& p : mesh.Points)
+    {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+  internals.Origin = internals.Meshes.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
+  const double diagonal = internals.Meshes.empty() ? 1.0 : glm::length(hi - lo);
+  // Far above float rounding of coordinates near the origin (~6e-8 of the extent).
+  internals.Epsilon = 1e-5 * (diagonal > 0.0 ? diagonal : 1.0);
+
+  internals.ReleaseScenes();
+  internals.Primary = rtcNewScene(internals.Device);
+  internals.Shadow = rtcNewScene(internals.Device);
+  // Robust mode: rays through shared edges and vertices do not slip between triangles.
+  rtcSetSceneFlags(internals.Primary, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(internals.Shadow, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(internals.Primary, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneBuildQuality(internals.Shadow, RTC_BUILD_QUALITY_HIGH);
+  for (std::size_t i = 0; i < internals.Meshes.size(); ++i)
+  {
+    Mesh& mesh = internals.Meshes[i];
+    for (glm::dvec3& p : mesh.Points)
+    {
+      p -= internals.Origin;
+    }
+    const unsigned int id = static_cast<unsigned int>(i);
+    internals.AddGeometry(internals.Primary, id, mesh);
+    this->NumberOfTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    if (mesh.Casts)
+    {
+      internals.AddGeometry(internals.Shadow, id, mesh);
+      this->NumberOfCasterTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    }
+  }
+  rtcCommitScene(internals.Primary);
+  rtcCommitScene(internals.Shadow);
+  const RTCError error = rtcGetDeviceError(internals.Device);
+  if (error != RTC_ERROR_NONE)
+  {
+    vtkErrorMacro("Embree failed to build the scene (error " << error << ").");
+    internals.ReleaseScenes();
+    return false;
+  }
+
+  // Lights, in collection order; those that cast no shadow get no image.
+  std::vector<ShadowLight> lights;
+  vtkLightCollection* lightCollection = renderer->GetLights();
+  vtkCollectionSimpleIterator lightIt;
+  lightCollection->InitTraversal(lightIt);
+  int lightIndex = 0;
+  for (vtkLight* light = lightCollection->GetNextLight(lightIt); light;
+       light = lightCollection->GetNextLight(lightIt), ++lightIndex)
+  {
+    internals.Visibility.emplace_back();
+    if (!vtkSoftShadowPass::LightCastsShadows(light))
+    {
+      continue;
+    }
+    ShadowLight shadowLight;
+    shadowLight.Index = lightIndex;
+    shadowLight.Positional = light->GetPositional() != 0;
+    glm::dvec3 position, focal;
+    light->GetTransformedPosition(&position.x);
+    light->GetTransformedFocalPoint(&focal.x);
+    const double radius = std::max(0.0, vtkSoftShadowPass::GetLightRadius(light));
+    if (shadowLight.Positional)
+    {
+      shadowLight.Position = position - internals.Origin;
+      shadowLight.Radius = radius;
+    }
+    else
+    {
+      const glm::dvec3 toward = position - focal;
+      if (!(glm::length(toward) > 0.0))
+      {
+        vtkWarningMacro(
+          "Directional light " << lightIndex << " has no direction (position = focal point).");
+        continue;
+      }
+      shadowLight.Toward = glm::normalize(toward);
+      Frame(shadowLight.Toward, shadowLight.T, shadowLight.B);
+      const double halfAngle = std::min(radius, 90.0) * 3.14159265358979323846 / 180.0;
+      const double s = std::sin(0.5 * halfAngle);
+      shadowLight.OneMinusCosMax = 2.0 * s * s;
+    }
+    internals.Visibility.back() = NewImage(width, height, "Visibility", 1.0f);
+    shadowLight.Values = static_cast<float*>(internals.Visibility.back()->GetScalarPointer());
+    lights.push_back(shadowLight);
+  }
+  this->NumberOfShadowingLights = static_cast<int>(lights.size());
+  internals.Depth = NewImage(width, height, "Depth", 1.0f);
+  float* depth = static_cast<float*>(internals.Depth->GetScalarPointer());
+
+  // World -> NDC exactly as the rasterizer sees it, and back.
+  double toNDC[16], fromNDC[16];
+  vtkMatrix4x4::DeepCopy(
+    toNDC, camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+  vtkMatrix4x4::Invert(toNDC, fromNDC);
+
+  const int samples = this->SamplesPerLight;
+  const unsigned int seed = this->Seed;
+  auto traceRow = [&](int j)
+  {
+    const double y = (j + 0.5) / height * 2.0 - 1.0;
+    for (int i = 0; i < width; ++i)
+    {
+      const std::size_t pixel = static_cast<std::size_t>(j) * width + i;
+      const double x = (i + 0.5) / width * 2.0 - 1.0;
+      const glm::dvec3 nearPoint = Project(fromNDC, glm::dvec3(x, y, -1.0));
+      const glm::dvec3 farPoint = Project(fromNDC, glm::dvec3(x, y, 1.0));
+      const glm::dvec3 origin = nearPoint - internals.Origin;
+      const double length = glm::length(farPoint - nearPoint);
+      if (!(length > 0.0) || !std::isfinite(length))
+      {
+        continue;
+      }
+      const glm::dvec3 direction = (farPoint - nearPoint) / length;
+
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rayHit;
+      rayHit.ray.org_x = static_cast<float>(origin.x);
+      rayHit.ray.org_y = static_cast<float>(origin.y);
+      rayHit.ray.org_z = static_cast<float>(origin.z);
+      rayHit.ray.dir_x = static_cast<float>(direction.x);
+      rayHit.ray.dir_y = static_cast<float>(direction.y);
+      rayHit.ray.dir_z = static_cast<float>(direction.z);
+      rayHit.ray.tnear = 0.0f;
+      rayHit.ray.tfar = static_cast<float>(length);
+      rayHit.ray.time = 0.0f;
+      rayHit.ray.mask = ~0u;
+      rayHit.ray.id = 0;
+      rayHit.ray.flags = 0;
+      rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(internals.Primary, &context, &rayHit);
+      if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      {
+        continue; // background: depth 1, visibility 1
+      }
+
+      // Redo the hit in double against the triangle's plane: a better point to shadow from.
+      const Mesh& mesh = internals.Meshes[rayHit.hit.geomID];
+      const glm::uvec3& triangle = mesh.Triangles[rayHit.hit.primID];
+      const glm::dvec3& a = mesh.Points[triangle.x];
+      glm::dvec3 normal = glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a);
+      const double normalLength = glm::length(normal);
+      if (normalLength > 0.0)
+      {
+        normal /= normalLength;
+      }
+      else
+      {
+        // Flattened by the actor's matrix: Embree's float normal is all there is.
+        normal = glm::normalize(glm::dvec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
+      }
+      const double cosine = glm::dot(direction, normal);
+      double t = rayHit.ray.tfar;
+      if (std::abs(cosine) > 1e-6)
+      {
+        t = glm::dot(a - origin, normal) / cosine;
+      }
+      const glm::dvec3 hit = origin + t * direction;
+      if (cosine > 0.0)
+      {
+        normal = -normal; // face the viewer
+      }
+
+      const glm::dvec3 ndc = Project(toNDC, hit + internals.Origin);
+      depth[pixel] = static_cast<float>(std::min(1.0, std::max(0.0, 0.5 * (ndc.z + 1.0))));
+      for (const ShadowLight& light : lights)
+      {
+        Random random(StreamSeed(seed, pixel, light.Index));
+        light.Values[pixel] =
+          static_cast<float>(internals.Trace(hit, normal, light, samples, random));
+      }
+    }
+  };
+
+  int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads
+                                          : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::max(1, std::min(threads, height));
+  std::atomic<int> nextRow{ 0 };
+  std::atomic<int> rowsDone{ 0 };
+  auto work = [&]()
+  {
+    for (int j = nextRow++; j < height; j = nextRow++)
+    {
+      traceRow(j);
+      ++rowsDone;
+    }
+  };
+  std::vector<std::thread> workers;
+  workers.reserve(static_cast<std::size_t>(threads - 1));
+  for (int k = 1; k < threads; ++k)
+  {
+    workers.emplace_back(work);
+  }
+  // This thread traces rows too and, being the caller's, is the one that fires the events.
+  const int reportEvery = std::max(1, height / 50);
+  int lastReported = 0;
+  for (int j = nextRow++; j < height; j = nextRow++)
+  {
+    traceRow(j);
+    const int done = ++rowsDone;
+    if (done - lastReported >= reportEvery)
+    {
+      lastReported = done;
+      progress = static_cast<double>(done) / height;
+      this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+    }
+  }
+  for (std::thread& worker : workers)
+  {
+    worker.join();
+  }
+  // The images are all that is kept: the scenes are rebuilt by the next Update anyway.
+  internals.ReleaseScenes();
+  internals.Meshes.clear();
+  internals.Meshes.shrink_to_fit();
+  progress = 1.0;
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  return true;
+}
