@@ -701,6 +701,10 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
 
 namespace
 {
+/// NDC depth by which light caps are pushed back: well above float rounding of the two
+/// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
+constexpr float CapDepthBias = 5e-5f;
+
 /// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
@@ -742,12 +746,12 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
     // The light cap lies on the caster's own surface: pushed away from the eye, a visible point
     // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
-    ostate->vtkglEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 4.0f);
+    // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
+    // push cannot move it behind any other visible point.
+    program->SetUniformf("capDepthBias", CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
       reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
-    glPolygonOffset(0.0f, 0.0f);
-    ostate->vtkglDisable(GL_POLYGON_OFFSET_FILL);
+    program->SetUniformf("capDepthBias", 0.0f);
     ostate->vtkglDisable(GL_DEPTH_CLAMP);
     drawn = static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
     ++zFailCount;

@@ -123,12 +123,13 @@ void VolumeCache::Upload()
   {
     return;
   }
-  // One buffer: [sides | light cap | dark cap], drawn as ranges.
+  // One buffer: [sides | dark cap | light cap], drawn as ranges (z-pass: sides only; z-fail:
+  // sides and dark cap, then the light cap with its depth bias).
   std::vector<std::uint32_t> indices;
   indices.reserve(this->SideCount() + this->CapCount() + this->DarkCapCount());
   indices.insert(indices.end(), this->Volume.Sides.begin(), this->Volume.Sides.end());
-  indices.insert(indices.end(), this->Volume.LightCap.begin(), this->Volume.LightCap.end());
   indices.insert(indices.end(), this->Volume.DarkCap.begin(), this->Volume.DarkCap.end());
+  indices.insert(indices.end(), this->Volume.LightCap.begin(), this->Volume.LightCap.end());
   if (!indices.empty())
   {
     this->Indices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);

@@ -148,6 +148,25 @@ void TestCameraInsideShadow()
   Check(scene.Pass->GetNumberOfZFailVolumes() >= 1, "near plane cut: z-fail used");
 }
 
+void TestVisibleCastersOnZFail()
+{
+  // A low camera under a roof: the ground (itself a caster) and the roof take the z-fail path, so
+  // their light caps lie on visible surfaces; those must stay lit, not z-fight.
+  Scene scene;
+  scene.Ground(5);
+  vtkNew<vtkPlaneSource> roof;
+  roof->SetOrigin(-1, 3.5, 1.5);
+  roof->SetPoint1(3, 3.5, 1.5);
+  roof->SetPoint2(-1, 3.5, 6);
+  scene.Add(roof, 0.7, 0.7, 0.75);
+  scene.Sphere(0, 1.2, 0, 0.8);
+  scene.Light->SetPosition(0.5, 8, 2.5);
+  scene.Camera(0.8, 1.0, 3.5, 0, 0.8, 0);
+  scene.Renderer->GetActiveCamera()->SetClippingRange(0.1, 30);
+  CheckAgainstTruth("visible casters on the z-fail path", scene.Render());
+  Check(scene.Pass->GetNumberOfZFailVolumes() >= 2, "ground and roof use z-fail");
+}
+
 void TestAwkwardMeshes()
 {
   // Open, non-orientable, inconsistently wound and mirrored casters over a ground plane.
@@ -435,6 +454,7 @@ int main()
 {
   TestClassic();
   TestCameraInsideShadow();
+  TestVisibleCastersOnZFail();
   TestAwkwardMeshes();
   TestCachingAndHeadlights();
   TestCompositing();

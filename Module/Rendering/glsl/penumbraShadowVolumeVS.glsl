@@ -7,12 +7,15 @@ in vec4 vertexMC;
 uniform mat4 MCDCMatrix;
 // Object space, relative to the caster's origin: (position, 1) or (direction to light, 0).
 uniform vec4 lightMC;
+// Pushes the light cap away from the eye (NDC depth units); see DrawShadowVolume.
+uniform float capDepthBias;
 
 void main()
 {
   if (vertexMC.w > 0.5)
   {
     gl_Position = MCDCMatrix * vec4(vertexMC.xyz, 1.0);
+    gl_Position.z += capDepthBias * gl_Position.w;
   }
   else
   {

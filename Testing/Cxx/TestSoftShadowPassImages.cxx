@@ -1,0 +1,161 @@
+// Regression images of vtkSoftShadowPass (baselines in Testing/Data/Baseline), compared with
+// vtkTesting's image difference at VTK's usual threshold. Usage: TestSoftShadowPassImages
+// <scene> <baseline.png> <output directory>.
+#include "penumbraTestHarness.h"
+
+#include "vtkCamera.h"
+#include "vtkContourFilter.h"
+#include "vtkGlyph3D.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkParametricBoy.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointSource.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkSphereSource.h"
+#include "vtkTesting.h"
+
+#include <string>
+
+namespace
+{
+
+vtkSmartPointer<vtkLight> KeyLight(double x, double y, double z, bool positional)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(positional);
+  light->SetConeAngle(180);
+  light->SetPosition(x, y, z);
+  light->SetFocalPoint(0, 0, 0);
+  return light;
+}
+
+/// An isosurface of vtkRTAnalyticSource (open where the extent clips it) and sphere glyphs
+/// over a ground plane, under a positional key light and a second, coloured directional light.
+void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+{
+  vtkNew<vtkRTAnalyticSource> field;
+  field->SetWholeExtent(-10, 10, -10, 10, -10, 10);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(field->GetOutputPort());
+  contour->SetValue(0, 200);
+  auto surface = penumbra_test::MakeActor(contour, 0.8, 0.55, 0.3);
+  surface->GetMapper()->ScalarVisibilityOff();
+  surface->SetScale(0.1);
+  surface->SetPosition(0, 1.3, 0);
+  surface->GetProperty()->SetSpecular(0.4);
+  surface->GetProperty()->SetSpecularPower(40);
+  renderer->AddActor(surface);
+
+  vtkNew<vtkPointSource> seeds;
+  seeds->SetNumberOfPoints(40);
+  seeds->SetRadius(2.5);
+  seeds->SetCenter(0, 0.6, 0);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetRadius(0.12);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputConnection(seeds->GetOutputPort());
+  glyphs->SetSourceConnection(ball->GetOutputPort());
+  renderer->AddActor(penumbra_test::MakeActor(glyphs, 0.3, 0.5, 0.9));
+
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-4, -0.2, -4);
+  ground->SetPoint1(4, -0.2, -4);
+  ground->SetPoint2(-4, -0.2, 4);
+  renderer->AddActor(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
+  keep.insert(keep.end(), { field.GetPointer(), contour.GetPointer(), seeds.GetPointer(),
+                            ball.GetPointer(), glyphs.GetPointer(), ground.GetPointer() });
+
+  renderer->AddLight(KeyLight(-2, 6, 2, true));
+  auto fill = KeyLight(3, 4, 1, false);
+  fill->SetDiffuseColor(0.4, 0.5, 0.9);
+  fill->SetIntensity(0.5);
+  renderer->AddLight(fill);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(3.5, 5, 7);
+  camera->SetFocalPoint(0, 0.8, 0);
+}
+
+/// Boy's surface (non-orientable, self-intersecting) over a PBR ground, seen from inside the
+/// shadow of a roof.
+void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+{
+  vtkNew<vtkParametricBoy> boy;
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(boy);
+  source->SetUResolution(60);
+  source->SetVResolution(60);
+  auto surface = penumbra_test::MakeActor(source, 0.3, 0.8, 0.5);
+  surface->SetPosition(0, 1.2, 0);
+  renderer->AddActor(surface);
+
+  vtkNew<vtkPlaneSource> roof;
+  roof->SetOrigin(-1, 3.5, 1.5);
+  roof->SetPoint1(3, 3.5, 1.5);
+  roof->SetPoint2(-1, 3.5, 6);
+  renderer->AddActor(penumbra_test::MakeActor(roof, 0.7, 0.7, 0.75));
+
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-5, 0, -5);
+  ground->SetPoint1(5, 0, -5);
+  ground->SetPoint2(-5, 0, 5);
+  auto floor = penumbra_test::MakeActor(ground, 0.9, 0.9, 0.9);
+  floor->GetProperty()->SetInterpolationToPBR();
+  floor->GetProperty()->SetRoughness(0.5);
+  renderer->AddActor(floor);
+  keep.insert(keep.end(), { boy.GetPointer(), source.GetPointer(), roof.GetPointer(),
+                            ground.GetPointer() });
+
+  renderer->AddLight(KeyLight(0.5, 8, 2.5, true));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.8, 1.0, 3.5);
+  camera->SetFocalPoint(0, 0.8, 0);
+  camera->SetClippingRange(0.1, 30);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 4)
+  {
+    std::fprintf(stderr, "usage: %s scientific|awkward baseline.png output-dir\n", argv[0]);
+    return 2;
+  }
+  const std::string scene = argv[1];
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(400, 300);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.15, 0.17, 0.25);
+  window->AddRenderer(renderer);
+  vtkNew<vtkSoftShadowPass> pass;
+  renderer->SetPass(pass);
+  std::vector<vtkSmartPointer<vtkObject>> keep;
+  if (scene == "scientific")
+  {
+    ScientificScene(renderer, keep);
+  }
+  else
+  {
+    AwkwardScene(renderer, keep);
+  }
+  if (scene == "scientific")
+  {
+    renderer->ResetCameraClippingRange();
+  }
+  window->Render();
+
+  vtkNew<vtkTesting> testing;
+  testing->AddArgument("-V");
+  testing->AddArgument(argv[2]);
+  testing->AddArgument("-T");
+  testing->AddArgument(argv[3]);
+  testing->SetRenderWindow(window);
+  const int result = testing->RegressionTest(10);
+  penumbra_test::Check(result == vtkTesting::PASSED, scene + " matches its baseline image");
+  penumbra_test::Check(pass->GetNumberOfShadowingLights() >= 1, scene + " has shadowing lights");
+  return penumbra_test::Failures() ? 1 : 0;
+}
