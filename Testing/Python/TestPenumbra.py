@@ -1,0 +1,134 @@
+"""Python use of the penumbra package: API, hard shadows against the ray-traced truth, and a
+regression image. Usage: TestPenumbra.py <baseline.png> <output directory>"""
+import sys
+
+import numpy as np
+import penumbra
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkFiltersSources import vtkConeSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow)
+from vtkmodules.vtkTestingRendering import vtkTesting
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def actor_of(data_or_source, color):
+    mapper = vtkPolyDataMapper()
+    if hasattr(data_or_source, "GetOutputPort"):
+        mapper.SetInputConnection(data_or_source.GetOutputPort())
+    else:
+        mapper.SetInputData(data_or_source)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    actor.GetProperty().SetAmbient(0.2)
+    actor.GetProperty().SetSpecular(0.3)
+    return actor
+
+
+# API: light radius and per-prop keys, the VTK way.
+light = vtkLight()
+check(penumbra.vtkSoftShadowPass.GetLightRadius(light) == 0.0, "default light radius is 0")
+penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.25)
+check(penumbra.vtkSoftShadowPass.GetLightRadius(light) == 0.25, "light radius round-trips")
+penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.0)
+
+renderer = vtkRenderer()
+renderer.SetBackground(0.15, 0.17, 0.25)
+plane = vtkPlaneSource()
+plane.SetOrigin(-4, 0, -4)
+plane.SetPoint1(4, 0, -4)
+plane.SetPoint2(-4, 0, 4)
+sphere = vtkSphereSource()
+sphere.SetCenter(-0.8, 1.0, 0)
+sphere.SetRadius(0.7)
+sphere.SetThetaResolution(48)
+sphere.SetPhiResolution(24)
+cone = vtkConeSource()
+cone.SetCenter(1.2, 0.8, 0.5)
+cone.SetDirection(0, 1, 0)
+cone.SetHeight(1.6)
+cone.SetResolution(24)
+ground = actor_of(plane, (0.85, 0.85, 0.8))
+for a in (ground, actor_of(sphere, (0.9, 0.3, 0.3)), actor_of(cone, (0.3, 0.6, 0.9))):
+    renderer.AddActor(a)
+check(penumbra.vtkSoftShadowPass.GetCastsShadows(ground), "actors cast by default")
+penumbra.vtkSoftShadowPass.SetCastsShadows(ground, False)
+check(not penumbra.vtkSoftShadowPass.GetCastsShadows(ground), "casting can be switched off")
+
+# Bad input beside good casters: a lines-only actor gets a warning, nothing else changes.
+points = vtkPoints()
+points.InsertNextPoint(2, 0.2, -1)
+points.InsertNextPoint(2, 1.5, -1)
+lines = vtkCellArray()
+lines.InsertNextCell(2, [0, 1])
+wire = vtkPolyData()
+wire.SetPoints(points)
+wire.SetLines(lines)
+renderer.AddActor(actor_of(wire, (1, 1, 0)))
+
+light.SetLightTypeToSceneLight()
+light.SetPositional(True)
+light.SetConeAngle(180)
+light.SetPosition(-2, 6, 3)
+light.SetFocalPoint(0, 0, 0)
+renderer.AddLight(light)
+camera = renderer.GetActiveCamera()
+camera.SetPosition(3, 4, 7)
+camera.SetFocalPoint(0, 0.5, 0)
+
+window = vtkRenderWindow()
+window.SetOffScreenRendering(1)
+window.SetMultiSamples(0)
+window.SetSize(320, 240)
+window.AddRenderer(renderer)
+shadows = penumbra.vtkSoftShadowPass()
+warnings = []
+shadows.AddObserver(vtkCommand.WarningEvent, lambda obj, event: warnings.append(event))
+renderer.SetPass(shadows)
+window.Render()
+check(shadows.GetNumberOfShadowingLights() == 1, "one shadowing light")
+check(len(warnings) >= 1, "lines-only caster reported (%d warnings)" % len(warnings))
+
+# Hard shadows against the ray-traced truth, ignoring one-pixel boundary shifts.
+truth = penumbra.vtkRayTracedVisibility()
+truth.SetRenderer(renderer)
+truth.SetSamplesPerLight(1)
+check(truth.Update(), "ray tracer ran")
+w, h = window.GetSize()
+ours = vtk_to_numpy(shadows.GetVisibilityImage(0).GetPointData().GetScalars()).reshape(h, w)
+true = vtk_to_numpy(truth.GetVisibilityImage(0).GetPointData().GetScalars()).reshape(h, w)
+depth = vtk_to_numpy(truth.GetDepthImage().GetPointData().GetScalars()).reshape(h, w)
+zbuffer = vtkFloatArray()
+window.GetZbufferData(0, 0, w - 1, h - 1, zbuffer)
+zbuffer = vtk_to_numpy(zbuffer).reshape(h, w)
+inner = (slice(1, -1), slice(1, -1))
+same_surface = (depth < 1) & (np.abs(depth - zbuffer) < 1e-3)
+neighbourhood = [np.roll(np.roll(true, dy, 0), dx, 1) for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+explained = np.any([np.abs(n - ours) <= 0.5 for n in neighbourhood], axis=0)
+compared = same_surface[inner].sum()
+wrong = (same_surface & ~explained)[inner].sum()
+shadowed = (same_surface & (true < 0.5))[inner].sum()
+print("     compared %d px, in shadow %d, wrong %d" % (compared, shadowed, wrong))
+check(shadowed > 0.02 * compared, "shadow in view")
+check(wrong <= 0.002 * compared, "agrees with ray-traced truth (<= 0.2% wrong)")
+check(ours[depth >= 1].min() == 1.0, "background is fully lit")
+
+testing = vtkTesting()
+for argument in ("-V", sys.argv[1], "-T", sys.argv[2]):
+    testing.AddArgument(argument)
+testing.SetRenderWindow(window)
+check(testing.RegressionTest(10) == vtkTesting.PASSED, "matches its baseline image")
+
+print("%s: %d failure(s)" % ("FAILED" if failures else "passed", len(failures)))
+sys.exit(1 if failures else 0)
