@@ -27,6 +27,12 @@ void AppendTriangle(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint3
 
 } // namespace
 
+bool ShadowVolume::FrontFacesSuffice(const CasterTopology& topo, const glm::dvec4& light)
+{
+  // From inside a closed mesh, rays leave through back faces only: then every face must count.
+  return topo.ClosedAndOriented && (light.w == 0.0 || LightOutsideBounds(topo, light));
+}
+
 int ShadowVolume::Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light)
 {
   const glm::uvec3& tri = topo.Triangles[triangle];
@@ -44,11 +50,12 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
   const bool directional = light.w == 0.0;
 
   // Facing weight per triangle; see the counting rule in the header.
+  const bool frontFacesOnly = FrontFacesSuffice(topo, light);
   std::vector<std::int8_t> weight(topo.Triangles.size());
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {
     const int facing = Facing(topo, t, light);
-    weight[t] = static_cast<std::int8_t>(topo.ClosedAndOriented ? (facing > 0 ? 1 : 0) : facing);
+    weight[t] = static_cast<std::int8_t>(frontFacesOnly ? (facing > 0 ? 1 : 0) : facing);
     if (weight[t] != 0)
     {
       ++volume.CastingTriangles;
@@ -93,11 +100,12 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
     }
   }
 
-  if (!directional && !volume.Silhouette.empty())
+  // A light inside a closed mesh sees no silhouette at all: the caps alone bound its volume.
+  if (!directional && !volume.LightCap.empty())
   {
     if (LightOutsideBounds(topo, light))
     {
-      const std::uint32_t centre = volume.Silhouette.front().From + n;
+      const std::uint32_t centre = volume.Silhouette.empty() ? 0 : volume.Silhouette.front().From + n;
       for (const SilhouetteEdge& e : volume.Silhouette)
       {
         if (e.From + n == centre || e.To + n == centre)

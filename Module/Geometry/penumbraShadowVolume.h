@@ -8,8 +8,9 @@
  * triangles between it and the light: zero means lit, whatever the mesh's orientation or
  * manifoldness. Edges shared by two triangles whose swept sides cancel drop out; what is left on
  * an edge is its multiplicity m_e = sum over its triangles of (walk sign x facing weight), drawn
- * |m_e| times. For a closed, consistently oriented mesh the back faces shadow nothing that the
- * front faces do not, so only front faces count (weight 1/0 instead of +1/-1) and m_e is +-1.
+ * |m_e| times. For a closed, consistently oriented mesh lit from outside its bounds the back faces
+ * shadow nothing that the front faces do not, so only front faces count (weight 1/0 instead of
+ * +1/-1) and m_e is +-1.
  *
  * Vertex indices refer to a buffer of 2N vertices: i < N is caster point i, N + i the same point
  * swept to infinity away from the light (w = 0 in the vertex shader).
@@ -49,6 +50,9 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
    * winding so that world-space volumes stay positively oriented.
    */
   static ShadowVolume Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored);
+
+  /// Whether front faces alone bound the shadow: a closed, oriented mesh lit from outside.
+  static bool FrontFacesSuffice(const CasterTopology& topo, const glm::dvec4& light);
 
   /// +1 when the triangle faces the light, -1 when it faces away, 0 when edge-on.
   static int Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light);

@@ -26,6 +26,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
@@ -563,9 +564,14 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   internals.Caches.BeginFrame();
   internals.Casters.clear();
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  // Casters come from every visible prop, not the render state's list: the frustum culler drops
+  // props outside the view whose shadows still fall inside it.
+  vtkPropCollection* props = s->GetRenderer()->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
   {
-    auto actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    auto actor = vtkActor::SafeDownCast(prop);
     if (!actor || !actor->GetVisibility() || !GetCastsShadows(actor) || !actor->HasOpaqueGeometry() ||
       !actor->GetMapper())
     {

@@ -82,7 +82,14 @@ glm::dvec3 VolumePoint(
     return topo.Points[index];
   }
   const glm::dvec3& p = topo.Points[index - n];
-  const glm::dvec3 away = light.w != 0.0 ? p - glm::dvec3(light) : -glm::dvec3(light);
+  if (light.w == 0.0)
+  {
+    // Towards a directional light every point sweeps to one point at infinity (w = 0 on the
+    // GPU); a shared far apex keeps the emulated volume closed too.
+    // Far enough that the emulated cone is a prism near the caster to 1e-9.
+    return -1e4 * far * glm::normalize(glm::dvec3(light));
+  }
+  const glm::dvec3 away = p - glm::dvec3(light);
   return p + far * away / glm::length(away);
 }
 
@@ -128,7 +135,7 @@ int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dv
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {
     const int facing = ShadowVolume::Facing(topo, t, light);
-    if (facing == 0 || (topo.ClosedAndOriented && facing < 0))
+    if (facing == 0 || (ShadowVolume::FrontFacesSuffice(topo, light) && facing < 0))
     {
       continue;
     }
@@ -141,6 +148,22 @@ int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dv
     }
   }
   return count;
+}
+
+/// Whether any non-degenerate triangle, whatever its orientation, blocks q from the light.
+bool AnyOccluder(const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
+{
+  const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - q : glm::dvec3(light) * 1e6;
+  for (const glm::uvec3& tri : topo.Triangles)
+  {
+    const double hit = RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y],
+      topo.Points[tri.z], nearEdge);
+    if (hit >= 0.0 && hit <= 1.0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 /// Compares winding and occluder counts at random points around the caster.
@@ -167,6 +190,18 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
       continue;
     }
     ++compared;
+    // Independent of the counting rule: shadowed iff any triangle blocks the segment.
+    bool anyEdge = false;
+    const bool blocked = AnyOccluder(topo, light, q, anyEdge);
+    if (!anyEdge && (winding > 0) != blocked)
+    {
+      if (mismatches++ < 3)
+      {
+        std::printf("  %s: q=(%g,%g,%g) winding %d but blocked=%d (light %g %g %g %g)\n",
+          name.c_str(), q.x, q.y, q.z, winding, int(blocked), light.x, light.y, light.z, light.w);
+      }
+      continue;
+    }
     if (winding != expected)
     {
       if (mismatches++ < 3)
@@ -233,6 +268,9 @@ void TestClosedSphere(std::mt19937& rng)
     Check(unit, "closed mesh silhouette multiplicities are 1");
     CheckVolume("sphere", topo, light, rng);
   }
+  // A light inside a closed mesh: nothing outside it sees the light.
+  Check(!ShadowVolume::FrontFacesSuffice(topo, { 0.1, 0.05, -0.1, 1.0 }), "light inside: all faces count");
+  CheckVolume("light inside sphere", topo, { 0.1, 0.05, -0.1, 1.0 }, rng);
 }
 
 void TestWelding(std::mt19937& rng)

@@ -204,6 +204,18 @@ void TestAwkwardMeshes()
   CheckAgainstTruth("open, non-orientable and mirrored casters", scene.Render());
 }
 
+void TestLightInsideClosedCaster()
+{
+  // A bulb sphere that casts, around its own light: nothing outside it sees the light.
+  Scene scene;
+  scene.Ground();
+  scene.Sphere(0, 1, 0, 0.6);
+  scene.Sphere(-2, 6, 3, 0.3);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  const Comparison c = scene.Render();
+  CheckAgainstTruth("light inside a closed caster", c, 0.9);
+}
+
 void TestCachingAndHeadlights()
 {
   Scene scene;
@@ -456,6 +468,7 @@ int main()
   TestCameraInsideShadow();
   TestVisibleCastersOnZFail();
   TestAwkwardMeshes();
+  TestLightInsideClosedCaster();
   TestCachingAndHeadlights();
   TestCompositing();
   TestViewportsLightsAndResize();
