@@ -1,0 +1,522 @@
+// PenumbraDemo: a small scientific scene (an isosurface of vtkRTAnalyticSource floating over a
+// ground plane, with a field of glyphs standing on it) lit by one positional key light, rendered
+// with and without vtkSoftShadowPass.
+//
+//   PenumbraDemo --output DIR [--width W] [--height H] [--frames N]
+//
+// It writes DIR/demo_no_shadows.png and DIR/demo_shadows.png, times N orbiting frames with and
+// without shadows (median and min of renderWindow->Render()), and compares the pass's light
+// visibility at the final camera of the orbit with the ray-traced ground truth of
+// vtkRayTracedVisibility, writing both as grey images (DIR/visibility_pass.png,
+// DIR/visibility_truth.png) next to the shadowed view they belong to
+// (DIR/demo_shadows_final_view.png).
+// Exits 0 on success, 1 when something failed to render or to be written, 2 on a usage error.
+
+#include "vtkRayTracedVisibility.h"
+#include "vtkSoftShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkConeSource.h"
+#include "vtkContourFilter.h"
+#include "vtkFloatArray.h"
+#include "vtkGlyph3D.h"
+#include "vtkImageData.h"
+#include "vtkImageShiftScale.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+struct Options
+{
+  std::string Output = ".";
+  int Width = 1024;
+  int Height = 768;
+  int Frames = 30;
+};
+
+void Usage(const char* program)
+{
+  std::fprintf(stderr,
+    "usage: %s [--output DIR] [--width W] [--height H] [--frames N]\n"
+    "  renders the Penumbra demo scene with and without shadows into DIR (default .),\n"
+    "  times N orbiting frames of each (default 1024x768, 30 frames) and compares the\n"
+    "  shadow pass with ray-traced ground truth.\n",
+    program);
+}
+
+bool ParseInt(const char* text, int minimum, int& value)
+{
+  char* end = nullptr;
+  const long parsed = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || parsed < minimum || parsed > 16384)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+bool ParseArguments(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help")
+    {
+      Usage(argv[0]);
+      std::exit(EXIT_SUCCESS);
+    }
+    if (i + 1 >= argc)
+    {
+      std::fprintf(stderr, "%s: missing value after %s\n", argv[0], arg.c_str());
+      return false;
+    }
+    const char* value = argv[++i];
+    bool ok = true;
+    if (arg == "--output" || arg == "-o")
+    {
+      options.Output = value;
+    }
+    else if (arg == "--width")
+    {
+      ok = ParseInt(value, 16, options.Width);
+    }
+    else if (arg == "--height")
+    {
+      ok = ParseInt(value, 16, options.Height);
+    }
+    else if (arg == "--frames")
+    {
+      ok = ParseInt(value, 1, options.Frames);
+    }
+    else
+    {
+      std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
+      return false;
+    }
+    if (!ok)
+    {
+      std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], value, arg.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Triangles a polydata draws (polygons and strips fanned into triangles).
+vtkIdType CountTriangles(vtkPolyData* data)
+{
+  vtkIdType triangles = 0;
+  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
+  {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
+    }
+  }
+  return triangles;
+}
+
+struct Timing
+{
+  double Median = 0.0;
+  double Min = 0.0;
+};
+
+/// Renders `warmUp` frames, then `frames` timed ones, the camera orbiting one degree before each
+/// so that no frame is a repeat. Each sample is Render() plus glFinish (WaitForCompletion), so
+/// that work the driver queued is charged to its frame.
+Timing TimeFrames(vtkRenderWindow* window, vtkCamera* camera, int warmUp, int frames)
+{
+  for (int i = 0; i < warmUp; ++i)
+  {
+    camera->Azimuth(1.0);
+    window->Render();
+  }
+  window->WaitForCompletion();
+  std::vector<double> ms;
+  ms.reserve(frames);
+  for (int i = 0; i < frames; ++i)
+  {
+    camera->Azimuth(1.0);
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const auto stop = std::chrono::steady_clock::now();
+    ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  Timing t;
+  const std::size_t n = ms.size();
+  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+  t.Min = ms.front();
+  return t;
+}
+
+bool WritePNG(vtkAlgorithmOutput* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::fprintf(stderr, "error: could not write %s\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+
+bool WriteScreenshot(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  return WritePNG(grab->GetOutputPort(), path);
+}
+
+/// Writes a visibility image (floats in [0, 1]) as an 8-bit grey PNG.
+bool WriteVisibility(vtkImageData* visibility, const std::string& path)
+{
+  vtkNew<vtkImageShiftScale> toBytes;
+  toBytes->SetInputData(visibility);
+  toBytes->SetShift(0.0);
+  toBytes->SetScale(255.0);
+  toBytes->SetOutputScalarTypeToUnsignedChar();
+  toBytes->ClampOverflowOn();
+  toBytes->Update();
+  return WritePNG(toBytes->GetOutputPort(), path);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseArguments(argc, argv, options))
+  {
+    Usage(argv[0]);
+    return 2;
+  }
+  const auto programStart = std::chrono::steady_clock::now();
+  const std::string out = options.Output.empty() ? std::string(".") : options.Output;
+  {
+    std::error_code error;
+    std::filesystem::create_directories(out, error);
+    if (error)
+    {
+      std::fprintf(stderr, "error: cannot create %s: %s\n", out.c_str(), error.message().c_str());
+      return EXIT_FAILURE;
+    }
+  }
+
+  // --- The scene (z up). ------------------------------------------------------------------------
+  // Isosurface of the analytic "wavelet" field: a blobby, closed-ish surface, open where the
+  // extent clips it. Its data spans [-20, 20]^3; the actor scales it to ~3.6 units and lifts it.
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-20, 20, -20, 20, -20, 20);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 172.0);
+  contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  vtkNew<vtkPolyDataMapper> isoMapper;
+  isoMapper->SetInputConnection(contour->GetOutputPort());
+  isoMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> isosurface;
+  isosurface->SetMapper(isoMapper);
+  isosurface->SetScale(0.09);
+  isosurface->SetPosition(0.0, 0.0, 2.6);
+  isosurface->RotateZ(20.0);
+  isosurface->GetProperty()->SetColor(0.90, 0.55, 0.25);
+  isosurface->GetProperty()->SetSpecular(0.3);
+  isosurface->GetProperty()->SetSpecularPower(30.0);
+
+  // Ground plane.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-8.0, -8.0, 0.0);
+  plane->SetPoint1(8.0, -8.0, 0.0);
+  plane->SetPoint2(-8.0, 8.0, 0.0);
+  plane->SetResolution(1, 1);
+  plane->Update();
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> ground;
+  ground->SetMapper(planeMapper);
+  ground->GetProperty()->SetColor(0.85, 0.85, 0.82);
+
+  // A 7x7 grid of cones standing on the plane, one polydata.
+  vtkNew<vtkPoints> sites;
+  for (int i = 0; i < 7; ++i)
+  {
+    for (int j = 0; j < 7; ++j)
+    {
+      sites->InsertNextPoint(-5.4 + 1.8 * i, -5.4 + 1.8 * j, 0.35);
+    }
+  }
+  vtkNew<vtkPolyData> siteData;
+  siteData->SetPoints(sites);
+  vtkNew<vtkConeSource> cone;
+  cone->SetHeight(0.7);
+  cone->SetRadius(0.22);
+  cone->SetResolution(24);
+  cone->SetDirection(0.0, 0.0, 1.0);
+  cone->CappingOn();
+  vtkNew<vtkGlyph3D> glyph;
+  glyph->SetInputData(siteData);
+  glyph->SetSourceConnection(cone->GetOutputPort());
+  glyph->SetScaleModeToDataScalingOff();
+  glyph->OrientOff();
+  glyph->Update();
+  vtkNew<vtkPolyDataMapper> glyphMapper;
+  glyphMapper->SetInputConnection(glyph->GetOutputPort());
+  glyphMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> glyphs;
+  glyphs->SetMapper(glyphMapper);
+  glyphs->GetProperty()->SetColor(0.30, 0.50, 0.85);
+  glyphs->GetProperty()->SetSpecular(0.2);
+
+  for (vtkActor* actor : { isosurface.Get(), ground.Get(), glyphs.Get() })
+  {
+    actor->GetProperty()->SetAmbient(0.15);
+    actor->GetProperty()->SetDiffuse(0.85);
+  }
+  const vtkIdType triangles = CountTriangles(contour->GetOutput()) +
+    CountTriangles(plane->GetOutput()) + CountTriangles(glyph->GetOutput());
+
+  // One positional key light from above, to the side: shadows fall across the plane.
+  vtkNew<vtkLight> key;
+  key->SetLightTypeToSceneLight();
+  key->SetPositional(true);
+  key->SetConeAngle(180.0);
+  key->SetPosition(5.0, -8.7, 8.5);
+  key->SetFocalPoint(0.0, 0.0, 0.0);
+  key->SetIntensity(1.0);
+  vtkSoftShadowPass::SetLightRadius(key, 0.0); // hard shadows
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(ground);
+  renderer->AddActor(isosurface);
+  renderer->AddActor(glyphs);
+  renderer->AddLight(key);
+  renderer->SetAmbient(1.0, 1.0, 1.0);
+  renderer->SetBackground(0.12, 0.14, 0.18);
+  renderer->SetBackground2(0.35, 0.40, 0.48);
+  renderer->GradientBackgroundOn();
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  // The timed orbit turns the camera towards the light's side; it starts where the shadows fall
+  // across the view and ends (after 3 + frames degrees) still well away from the light.
+  camera->SetFocalPoint(-1.2, 0.5, 1.2);
+  camera->SetPosition(-6.0, -12.7, 7.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(35.0);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.Width, options.Height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  window->SetWindowName("Penumbra demo");
+
+  vtkNew<vtkSoftShadowPass> shadows;
+
+  // --- a. Still images. ------------------------------------------------------------------------
+  std::vector<std::string> written;
+  bool ok = true;
+  window->Render();
+  if (!WriteScreenshot(window, out + "/demo_no_shadows.png"))
+  {
+    return EXIT_FAILURE;
+  }
+  written.push_back(out + "/demo_no_shadows.png");
+
+  renderer->SetPass(shadows);
+  window->Render();
+  const int shadowingLights = shadows->GetNumberOfShadowingLights();
+  if (shadowingLights < 1)
+  {
+    std::fprintf(stderr, "error: the shadow pass shadowed no light\n");
+    ok = false;
+  }
+  if (!WriteScreenshot(window, out + "/demo_shadows.png"))
+  {
+    return EXIT_FAILURE;
+  }
+  written.push_back(out + "/demo_shadows.png");
+
+  // --- b. Frame times, both in this run. -------------------------------------------------------
+  // Both runs orbit through the same views from the same start, so their times compare.
+  vtkNew<vtkCamera> start;
+  start->DeepCopy(camera);
+  renderer->SetPass(nullptr);
+  const Timing plain = TimeFrames(window, camera, 3, options.Frames);
+  camera->DeepCopy(start);
+  renderer->SetPass(shadows);
+  const vtkIdType updatesBefore = shadows->GetNumberOfSilhouetteUpdates();
+  const Timing shadowed = TimeFrames(window, camera, 3, options.Frames);
+  // Only the camera moves: the pass should reuse every caster's silhouette.
+  const vtkIdType orbitUpdates = shadows->GetNumberOfSilhouetteUpdates() - updatesBefore;
+  const vtkIdType volumeTriangles = shadows->GetNumberOfShadowVolumeTriangles();
+
+  // --- c. Visibility against ray-traced truth at the final camera. -----------------------------
+  // The last timed frame was shadowed; render once more without moving so that the z-buffer and
+  // the pass's light-intensity buffer are this exact frame.
+  window->Render();
+  // The visibility images below are of this view, not of demo_shadows.png's: save it too.
+  if (WriteScreenshot(window, out + "/demo_shadows_final_view.png"))
+  {
+    written.push_back(out + "/demo_shadows_final_view.png");
+  }
+  else
+  {
+    ok = false;
+  }
+  int lightIndex = -1;
+  {
+    vtkCollectionSimpleIterator it;
+    renderer->GetLights()->InitTraversal(it);
+    int index = 0;
+    for (vtkLight* light; (light = renderer->GetLights()->GetNextLight(it)); ++index)
+    {
+      if (light == key.Get())
+      {
+        lightIndex = index;
+      }
+    }
+  }
+  vtkImageData* passVisibility = shadows->GetVisibilityImage(lightIndex);
+  const int width = options.Width, height = options.Height;
+  vtkNew<vtkFloatArray> zbuffer;
+  window->GetZbufferData(0, 0, width - 1, height - 1, zbuffer);
+
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(renderer);
+  truth->SetSamplesPerLight(1);
+  const auto traceStart = std::chrono::steady_clock::now();
+  const bool traced = truth->Update();
+  const double traceMs = std::chrono::duration<double, std::milli>(
+    std::chrono::steady_clock::now() - traceStart).count();
+  vtkImageData* truthVisibility = traced ? truth->GetVisibilityImage(lightIndex) : nullptr;
+  vtkImageData* truthDepth = traced ? truth->GetDepthImage() : nullptr;
+
+  auto sizeMatches = [&](vtkImageData* image) {
+    int dims[3];
+    image->GetDimensions(dims);
+    return dims[0] == width && dims[1] == height;
+  };
+  bool compared = false;
+  vtkIdType comparedPixels = 0, over01 = 0, over05 = 0, depthMismatch = 0;
+  double sumError = 0.0;
+  if (!passVisibility || !truthVisibility || !truthDepth ||
+    zbuffer->GetNumberOfValues() != static_cast<vtkIdType>(width) * height)
+  {
+    std::fprintf(stderr, "error: no visibility to compare (pass %s, truth %s, z-buffer %s)\n",
+      passVisibility ? "ok" : "missing", truthVisibility ? "ok" : "missing",
+      zbuffer->GetNumberOfValues() ? "ok" : "missing");
+    ok = false;
+  }
+  else if (!sizeMatches(passVisibility) || !sizeMatches(truthVisibility) ||
+    !sizeMatches(truthDepth))
+  {
+    std::fprintf(stderr, "error: visibility images do not have the window's size\n");
+    ok = false;
+  }
+  else
+  {
+    compared = true;
+    const float* pass = static_cast<float*>(passVisibility->GetScalarPointer());
+    const float* ref = static_cast<float*>(truthVisibility->GetScalarPointer());
+    const float* refDepth = static_cast<float*>(truthDepth->GetScalarPointer());
+    const float* z = zbuffer->GetPointer(0);
+    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      if (!(ref[p] < 1.0f || pass[p] < 1.0f))
+      {
+        continue; // lit in both: outside the shadow region
+      }
+      if (refDepth[p] >= 1.0f || z[p] >= 1.0f || std::abs(refDepth[p] - z[p]) >= 1e-3f)
+      {
+        ++depthMismatch; // background, or the two saw different surfaces
+        continue;
+      }
+      const double error = std::abs(static_cast<double>(pass[p]) - ref[p]);
+      sumError += error;
+      over01 += error > 0.1;
+      over05 += error > 0.5;
+      ++comparedPixels;
+    }
+    if (!WriteVisibility(passVisibility, out + "/visibility_pass.png") ||
+      !WriteVisibility(truthVisibility, out + "/visibility_truth.png"))
+    {
+      ok = false;
+    }
+    else
+    {
+      written.push_back(out + "/visibility_pass.png");
+      written.push_back(out + "/visibility_truth.png");
+    }
+  }
+
+  // --- d. Report. ------------------------------------------------------------------------------
+  std::printf("Penumbra demo: %dx%d, %lld triangles, %d shadowing light%s\n", width, height,
+    static_cast<long long>(triangles), shadowingLights, shadowingLights == 1 ? "" : "s");
+  std::printf("  no shadows      median %6.1f ms  min %6.1f ms\n", plain.Median, plain.Min);
+  std::printf("  hard shadows    median %6.1f ms  min %6.1f ms  (x%.2f)\n", shadowed.Median,
+    shadowed.Min, plain.Median > 0.0 ? shadowed.Median / plain.Median : 0.0);
+  std::printf("    (%d orbiting frames each, Render() + glFinish; %lld shadow-volume triangles "
+              "per frame, %lld silhouette updates while orbiting)\n",
+    options.Frames, static_cast<long long>(volumeTriangles), static_cast<long long>(orbitUpdates));
+  if (compared)
+  {
+    const double n = comparedPixels > 0 ? static_cast<double>(comparedPixels) : 1.0;
+    std::printf("  visibility vs ray-traced truth (%lld px in shadow): MAE %.4f  >0.1: %.2f%%  "
+                ">0.5: %.2f%%\n",
+      static_cast<long long>(comparedPixels), sumError / n, 100.0 * over01 / n,
+      100.0 * over05 / n);
+    std::printf("    (final camera; %lld shadow px skipped where raster and ray-traced surfaces "
+                "differ; traced in %.0f ms)\n",
+      static_cast<long long>(depthMismatch), traceMs);
+  }
+  std::printf("wrote:\n");
+  for (const std::string& path : written)
+  {
+    std::printf("  %s\n", path.c_str());
+  }
+  std::printf("total %.1f s\n",
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - programStart).count());
+
+  renderer->SetPass(nullptr);
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
