@@ -43,7 +43,8 @@ int ShadowVolume::Facing(const CasterTopology& topo, std::uint32_t triangle, con
   return d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
 }
 
-ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored)
+ShadowVolume ShadowVolume::Build(
+  const CasterTopology& topo, const glm::dvec4& light, bool mirrored, bool withCaps)
 {
   ShadowVolume volume;
   const auto n = static_cast<std::uint32_t>(topo.Points.size());
@@ -59,6 +60,10 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
     if (weight[t] != 0)
     {
       ++volume.CastingTriangles;
+      if (!withCaps)
+      {
+        continue;
+      }
       const glm::uvec3& tri = topo.Triangles[t];
       const bool flip = (weight[t] < 0) != mirrored;
       AppendTriangle(volume.LightCap, tri.x, flip ? tri.z : tri.y, flip ? tri.y : tri.z);

@@ -47,9 +47,11 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
    * Builds the volume of `topo` for a light given in the caster's object space relative to
    * topo.Origin: (x, y, z, 1) for a positional light, (dx, dy, dz, 0) for the direction towards
    * a directional light. `mirrored` (actor matrix with negative determinant) reverses every
-   * winding so that world-space volumes stay positively oriented.
+   * winding so that world-space volumes stay positively oriented. Without `withCaps` only the
+   * silhouette and sides are built (enough for z-pass, and a fraction of the memory).
    */
-  static ShadowVolume Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored);
+  static ShadowVolume Build(
+    const CasterTopology& topo, const glm::dvec4& light, bool mirrored, bool withCaps = true);
 
   /// Whether front faces alone bound the shadow: a closed, oriented mesh lit from outside.
   static bool FrontFacesSuffice(const CasterTopology& topo, const glm::dvec4& light);

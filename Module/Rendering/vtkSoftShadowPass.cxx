@@ -13,6 +13,7 @@
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
 #include "vtkMapper.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -142,6 +143,54 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   return true;
 }
 
+/// Two unit vectors completing `axis` to an orthonormal basis.
+void Basis(const glm::dvec3& axis, glm::dvec3& u, glm::dvec3& v)
+{
+  const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  u = glm::normalize(glm::cross(axis, helper));
+  v = glm::cross(axis, u);
+}
+
+/**
+ * Samples spread evenly over an area light (Vogel's sunflower: equal-area rings, golden-angle
+ * turns), so each carries weight 1/N. A positional light of radius r is sampled on the disk
+ * through its centre facing `target` (the light as the casters see it); a directional light of
+ * angular radius a on the cone of directions of half-angle a, uniformly in solid angle.
+ */
+std::vector<glm::dvec4> SpreadLightSamples(
+  const glm::dvec4& light, double radius, int count, const glm::dvec3& target)
+{
+  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  std::vector<glm::dvec4> samples;
+  samples.reserve(count);
+  if (light.w != 0.0)
+  {
+    const glm::dvec3 centre(light);
+    glm::dvec3 axis = target - centre;
+    axis = glm::length(axis) > 0.0 ? glm::normalize(axis) : glm::dvec3(0, 0, 1);
+    glm::dvec3 u, v;
+    Basis(axis, u, v);
+    for (int k = 0; k < count; ++k)
+    {
+      const double rho = radius * std::sqrt((k + 0.5) / count), phi = k * golden;
+      samples.emplace_back(centre + rho * (std::cos(phi) * u + std::sin(phi) * v), 1.0);
+    }
+    return samples;
+  }
+  const glm::dvec3 axis(light);
+  glm::dvec3 u, v;
+  Basis(axis, u, v);
+  const double cosMax = std::cos(glm::radians(radius));
+  for (int k = 0; k < count; ++k)
+  {
+    const double cosTheta = 1.0 - (k + 0.5) / count * (1.0 - cosMax);
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta)), phi = k * golden;
+    samples.emplace_back(
+      cosTheta * axis + sinTheta * (std::cos(phi) * u + std::sin(phi) * v), 0.0);
+  }
+  return samples;
+}
+
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
   vtkInformation* info = prop->GetPropertyKeys();
@@ -155,7 +204,7 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 }
 
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
-  penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
+  penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount);
 
 } // namespace
@@ -172,6 +221,8 @@ public:
     int Layer;           ///< layer of the LI buffer
     glm::dvec4 World;    ///< (position, 1) or (direction towards the light, 0)
     float Attenuation;
+    /// Points (or directions) on the light whose hard shadows are averaged; one for hard shadows.
+    std::vector<glm::dvec4> Samples;
   };
 
   penumbra::ShadowCaches Caches;
@@ -202,6 +253,10 @@ public:
 
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
+
+  /// The light itself, or LightSamples points on it when it has a radius and the method averages.
+  std::vector<glm::dvec4> SampleLight(
+    vtkSoftShadowPass* self, vtkLight* light, const glm::dvec4& world, vtkRenderer* renderer);
 
   const ShadowLight* FindLight(int collectionIndex) const
   {
@@ -243,11 +298,26 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
     os << "(none)\n";
   }
   os << indent << "ShadowsEnabled: " << this->ShadowsEnabled << "\n";
+  os << indent << "Method: " << this->GetMethodAsString() << "\n";
+  os << indent << "LightSamples: " << this->LightSamples << "\n";
   os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
   os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
      << "\n";
   os << indent << "NumberOfZFailVolumes: " << this->NumberOfZFailVolumes << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
+}
+
+const char* vtkSoftShadowPass::GetMethodAsString()
+{
+  switch (this->Method)
+  {
+    case METHOD_HARD_VOLUMES:
+      return "HardVolumes";
+    case METHOD_AVERAGED_HARD_SHADOWS:
+      return "AveragedHardShadows";
+    default:
+      return "Automatic";
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -441,8 +511,35 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     }
     internals.Lights.push_back({ light, collectionIndex, index,
       static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()) });
+      static_cast<float>(light->GetShadowAttenuation()),
+      internals.SampleLight(this, light, world, renderer) });
   }
+}
+
+std::vector<glm::dvec4> vtkSoftShadowPass::vtkInternals::SampleLight(vtkSoftShadowPass* self,
+  vtkLight* light, const glm::dvec4& world, vtkRenderer* renderer)
+{
+  double radius = GetLightRadius(light);
+  if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
+  {
+    return { world };
+  }
+  if (world.w == 0.0 && radius >= 90.0)
+  {
+    if (this->WarnedLights.insert(light).second)
+    {
+      vtkWarningWithObjectMacro(self, "Directional light " << light << " has an angular radius of "
+                                                           << radius << " degrees; clamped to 89.");
+    }
+    radius = 89.0;
+  }
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const glm::dvec3 target = vtkMath::AreBoundsInitialized(bounds)
+    ? glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5
+    : glm::dvec3(light->GetTransformedFocalPoint()[0], light->GetTransformedFocalPoint()[1],
+        light->GetTransformedFocalPoint()[2]);
+  return SpreadLightSamples(world, radius, self->LightSamples, target);
 }
 
 void vtkSoftShadowPass::UpdateShaderConfiguration()
@@ -608,10 +705,13 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
     for (const auto& light : internals.Lights)
     {
-      penumbra::VolumeCache& volume = caster->Volumes[light.Light];
-      if (volume.Update(*mesh, worldToObject * light.World, mirrored))
+      for (std::size_t k = 0; k < light.Samples.size(); ++k)
       {
-        ++this->NumberOfSilhouetteUpdates;
+        penumbra::VolumeCache& volume = caster->Volumes[{ light.Light, static_cast<int>(k) }];
+        if (volume.Update(*mesh, worldToObject * light.Samples[k], mirrored))
+        {
+          ++this->NumberOfSilhouetteUpdates;
+        }
       }
     }
     internals.Casters.push_back(caster);
@@ -671,34 +771,45 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
 
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+  ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
   for (const auto& light : internals.Lights)
   {
+    // The layer starts fully lit; each light sample whose volume covers a pixel takes 1/N away
+    // (float target, additive blending, no clamping).
     this->BindFramebuffer(light.Layer);
     internals.Framebuffer->ActivateDrawBuffer(0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglStencilMask(0xFF);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-
-    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    ostate->vtkglEnable(GL_STENCIL_TEST);
-    ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
-    ostate->vtkglDepthFunc(GL_LESS);
-    window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
-    for (penumbra::CasterCache* caster : internals.Casters)
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    const float sampleWeight = 1.0f / static_cast<float>(light.Samples.size());
+    for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
-      this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-        light.Light, light.World, internals.WorldToClip, internals.NearCorners,
-        this->NumberOfZFailVolumes);
-    }
+      ostate->vtkglStencilMask(0xFF);
+      ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
+      ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      ostate->vtkglDisable(GL_BLEND);
+      ostate->vtkglEnable(GL_STENCIL_TEST);
+      ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+      ostate->vtkglDepthFunc(GL_LESS);
+      window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
+      for (penumbra::CasterCache* caster : internals.Casters)
+      {
+        this->NumberOfShadowVolumeTriangles +=
+          DrawShadowVolume(ostate, volumeProgram, *caster, { light.Light, static_cast<int>(k) },
+            light.Samples[k], internals.WorldToClip, internals.NearCorners,
+            this->NumberOfZFailVolumes);
+      }
 
-    // Resolve: every geometry pixel with a non-zero count is in this light's shadow.
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    ostate->vtkglDepthFunc(GL_GREATER);
-    ostate->vtkglEnable(GL_DEPTH_CLAMP); // the triangle lies on the far plane
-    this->DrawResolve(window, 0.0f);
-    ostate->vtkglDisable(GL_DEPTH_CLAMP);
+      // Resolve: every geometry pixel with a non-zero count is in this sample's shadow.
+      ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      ostate->vtkglEnable(GL_BLEND);
+      ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+      ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      ostate->vtkglDepthFunc(GL_GREATER);
+      ostate->vtkglEnable(GL_DEPTH_CLAMP); // the triangle lies on the far plane
+      this->DrawResolve(window, -sampleWeight);
+      ostate->vtkglDisable(GL_DEPTH_CLAMP);
+    }
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -713,16 +824,22 @@ constexpr float CapDepthBias = 5e-5f;
 
 /// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
-  penumbra::CasterCache& caster, vtkLight* light, const glm::dvec4& lightWorld,
+  penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount)
 {
-  penumbra::VolumeCache& volume = caster.Volumes[light];
-  const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
-                    lightCap = volume.CapCount();
-  if (sides == 0 && lightCap == 0)
+  penumbra::VolumeCache& volume = caster.Volumes[key];
+  if (volume.Volume.CastingTriangles == 0)
   {
     return 0;
   }
+  const bool zFail =
+    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
+  if (zFail)
+  {
+    volume.EnsureCaps(*caster.Mesh);
+  }
+  const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
+                    lightCap = volume.CapCount();
   const glm::mat4 objectToClip(worldToClip * caster.ObjectToWorld);
   const glm::vec4 lightObject(volume.Light);
   program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
@@ -732,8 +849,6 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   volume.Indices->Bind();
 
   vtkIdType drawn = 0;
-  const bool zFail =
-    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
   if (!zFail)
   {
     // z-pass: count volume faces in front of the visible surface; caps are not needed.

@@ -70,6 +70,41 @@ public:
   vtkBooleanMacro(ShadowsEnabled, bool);
   ///@}
 
+  /// How shadows are computed for each shadowing light.
+  enum Method
+  {
+    /// The cheapest method that is right for the light: hard volumes for a light of radius 0,
+    /// averaged hard shadows (LightSamples) for an area light.
+    METHOD_AUTOMATIC = 0,
+    /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
+    METHOD_HARD_VOLUMES = 1,
+    /// Heckbert and Herf: the average of LightSamples hard shadows from points spread evenly
+    /// over the light (a disk facing the casters, or a cone of directions). Converges to the
+    /// true soft shadow as LightSamples grows, at one volume pass per sample.
+    METHOD_AVERAGED_HARD_SHADOWS = 2
+  };
+
+  ///@{
+  /**
+   * The method (default METHOD_AUTOMATIC).
+   */
+  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_AVERAGED_HARD_SHADOWS);
+  vtkGetMacro(Method, int);
+  void SetMethodToAutomatic() { this->SetMethod(METHOD_AUTOMATIC); }
+  void SetMethodToHardVolumes() { this->SetMethod(METHOD_HARD_VOLUMES); }
+  void SetMethodToAveragedHardShadows() { this->SetMethod(METHOD_AVERAGED_HARD_SHADOWS); }
+  const char* GetMethodAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS (and METHOD_AUTOMATIC on area
+   * lights), default 16.
+   */
+  vtkSetClampMacro(LightSamples, int, 1, 4096);
+  vtkGetMacro(LightSamples, int);
+  ///@}
+
   ///@{
   /**
    * Light size, stored in the light's vtkInformation: radius in world units for positional
@@ -135,6 +170,8 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   bool ShadowsEnabled = true;
+  int Method = METHOD_AUTOMATIC;
+  int LightSamples = 16;
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
   int NumberOfZFailVolumes = 0;

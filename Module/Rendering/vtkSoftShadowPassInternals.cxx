@@ -112,9 +112,20 @@ bool VolumeCache::Update(const MeshCache& mesh, const glm::dvec4& lightObject, b
   this->Light = lightObject;
   this->Mirrored = mirrored;
   this->MeshGeneration = mesh.Generation;
-  this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored);
+  this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false);
+  this->HasCaps = false;
   this->Uploaded = false;
   return true;
+}
+
+void VolumeCache::EnsureCaps(const MeshCache& mesh)
+{
+  if (!this->HasCaps)
+  {
+    this->Volume = ShadowVolume::Build(mesh.Topology, this->Light, this->Mirrored, true);
+    this->HasCaps = true;
+    this->Uploaded = false;
+  }
 }
 
 void VolumeCache::Upload()

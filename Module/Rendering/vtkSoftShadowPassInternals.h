@@ -61,12 +61,16 @@ struct VolumeCache
   bool Mirrored = false;
   std::size_t MeshGeneration = ~std::size_t(0);
   ShadowVolume Volume;
+  bool HasCaps = false;
   vtkNew<vtkOpenGLBufferObject> Indices;
   bool Uploaded = false;
   bool Used = false;
 
-  /// Rebuilds when the light (object space) or the mesh changed. Returns true when it did.
+  /// Rebuilds the silhouette when the light (object space) or the mesh changed. Returns true
+  /// when it did. Caps are left out until a z-fail draw asks for them.
   bool Update(const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored);
+  /// Adds the light and dark caps (z-fail needs them), once per silhouette update.
+  void EnsureCaps(const MeshCache& mesh);
   void Upload();
   std::size_t SideCount() const { return this->Volume.Sides.size(); }
   std::size_t CapCount() const { return this->Volume.LightCap.size(); }
@@ -80,7 +84,8 @@ struct CasterCache
   MeshCache* Mesh = nullptr;
   glm::dmat4 ObjectToWorld{ 1.0 }; ///< actor matrix with the mesh origin folded in
   glm::dvec3 WorldMin{ 0.0 }, WorldMax{ 0.0 };
-  std::map<vtkLight*, VolumeCache> Volumes;
+  /// Per light and light sample (one sample for hard shadows).
+  std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   bool Used = false;
 };
 

@@ -14,6 +14,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -172,9 +173,25 @@ bool SegmentHitsSphere(
   return glm::dot(closest - centre, closest - centre) < radius * radius;
 }
 
+/// One X connection for every window of the test (see penumbraTestHarness.h for why).
+vtkSmartPointer<vtkRenderWindow> NewRenderWindow()
+{
+  static vtkSmartPointer<vtkRenderWindow> anchor;
+  if (!anchor)
+  {
+    anchor = vtkSmartPointer<vtkRenderWindow>::New();
+    anchor->SetOffScreenRendering(1);
+    anchor->SetSize(1, 1);
+    anchor->Render();
+  }
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetDisplayId(anchor->GetGenericDisplayId());
+  return window;
+}
+
 struct Scene
 {
-  vtkNew<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkSphereSource> SphereSource;
   vtkNew<vtkPlaneSource> PlaneSource;

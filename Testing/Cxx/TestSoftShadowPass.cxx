@@ -36,7 +36,7 @@ namespace
 
 struct Scene
 {
-  vtkNew<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkSoftShadowPass> Pass;
   vtkNew<vtkLight> Light;
@@ -216,6 +216,63 @@ void TestLightInsideClosedCaster()
   CheckAgainstTruth("light inside a closed caster", c, 0.9);
 }
 
+/// Mean absolute visibility error against the truth over pixels in shadow or penumbra.
+double SoftError(Scene& scene, vtkImageData* truth, vtkImageData* depth)
+{
+  scene.Window->Render();
+  auto ours = vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  auto expected = vtkFloatArray::SafeDownCast(truth->GetPointData()->GetScalars());
+  auto z = vtkFloatArray::SafeDownCast(depth->GetPointData()->GetScalars());
+  double sum = 0;
+  int count = 0;
+  for (vtkIdType i = 0; i < ours->GetNumberOfValues(); ++i)
+  {
+    const float t = expected->GetValue(i), v = ours->GetValue(i);
+    if (z->GetValue(i) < 1.0f && (t < 0.999f || v < 0.999f))
+    {
+      sum += std::abs(t - v);
+      ++count;
+    }
+  }
+  return count ? sum / count : 1.0;
+}
+
+void TestAveragedHardShadows()
+{
+  // Heckbert-Herf averaging converges to the ray-traced soft shadow of a spherical light.
+  Scene scene;
+  scene.Window->SetMultiSamples(0);
+  scene.Ground();
+  scene.Sphere(-0.8, 0.9, 0, 0.7);
+  scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  scene.Light->SetPosition(-2, 5, 2);
+  vtkSoftShadowPass::SetLightRadius(scene.Light, 0.5);
+  scene.Window->Render();
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(scene.Renderer);
+  truth->SetSamplesPerLight(256);
+  truth->Update();
+  scene.Pass->SetMethodToAveragedHardShadows();
+  double errors[3];
+  const int samples[3] = { 4, 16, 64 };
+  for (int i = 0; i < 3; ++i)
+  {
+    scene.Pass->SetLightSamples(samples[i]);
+    errors[i] = SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
+    std::printf("     averaged %d samples: MAE %.4f\n", samples[i], errors[i]);
+  }
+  Check(errors[1] < errors[0] && errors[2] < errors[1], "averaged error shrinks with samples");
+  Check(errors[2] < 0.012, "averaged 64 samples within 0.012 MAE of the truth");
+  scene.Pass->SetMethodToHardVolumes();
+  const double hard = SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
+  std::printf("     hard volumes on the same light: MAE %.4f\n", hard);
+  Check(hard > 2 * errors[1], "hard shadows ignore the radius (larger error)");
+  scene.Pass->SetMethodToAutomatic();
+  Check(std::abs(SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage()) - errors[2]) < 1e-6,
+    "automatic averages an area light (64 samples)");
+}
+
 void TestCachingAndHeadlights()
 {
   Scene scene;
@@ -322,8 +379,7 @@ void TestCompositing()
 void TestViewportsLightsAndResize()
 {
   // Two renderers side by side in a non-square window, one with two coloured lights.
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
+  vtkSmartPointer<vtkRenderWindow> window = NewRenderWindow();
   window->SetSize(320, 120);
   std::vector<vtkSmartPointer<vtkObject>> keep;
   vtkSmartPointer<vtkRenderer> renderers[2];
@@ -469,6 +525,7 @@ int main()
   TestVisibleCastersOnZFail();
   TestAwkwardMeshes();
   TestLightInsideClosedCaster();
+  TestAveragedHardShadows();
   TestCachingAndHeadlights();
   TestCompositing();
   TestViewportsLightsAndResize();

@@ -125,8 +125,7 @@ int main(int argc, char* argv[])
     return 2;
   }
   const std::string scene = argv[1];
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
+  vtkSmartPointer<vtkRenderWindow> window = penumbra_test::NewRenderWindow();
   window->SetSize(400, 300);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.15, 0.17, 0.25);
