@@ -1,0 +1,223 @@
+#include "penumbraWedge.h"
+
+#include <cmath>
+
+namespace penumbra
+{
+namespace
+{
+
+constexpr double Pi = 3.14159265358979323846;
+
+/// Two unit vectors with e1 x e2 = axis.
+void PlaneBasis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
+{
+  const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  e1 = glm::normalize(glm::cross(helper, axis));
+  e2 = glm::cross(axis, e1);
+}
+
+/// Signed area of (triangle(origin, A, B) inside the disk) minus the disk sector between OA and
+/// OB: only the part of segment AB inside the disk contributes, so it vanishes outside it.
+double InsideCorrection(const glm::dvec2& A, const glm::dvec2& B, double R)
+{
+  const glm::dvec2 AB = B - A;
+  const double length = glm::length(AB);
+  if (!(length > 0.0))
+  {
+    return 0.0;
+  }
+  // Chord through the closest point to the centre: stable when an end projects far away.
+  const glm::dvec2 u = AB / length;
+  const double closest = -glm::dot(A, u);
+  const glm::dvec2 nearest = A + closest * u;
+  const double halfChord2 = R * R - glm::dot(nearest, nearest);
+  if (!(halfChord2 > 0.0))
+  {
+    return 0.0;
+  }
+  const double halfChord = std::sqrt(halfChord2);
+  const double s0 = std::max(0.0, closest - halfChord), s1 = std::min(length, closest + halfChord);
+  if (!(s1 > s0))
+  {
+    return 0.0;
+  }
+  const glm::dvec2 P = A + s0 * u, Q = A + s1 * u;
+  const double cross = P.x * Q.y - P.y * Q.x;
+  const double angle = std::atan2(cross, glm::dot(P, Q));
+  return 0.5 * cross - 0.5 * R * R * angle;
+}
+
+/// Inward normal of the side plane at `end` (pointing along `along`): every ray from the light
+/// through the edge stays on its positive side. `away` is the unit direction from the light
+/// through `end`, `s` the sine of the light's angular radius seen from there.
+bool SidePlane(const glm::dvec3& along, const glm::dvec3& away, double s, glm::dvec3& normal)
+{
+  const double du = glm::dot(along, away);
+  const double lambda = -du + s * std::sqrt(std::max(0.0, (1.0 - du * du) / (1.0 - s * s)));
+  const glm::dvec3 m = along + lambda * away;
+  const double length = glm::length(m);
+  if (!(length > 1e-9))
+  {
+    return false;
+  }
+  normal = m / length;
+  return glm::dot(normal, along) >= -1e-12 && glm::dot(normal, away) >= s - 1e-9;
+}
+
+} // namespace
+
+double EdgeOcclusion(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+  const glm::dvec4& light, double radius)
+{
+  glm::dvec3 towards;
+  double distance, diskRadius;
+  if (light.w != 0.0)
+  {
+    towards = glm::dvec3(light) - p;
+    distance = glm::length(towards);
+    if (!(distance > radius * (1.0 + 1e-9)))
+    {
+      return 0.0; // inside the light: nothing between
+    }
+    towards /= distance;
+    diskRadius = distance * radius / std::sqrt(distance * distance - radius * radius);
+  }
+  else
+  {
+    towards = glm::normalize(glm::dvec3(light));
+    distance = 1.0;
+    diskRadius = std::tan(radius);
+  }
+  if (!(diskRadius > 0.0) || !std::isfinite(diskRadius))
+  {
+    return 0.0;
+  }
+  glm::dvec3 e1, e2;
+  PlaneBasis(towards, e1, e2);
+
+  // Keep the part of the edge in front of p (towards the light); the rest cannot occlude.
+  glm::dvec3 from = a - p, to = b - p;
+  double hFrom = glm::dot(from, towards), hTo = glm::dot(to, towards);
+  const double hMin = 1e-9 * distance;
+  if (hFrom < hMin && hTo < hMin)
+  {
+    return 0.0;
+  }
+  if (hFrom < hMin)
+  {
+    from += (to - from) * ((hMin - hFrom) / (hTo - hFrom));
+    hFrom = hMin;
+  }
+  else if (hTo < hMin)
+  {
+    to += (from - to) * ((hMin - hTo) / (hFrom - hTo));
+    hTo = hMin;
+  }
+  // Gnomonic projection from p onto the light's plane, centred on the light.
+  const glm::dvec3 fromPlane = from * (distance / hFrom), toPlane = to * (distance / hTo);
+  const glm::dvec2 A(glm::dot(fromPlane, e1), glm::dot(fromPlane, e2));
+  const glm::dvec2 B(glm::dot(toPlane, e1), glm::dot(toPlane, e2));
+  return InsideCorrection(A, B, diskRadius) / (Pi * diskRadius * diskRadius);
+}
+
+Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+{
+  Wedge wedge;
+  const glm::dvec3 edge = b - a;
+  const double length = glm::length(edge);
+  if (!(length > 0.0) || !(radius > 0.0))
+  {
+    return wedge;
+  }
+  const glm::dvec3 d = edge / length;
+  const bool positional = light.w != 0.0;
+  const glm::dvec3 centre(light);
+
+  // Front and back planes contain the edge and touch the light: a sphere of `radius` around the
+  // centre, or the cone of directions of half-angle `radius` (then "distance" is a sine).
+  glm::dvec3 perpendicular;
+  double reach;
+  if (positional)
+  {
+    perpendicular = (centre - a) - glm::dot(centre - a, d) * d;
+    reach = radius;
+  }
+  else
+  {
+    const glm::dvec3 l = glm::normalize(centre);
+    perpendicular = l - glm::dot(l, d) * d;
+    reach = std::sin(radius);
+  }
+  const double h = glm::length(perpendicular);
+  if (!(h > reach * (1.0 + 1e-9)))
+  {
+    return wedge; // the edge's line touches the light
+  }
+  const glm::dvec3 up = perpendicular / h, side = glm::cross(d, up);
+  const double cosBeta = reach / h, sinBeta = std::sqrt(1.0 - cosBeta * cosBeta);
+  const glm::dvec3 front = cosBeta * up + sinBeta * side, back = cosBeta * up - sinBeta * side;
+
+  // Side planes: every ray from the light through the edge must stay inside.
+  auto away = [&](const glm::dvec3& end) {
+    return positional ? glm::normalize(end - centre) : -glm::normalize(centre);
+  };
+  auto sine = [&](const glm::dvec3& end) {
+    return positional ? radius / glm::length(end - centre) : std::sin(radius);
+  };
+  glm::dvec3 sideA, sideB;
+  if (sine(a) >= 1.0 || sine(b) >= 1.0 || !SidePlane(d, away(a), sine(a), sideA) ||
+    !SidePlane(-d, away(b), sine(b), sideB))
+  {
+    return wedge;
+  }
+
+  wedge.Normals = { front, back, -sideA, -sideB };
+  wedge.Offsets = { glm::dot(front, a), glm::dot(back, a), -glm::dot(sideA, a), -glm::dot(sideB, b) };
+  auto farEdge = [&](const glm::dvec3& plane, const glm::dvec3& sidePlane, const glm::dvec3& end) {
+    glm::dvec3 direction = glm::normalize(glm::cross(plane, sidePlane));
+    return glm::dot(direction, away(end)) < 0.0 ? -direction : direction;
+  };
+  wedge.Vertices = { glm::dvec4(a, 1.0), glm::dvec4(b, 1.0),
+    glm::dvec4(farEdge(front, sideA, a), 0.0), glm::dvec4(farEdge(front, sideB, b), 0.0),
+    glm::dvec4(farEdge(back, sideA, a), 0.0), glm::dvec4(farEdge(back, sideB, b), 0.0) };
+  // The far edges must leave through the far end, not cross another plane (side planes crossing
+  // behind the edge would make the region a different polyhedron).
+  for (int v = 2; v < 6; ++v)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      if (glm::dot(wedge.Normals[k], glm::dvec3(wedge.Vertices[v])) > 1e-9)
+      {
+        return wedge;
+      }
+    }
+  }
+  wedge.Valid = true;
+  return wedge;
+}
+
+bool Wedge::Contains(const glm::dvec3& x, double tolerance) const
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    if (glm::dot(this->Normals[k], x) > this->Offsets[k] + tolerance)
+    {
+      return false;
+    }
+  }
+  return this->Valid;
+}
+
+const std::array<unsigned int, 24>& Wedge::Triangles()
+{
+  // Vertices: 0 a, 1 b, 2 front-a, 3 front-b, 4 back-a, 5 back-b (2..5 at infinity).
+  static const std::array<unsigned int, 24> triangles = { 1, 0, 2, 1, 2, 3, // front
+    0, 1, 5, 0, 5, 4,                                                     // back
+    0, 4, 2,                                                              // side at a
+    1, 3, 5,                                                              // side at b
+    2, 4, 5, 2, 5, 3 };                                                   // far end
+  return triangles;
+}
+
+} // namespace penumbra
