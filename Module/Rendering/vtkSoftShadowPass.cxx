@@ -36,15 +36,19 @@
 #include "vtkPointData.h"
 #include "vtk_glew.h"
 
+#include "penumbraHorizonFS.h"
 #include "penumbraReceiverDec.h"
 #include "penumbraResolveFS.h"
 #include "penumbraResolveVS.h"
 #include "penumbraShadowVolumeFS.h"
 #include "penumbraShadowVolumeVS.h"
+#include "penumbraWedgeFS.h"
+#include "penumbraWedgeVS.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -223,6 +227,10 @@ public:
     float Attenuation;
     /// Points (or directions) on the light whose hard shadows are averaged; one for hard shadows.
     std::vector<glm::dvec4> Samples;
+    /// Penumbra wedges around the centre's hard shadow, with the light's radius (world units,
+    /// or radians for a directional light).
+    bool Wedges;
+    double WedgeRadius;
   };
 
   penumbra::ShadowCaches Caches;
@@ -242,9 +250,16 @@ public:
   int Origin[2] = { 0, 0 };
   int Layers = 0;
 
-  vtkNew<vtkOpenGLBufferObject> ResolveTriangle;
-  vtkNew<vtkOpenGLVertexArrayObject> ResolveVAO;
-  vtkShaderProgram* ResolveVAOProgram = nullptr;
+  /// A full-screen triangle at the far plane, drawn by the resolve and horizon passes.
+  struct FullScreenVAO
+  {
+    vtkNew<vtkOpenGLVertexArrayObject> VAO;
+    vtkShaderProgram* Program = nullptr;
+  };
+  vtkNew<vtkOpenGLBufferObject> FullScreenTriangle;
+  FullScreenVAO ResolveVAO;
+  FullScreenVAO HorizonVAO;
+  void DrawFullScreen(vtkShaderProgram* program, FullScreenVAO& vao);
 
   vtkNew<vtkOpaquePass> DepthPass;
   vtkNew<vtkLightsPass> LightsPass;
@@ -254,9 +269,13 @@ public:
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
 
-  /// The light itself, or LightSamples points on it when it has a radius and the method averages.
-  std::vector<glm::dvec4> SampleLight(
-    vtkSoftShadowPass* self, vtkLight* light, const glm::dvec4& world, vtkRenderer* renderer);
+  /// Fills the light's samples (the light itself, or LightSamples points on it when the method
+  /// averages) and its wedge settings, from the pass's method and the light's radius.
+  void ChooseMethod(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
+  /// Adds every caster's penumbra wedges for `light` into its LI layer; returns the count of
+  /// wedges and of full-viewport ones.
+  void DrawWedges(vtkOpenGLRenderWindow* window, const ShadowLight& light, vtkIdType& wedges,
+    vtkIdType& fullViewport);
 
   const ShadowLight* FindLight(int collectionIndex) const
   {
@@ -304,6 +323,8 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
      << "\n";
   os << indent << "NumberOfZFailVolumes: " << this->NumberOfZFailVolumes << "\n";
+  os << indent << "NumberOfPenumbraWedges: " << this->NumberOfPenumbraWedges << "\n";
+  os << indent << "NumberOfFullViewportWedges: " << this->NumberOfFullViewportWedges << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
 }
 
@@ -315,6 +336,8 @@ const char* vtkSoftShadowPass::GetMethodAsString()
       return "HardVolumes";
     case METHOD_AVERAGED_HARD_SHADOWS:
       return "AveragedHardShadows";
+    case METHOD_PENUMBRA_WEDGES:
+      return "PenumbraWedges";
     default:
       return "Automatic";
   }
@@ -408,6 +431,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfShadowingLights = 0;
   this->NumberOfShadowVolumeTriangles = 0;
   this->NumberOfZFailVolumes = 0;
+  this->NumberOfPenumbraWedges = 0;
+  this->NumberOfFullViewportWedges = 0;
 
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
@@ -509,20 +534,26 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
       }
       continue;
     }
-    internals.Lights.push_back({ light, collectionIndex, index,
+    vtkInternals::ShadowLight shadowLight{ light, collectionIndex, index,
       static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()),
-      internals.SampleLight(this, light, world, renderer) });
+      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0 };
+    internals.ChooseMethod(this, renderer, shadowLight);
+    internals.Lights.push_back(shadowLight);
   }
 }
 
-std::vector<glm::dvec4> vtkSoftShadowPass::vtkInternals::SampleLight(vtkSoftShadowPass* self,
-  vtkLight* light, const glm::dvec4& world, vtkRenderer* renderer)
+void vtkSoftShadowPass::vtkInternals::ChooseMethod(
+  vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& shadowLight)
 {
+  vtkLight* light = shadowLight.Light;
+  const glm::dvec4& world = shadowLight.World;
   double radius = GetLightRadius(light);
+  shadowLight.Samples = { world };
+  shadowLight.Wedges = false;
+  shadowLight.WedgeRadius = 0.0;
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
   {
-    return { world };
+    return;
   }
   if (world.w == 0.0 && radius >= 90.0)
   {
@@ -533,13 +564,19 @@ std::vector<glm::dvec4> vtkSoftShadowPass::vtkInternals::SampleLight(vtkSoftShad
     }
     radius = 89.0;
   }
+  if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
+  {
+    shadowLight.Wedges = true;
+    shadowLight.WedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
+    return;
+  }
   double bounds[6];
   renderer->ComputeVisiblePropBounds(bounds);
   const glm::dvec3 target = vtkMath::AreBoundsInitialized(bounds)
     ? glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5
     : glm::dvec3(light->GetTransformedFocalPoint()[0], light->GetTransformedFocalPoint()[1],
         light->GetTransformedFocalPoint()[2]);
-  return SpreadLightSamples(world, radius, self->LightSamples, target);
+  shadowLight.Samples = SpreadLightSamples(world, radius, self->LightSamples, target);
 }
 
 void vtkSoftShadowPass::UpdateShaderConfiguration()
@@ -713,6 +750,11 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
           ++this->NumberOfSilhouetteUpdates;
         }
       }
+      if (light.Wedges)
+      {
+        caster->Wedges[light.Light].Update(*mesh, caster->Volumes[{ light.Light, 0 }],
+          caster->ObjectToWorld, light.World, light.WedgeRadius);
+      }
     }
     internals.Casters.push_back(caster);
   }
@@ -759,6 +801,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   vtkOpenGLState::ScopedglEnableDisable stencilTest(ostate, GL_STENCIL_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
   vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
   vtkOpenGLState::ScopedglColorMask colorMask(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
@@ -809,6 +852,11 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the triangle lies on the far plane
       this->DrawResolve(window, -sampleWeight);
       ostate->vtkglDisable(GL_DEPTH_CLAMP);
+    }
+    if (light.Wedges)
+    {
+      internals.DrawWedges(
+        window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
     }
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
@@ -883,9 +931,81 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 }
 } // namespace
 
+void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
+  const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport)
+{
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraWedgeVS, penumbraWedgeFS, "");
+  if (!program)
+  {
+    vtkGenericWarningMacro("Could not compile the penumbra wedge shader.");
+    return;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  // The wedge shader reads the scene's depth: take the texture off the framebuffer meanwhile.
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+  this->DepthStencil->Activate();
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // Back faces only: whether the eye is inside a convex wedge or not, every pixel whose ray
+  // meets the wedge is shaded exactly once; depth clamping keeps the far end at infinity.
+  ostate->vtkglEnable(GL_CULL_FACE);
+  ostate->vtkglCullFace(GL_FRONT);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
+
+  program->SetUniformi("depthTexture", this->DepthStencil->GetTextureUnit());
+  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  program->SetUniform2f("viewportSize", viewport);
+  program->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
+  const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    penumbra::WedgeCache& cache = caster->Wedges[light.Light];
+    if (cache.VertexCount() == 0)
+    {
+      continue;
+    }
+    const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), cache.Origin));
+    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -cache.Origin) * clipToWorld);
+    const glm::vec4 lightWedge(cache.LightInWedgeSpace());
+    program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
+    program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+    program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    cache.Bind(program);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
+    cache.VAO->Release();
+    wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
+    fullViewport += static_cast<vtkIdType>(cache.Fallbacks);
+  }
+  ostate->vtkglCullFace(GL_BACK);
+  ostate->vtkglDisable(GL_CULL_FACE);
+
+  // Cap by the part of the light above each visible point's own plane (GL_MIN).
+  vtkShaderProgram* horizon =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraHorizonFS, "");
+  if (horizon)
+  {
+    const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
+    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -origin) * clipToWorld);
+    const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
+    horizon->SetUniformi("depthTexture", this->DepthStencil->GetTextureUnit());
+    horizon->SetUniform2f("viewportSize", viewport);
+    horizon->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
+    horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+    horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    ostate->vtkglBlendEquation(GL_MIN);
+    this->DrawFullScreen(horizon, this->HorizonVAO);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  }
+  ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  this->DepthStencil->Deactivate();
+}
+
 void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity)
 {
-  vtkInternals& internals = *this->Internals;
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraResolveFS, "");
   if (!program)
@@ -893,25 +1013,31 @@ void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIn
     vtkErrorMacro("Could not compile the LI resolve shader.");
     return;
   }
-  if (internals.ResolveTriangle->GetHandle() == 0)
+  program->SetUniformf("lightIntensity", lightIntensity);
+  this->Internals->DrawFullScreen(program, this->Internals->ResolveVAO);
+}
+
+void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
+  vtkShaderProgram* program, FullScreenVAO& vao)
+{
+  if (this->FullScreenTriangle->GetHandle() == 0)
   {
     const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
-    internals.ResolveTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
-    internals.ResolveVAOProgram = nullptr;
+    this->FullScreenTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
+    this->ResolveVAO.Program = this->HorizonVAO.Program = nullptr;
   }
-  if (internals.ResolveVAOProgram != program)
+  if (vao.Program != program)
   {
     // Releases the old VAO: must come before Bind.
-    internals.ResolveVAO->ShaderProgramChanged();
-    internals.ResolveVAO->Bind();
-    internals.ResolveVAO->AddAttributeArray(
-      program, internals.ResolveTriangle, "ndCoordIn", 0, 2 * sizeof(float), VTK_FLOAT, 2, false);
-    internals.ResolveVAOProgram = program;
+    vao.VAO->ShaderProgramChanged();
+    vao.VAO->Bind();
+    vao.VAO->AddAttributeArray(
+      program, this->FullScreenTriangle, "ndCoordIn", 0, 2 * sizeof(float), VTK_FLOAT, 2, false);
+    vao.Program = program;
   }
-  internals.ResolveVAO->Bind();
-  program->SetUniformf("lightIntensity", lightIntensity);
+  vao.VAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  internals.ResolveVAO->Release();
+  vao.VAO->Release();
 }
 
 //------------------------------------------------------------------------------
@@ -946,8 +1072,9 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
   vtkNew<vtkFloatArray> values;
   values->SetName("Visibility");
   values->SetNumberOfValues(pixels);
-  std::copy(data + light->Layer * pixels, data + (light->Layer + 1) * pixels,
-    values->GetPointer(0));
+  // Overlapping penumbrae add up: the buffer is clamped where it is used, and here.
+  std::transform(data + light->Layer * pixels, data + (light->Layer + 1) * pixels,
+    values->GetPointer(0), [](float v) { return std::min(1.0f, std::max(0.0f, v)); });
   download->UnmapPackedBuffer();
   download->Delete();
 
@@ -1039,9 +1166,12 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Framebuffer->ReleaseGraphicsResources(w);
   internals.DepthStencil->ReleaseGraphicsResources(w);
   internals.LightIntensity->ReleaseGraphicsResources(w);
-  internals.ResolveTriangle->ReleaseGraphicsResources();
-  internals.ResolveVAO->ReleaseGraphicsResources();
-  internals.ResolveVAOProgram = nullptr;
+  internals.FullScreenTriangle->ReleaseGraphicsResources();
+  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO })
+  {
+    vao->VAO->ReleaseGraphicsResources();
+    vao->Program = nullptr;
+  }
   internals.DepthPass->ReleaseGraphicsResources(w);
   internals.Layers = 0;
   internals.VisibilityImages.clear();

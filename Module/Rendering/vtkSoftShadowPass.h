@@ -74,32 +74,36 @@ public:
   enum Method
   {
     /// The cheapest method that is right for the light: hard volumes for a light of radius 0,
-    /// averaged hard shadows (LightSamples) for an area light.
+    /// penumbra wedges for an area light.
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
     /// Heckbert and Herf: the average of LightSamples hard shadows from points spread evenly
     /// over the light (a disk facing the casters, or a cone of directions). Converges to the
     /// true soft shadow as LightSamples grows, at one volume pass per sample.
-    METHOD_AVERAGED_HARD_SHADOWS = 2
+    METHOD_AVERAGED_HARD_SHADOWS = 2,
+    /// Akenine-Moller and Assarsson: the hard shadow of the light's centre plus one penumbra
+    /// wedge per silhouette edge, each adding that edge's exact share of the light seen from
+    /// the pixel. One volume pass and one wedge pass per light.
+    METHOD_PENUMBRA_WEDGES = 3
   };
 
   ///@{
   /**
    * The method (default METHOD_AUTOMATIC).
    */
-  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_AVERAGED_HARD_SHADOWS);
+  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_PENUMBRA_WEDGES);
   vtkGetMacro(Method, int);
   void SetMethodToAutomatic() { this->SetMethod(METHOD_AUTOMATIC); }
   void SetMethodToHardVolumes() { this->SetMethod(METHOD_HARD_VOLUMES); }
   void SetMethodToAveragedHardShadows() { this->SetMethod(METHOD_AVERAGED_HARD_SHADOWS); }
+  void SetMethodToPenumbraWedges() { this->SetMethod(METHOD_PENUMBRA_WEDGES); }
   const char* GetMethodAsString();
   ///@}
 
   ///@{
   /**
-   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS (and METHOD_AUTOMATIC on area
-   * lights), default 16.
+   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS, default 16.
    */
   vtkSetClampMacro(LightSamples, int, 1, 4096);
   vtkGetMacro(LightSamples, int);
@@ -145,6 +149,10 @@ public:
    */
   vtkGetMacro(NumberOfShadowingLights, int);
   vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
+  /// Penumbra wedges drawn in the last frame, and those drawn over the whole viewport because
+  /// their edge nearly points at the light (no wedge planes exist).
+  vtkGetMacro(NumberOfPenumbraWedges, vtkIdType);
+  vtkGetMacro(NumberOfFullViewportWedges, vtkIdType);
   /// Shadow volumes drawn with z-fail (caps) in the last frame; the rest used z-pass.
   vtkGetMacro(NumberOfZFailVolumes, int);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
@@ -175,6 +183,8 @@ protected:
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
   int NumberOfZFailVolumes = 0;
+  vtkIdType NumberOfPenumbraWedges = 0;
+  vtkIdType NumberOfFullViewportWedges = 0;
   vtkIdType NumberOfSilhouetteUpdates = 0;
 
 private:

@@ -6,6 +6,8 @@
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
+#include "penumbraWedge.h"
+
 #include <vector>
 
 namespace penumbra
@@ -113,6 +115,7 @@ bool VolumeCache::Update(const MeshCache& mesh, const glm::dvec4& lightObject, b
   this->Mirrored = mirrored;
   this->MeshGeneration = mesh.Generation;
   this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false);
+  ++this->Generation;
   this->HasCaps = false;
   this->Uploaded = false;
   return true;
@@ -146,6 +149,91 @@ void VolumeCache::Upload()
     this->Indices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
   }
   this->Uploaded = true;
+}
+
+bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
+  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+{
+  this->Used = true;
+  if (this->VolumeGeneration == centre.Generation && this->ObjectToWorld == objectToWorld &&
+    this->LightWorld == lightWorld && this->Radius == radius)
+  {
+    return false;
+  }
+  this->VolumeGeneration = centre.Generation;
+  this->ObjectToWorld = objectToWorld;
+  this->LightWorld = lightWorld;
+  this->Radius = radius;
+  this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
+                                     : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  const glm::dvec4 light = this->LightInWedgeSpace();
+  this->Vertices.clear();
+  this->Wedges = this->Fallbacks = 0;
+  auto emit = [this](const glm::dvec4& position, const glm::dvec3& from, const glm::dvec3& to,
+                double weight) {
+    const double values[11] = { position.x, position.y, position.z, position.w, from.x, from.y,
+      from.z, to.x, to.y, to.z, weight };
+    this->Vertices.insert(this->Vertices.end(), values, values + 11);
+  };
+  for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
+  {
+    const glm::dvec3 from =
+      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
+    const glm::dvec3 to =
+      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
+    const Wedge wedge = Wedge::Build(from, to, light, radius);
+    if (wedge.Valid)
+    {
+      ++this->Wedges;
+      for (unsigned int index : Wedge::Triangles())
+      {
+        emit(wedge.Vertices[index], from, to, edge.Multiplicity);
+      }
+    }
+    else
+    {
+      // No planes bound this edge's support (it nearly points at the light): evaluate it over
+      // the whole viewport, exact but costly; clockwise, so back-face culling keeps it.
+      ++this->Fallbacks;
+      for (const glm::dvec2 corner : { glm::dvec2(-1, -1), glm::dvec2(-1, 3), glm::dvec2(3, -1) })
+      {
+        emit(glm::dvec4(corner, 0.0, 2.0), from, to, edge.Multiplicity);
+      }
+    }
+  }
+  this->Uploaded = false;
+  return true;
+}
+
+glm::dvec4 WedgeCache::LightInWedgeSpace() const
+{
+  return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
+}
+
+void WedgeCache::Bind(vtkShaderProgram* program)
+{
+  if (!this->Uploaded)
+  {
+    this->Buffer->Upload(this->Vertices, vtkOpenGLBufferObject::ArrayBuffer);
+    this->Uploaded = true;
+    this->VAOProgram = nullptr;
+  }
+  if (this->VAOProgram != program)
+  {
+    // Releases the old VAO: must come before Bind.
+    this->VAO->ShaderProgramChanged();
+    this->VAO->Bind();
+    const size_t stride = 11 * sizeof(float);
+    this->VAO->AddAttributeArray(program, this->Buffer, "vertexMC", 0, stride, VTK_FLOAT, 4, false);
+    this->VAO->AddAttributeArray(
+      program, this->Buffer, "edgeFrom", 4 * sizeof(float), stride, VTK_FLOAT, 3, false);
+    this->VAO->AddAttributeArray(
+      program, this->Buffer, "edgeTo", 7 * sizeof(float), stride, VTK_FLOAT, 3, false);
+    this->VAO->AddAttributeArray(
+      program, this->Buffer, "edgeWeight", 10 * sizeof(float), stride, VTK_FLOAT, 1, false);
+    this->VAOProgram = program;
+  }
+  this->VAO->Bind();
 }
 
 MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner, bool& rebuilt)
@@ -184,6 +272,10 @@ void ShadowCaches::BeginFrame()
     {
       volume.second.Used = false;
     }
+    for (auto& wedges : caster.second->Wedges)
+    {
+      wedges.second.Used = false;
+    }
   }
 }
 
@@ -200,6 +292,11 @@ void ShadowCaches::PurgeUnused()
     for (auto v = volumes.begin(); v != volumes.end();)
     {
       v = v->second.Used ? std::next(v) : volumes.erase(v);
+    }
+    auto& wedges = it->second->Wedges;
+    for (auto w = wedges.begin(); w != wedges.end();)
+    {
+      w = w->second.Used ? std::next(w) : wedges.erase(w);
     }
     ++it;
   }
@@ -221,6 +318,13 @@ void ShadowCaches::ReleaseGraphicsResources()
     {
       volume.second.Indices->ReleaseGraphicsResources();
       volume.second.Uploaded = false;
+    }
+    for (auto& wedges : caster.second->Wedges)
+    {
+      wedges.second.Buffer->ReleaseGraphicsResources();
+      wedges.second.VAO->ReleaseGraphicsResources();
+      wedges.second.VAOProgram = nullptr;
+      wedges.second.Uploaded = false;
     }
   }
 }

@@ -60,6 +60,7 @@ struct VolumeCache
   glm::dvec4 Light{ 0.0 };
   bool Mirrored = false;
   std::size_t MeshGeneration = ~std::size_t(0);
+  std::size_t Generation = 0; ///< bumped on every silhouette rebuild
   ShadowVolume Volume;
   bool HasCaps = false;
   vtkNew<vtkOpenGLBufferObject> Indices;
@@ -77,6 +78,34 @@ struct VolumeCache
   std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }
 };
 
+/// Penumbra wedges of one caster's centre silhouette for one light. Vertices are in wedge
+/// coordinates: world space relative to Origin (the light's centre, or the caster's for a
+/// directional light), so float precision follows the light, not the world origin.
+struct WedgeCache
+{
+  glm::dvec3 Origin{ 0.0 };
+  glm::dmat4 ObjectToWorld{ 0.0 };
+  glm::dvec4 LightWorld{ 0.0 };
+  double Radius = -1.0;
+  std::size_t VolumeGeneration = ~std::size_t(0);
+  std::size_t Wedges = 0;    ///< silhouette edges with a proper wedge
+  std::size_t Fallbacks = 0; ///< edges drawn over the whole viewport (no wedge planes)
+  std::vector<float> Vertices; ///< position (4), edge from (3), edge to (3), weight (1)
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* VAOProgram = nullptr;
+  bool Uploaded = false;
+  bool Used = false;
+
+  /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
+  bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
+    const glm::dvec4& lightWorld, double radius);
+  /// The light in wedge coordinates, as the wedge shader wants it.
+  glm::dvec4 LightInWedgeSpace() const;
+  void Bind(vtkShaderProgram* program);
+  std::size_t VertexCount() const { return this->Vertices.size() / 11; }
+};
+
 /// An actor that casts shadows this frame.
 struct CasterCache
 {
@@ -86,6 +115,7 @@ struct CasterCache
   glm::dvec3 WorldMin{ 0.0 }, WorldMax{ 0.0 };
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
+  std::map<vtkLight*, WedgeCache> Wedges;
   bool Used = false;
 };
 

@@ -1,0 +1,79 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// No surface sees more of an area light than the part above its own tangent plane. Near a
+// caster's terminator the silhouette seen from the light's centre misses that self-occlusion,
+// so this pass caps the LI buffer (GL_MIN blending) with the fraction of the light's disk above
+// the visible point's geometric plane, its normal taken from the depth buffer.
+uniform sampler2D depthTexture;
+uniform mat4 clipToWedge;     // NDC of this viewport to coordinates centred on the light
+uniform vec2 viewportSize;
+uniform vec4 lightWedge;      // (centre, 1) or (direction towards the light, 0)
+uniform float lightRadius;    // world units, or radians for a directional light
+
+const float pi = 3.14159265358979;
+
+vec3 pointAt(ivec2 pixel, float depth)
+{
+  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+  vec4 point = clipToWedge * ndc;
+  return point.xyz / point.w;
+}
+
+/// Step to the neighbour on the same surface: the one closer in depth.
+vec3 tangent(ivec2 pixel, float depth, ivec2 step, vec3 p)
+{
+  ivec2 size = ivec2(viewportSize);
+  ivec2 forward = clamp(pixel + step, ivec2(0), size - 1);
+  ivec2 backward = clamp(pixel - step, ivec2(0), size - 1);
+  float dForward = texelFetch(depthTexture, forward, 0).r;
+  float dBackward = texelFetch(depthTexture, backward, 0).r;
+  return abs(dForward - depth) < abs(depth - dBackward) ? pointAt(forward, dForward) - p
+                                                          : p - pointAt(backward, dBackward);
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(depthTexture, pixel, 0).r;
+  if (depth >= 1.0)
+  {
+    discard;
+  }
+  vec3 p = pointAt(pixel, depth);
+  // Screen x and y steps: their cross product faces the eye, the side that is seen.
+  vec3 n = cross(tangent(pixel, depth, ivec2(1, 0), p), tangent(pixel, depth, ivec2(0, 1), p));
+  if (dot(n, n) <= 0.0)
+  {
+    discard;
+  }
+  n = normalize(n);
+  // Angle between the plane and the direction to the light's centre, against its angular radius.
+  vec3 towards;
+  float sinRadius;
+  if (lightWedge.w != 0.0)
+  {
+    towards = lightWedge.xyz - p;
+    float distance = length(towards);
+    if (distance <= lightRadius)
+    {
+      discard;
+    }
+    towards /= distance;
+    sinRadius = lightRadius / distance;
+  }
+  else
+  {
+    towards = normalize(lightWedge.xyz);
+    sinRadius = sin(lightRadius);
+  }
+  // In the disk's (gnomonic) plane, the horizon is a line at signed distance t (in disk radii)
+  // from the centre: t = cot(radius) * sin(elevation) / cos(elevation).
+  float sinElevation = dot(n, towards);
+  float cosElevation = sqrt(max(0.0, 1.0 - sinElevation * sinElevation));
+  float cosRadius = sqrt(max(0.0, 1.0 - sinRadius * sinRadius));
+  float t = (sinElevation * cosRadius) / max(cosElevation * sinRadius, 1e-12);
+  float above = t >= 1.0 ? 1.0
+    : t <= -1.0 ? 0.0
+    : 1.0 - (acos(t) - t * sqrt(1.0 - t * t)) / pi;
+  gl_FragData[0] = vec4(above);
+}
