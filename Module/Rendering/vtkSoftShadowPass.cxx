@@ -209,7 +209,8 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount);
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
+  int& zFailCount);
 
 } // namespace
 
@@ -818,8 +819,9 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
   for (const auto& light : internals.Lights)
   {
-    // The layer starts fully lit; each light sample whose volume covers a pixel takes 1/N away
-    // (float target, additive blending, no clamping).
+    // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
+    // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
+    // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
     this->BindFramebuffer(light.Layer);
     internals.Framebuffer->ActivateDrawBuffer(0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -829,28 +831,45 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     {
       ostate->vtkglStencilMask(0xFF);
       ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
-      ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      ostate->vtkglDisable(GL_BLEND);
-      ostate->vtkglEnable(GL_STENCIL_TEST);
-      ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
-      ostate->vtkglDepthFunc(GL_LESS);
+      if (light.Wedges)
+      {
+        ostate->vtkglEnable(GL_BLEND);
+        ostate->vtkglDisable(GL_STENCIL_TEST);
+      }
+      else
+      {
+        ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        ostate->vtkglDisable(GL_BLEND);
+        ostate->vtkglEnable(GL_STENCIL_TEST);
+        ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+      }
       window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
       for (penumbra::CasterCache* caster : internals.Casters)
       {
         this->NumberOfShadowVolumeTriangles +=
           DrawShadowVolume(ostate, volumeProgram, *caster, { light.Light, static_cast<int>(k) },
-            light.Samples[k], internals.WorldToClip, internals.NearCorners,
+            light.Samples[k], internals.WorldToClip, internals.NearCorners, light.Wedges,
             this->NumberOfZFailVolumes);
       }
 
-      // Resolve: every geometry pixel with a non-zero count is in this sample's shadow.
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      ostate->vtkglEnable(GL_BLEND);
-      ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-      ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      ostate->vtkglDepthFunc(GL_GREATER);
-      ostate->vtkglEnable(GL_DEPTH_CLAMP); // the triangle lies on the far plane
-      this->DrawResolve(window, -sampleWeight);
+      ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
+      if (light.Wedges)
+      {
+        // Volumes also counted over the background: put it back to fully lit.
+        ostate->vtkglDisable(GL_BLEND);
+        ostate->vtkglDepthFunc(GL_LEQUAL);
+        this->DrawResolve(window, 1.0f);
+      }
+      else
+      {
+        // Resolve: every geometry pixel with a non-zero count is in this sample's shadow.
+        ostate->vtkglEnable(GL_BLEND);
+        ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+        ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        ostate->vtkglDepthFunc(GL_GREATER);
+        this->DrawResolve(window, -sampleWeight);
+      }
       ostate->vtkglDisable(GL_DEPTH_CLAMP);
     }
     if (light.Wedges)
@@ -873,7 +892,8 @@ constexpr float CapDepthBias = 5e-5f;
 /// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, int& zFailCount)
+  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
+  int& zFailCount)
 {
   penumbra::VolumeCache& volume = caster.Volumes[key];
   if (volume.Volume.CastingTriangles == 0)
@@ -902,15 +922,19 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     // z-pass: count volume faces in front of the visible surface; caps are not needed.
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    ostate->vtkglDepthFunc(GL_LESS);
+    program->SetUniformf("frontFaceValue", -1.0f); // entering a volume takes the light away
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
     drawn = static_cast<vtkIdType>(sides / 3);
   }
   else
   {
     // z-fail: count faces behind it, caps included; depth clamping keeps the far end at
-    // infinity from being clipped.
+    // infinity from being clipped. Counting in colour, "behind" is a depth test that passes.
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    ostate->vtkglDepthFunc(countInColor ? GL_GEQUAL : GL_LESS);
+    program->SetUniformf("frontFaceValue", 1.0f); // leaving it behind the point does
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
     // The light cap lies on the caster's own surface: pushed away from the eye, a visible point

@@ -5,6 +5,8 @@
 
 #include "vtkCamera.h"
 #include "vtkContourFilter.h"
+#include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkGlyph3D.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -115,13 +117,58 @@ void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>
   camera->SetClippingRange(0.1, 30);
 }
 
+/// Soft shadows from penumbra wedges: a box resting on the ground (the penumbra shrinks to zero
+/// at the contact), overlapping casters and a curved receiver under a large spherical light.
+void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+{
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-4, 0, -4);
+  ground->SetPoint1(4, 0, -4);
+  ground->SetPoint2(-4, 0, 4);
+  renderer->AddActor(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
+  vtkNew<vtkCubeSource> box;
+  box->SetCenter(1.2, 0.5, -0.5);
+  box->SetXLength(0.8);
+  box->SetYLength(1.0);
+  box->SetZLength(0.8);
+  renderer->AddActor(penumbra_test::MakeActor(box, 0.3, 0.5, 0.9));
+  vtkNew<vtkSphereSource> first, second;
+  first->SetCenter(-0.9, 1.1, 0.2);
+  first->SetRadius(0.5);
+  second->SetCenter(-0.4, 1.5, 0.5);
+  second->SetRadius(0.35);
+  for (vtkSphereSource* sphere : { first.GetPointer(), second.GetPointer() })
+  {
+    sphere->SetThetaResolution(48);
+    sphere->SetPhiResolution(24);
+    renderer->AddActor(penumbra_test::MakeActor(sphere, 0.9, 0.3, 0.3));
+  }
+  vtkNew<vtkCylinderSource> hump;
+  hump->SetCenter(0, 0, 0);
+  hump->SetRadius(0.6);
+  hump->SetHeight(3);
+  hump->SetResolution(48);
+  auto curved = penumbra_test::MakeActor(hump, 0.8, 0.8, 0.6);
+  curved->RotateZ(90);
+  curved->SetPosition(0.2, -0.25, 1.6);
+  renderer->AddActor(curved);
+  keep.insert(keep.end(), { ground.GetPointer(), box.GetPointer(), first.GetPointer(),
+                            second.GetPointer(), hump.GetPointer() });
+  auto light = KeyLight(-1.5, 5, 2, true);
+  vtkSoftShadowPass::SetLightRadius(light, 0.7);
+  renderer->AddLight(light);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(3, 4.5, 6.5);
+  camera->SetFocalPoint(0, 0.4, 0.3);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    std::fprintf(stderr, "usage: %s scientific|awkward baseline.png output-dir\n", argv[0]);
+    std::fprintf(stderr, "usage: %s scientific|awkward|soft baseline.png output-dir\n", argv[0]);
     return 2;
   }
   const std::string scene = argv[1];
@@ -136,14 +183,16 @@ int main(int argc, char* argv[])
   if (scene == "scientific")
   {
     ScientificScene(renderer, keep);
+    renderer->ResetCameraClippingRange();
+  }
+  else if (scene == "soft")
+  {
+    SoftScene(renderer, keep);
+    renderer->ResetCameraClippingRange();
   }
   else
   {
     AwkwardScene(renderer, keep);
-  }
-  if (scene == "scientific")
-  {
-    renderer->ResetCameraClippingRange();
   }
   window->Render();
 
