@@ -246,6 +246,11 @@ public:
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> DepthStencil;
+  /// The scene depth again, for the wedge shaders to read while DepthStencil is the attachment
+  /// their depth test uses.
+  vtkNew<vtkTextureObject> DepthCopy;
+  vtkNew<vtkOpenGLFramebufferObject> DepthCopyFramebuffer;
+  void CopyDepth(vtkOpenGLState* ostate);
   vtkNew<vtkTextureObject> LightIntensity;
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
@@ -462,6 +467,11 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.LightIntensity->Activate();
   this->RenderDepth(s);
   internals.LightIntensity->Deactivate();
+  if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
+        [](const vtkInternals::ShadowLight& light) { return light.Wedges; }))
+  {
+    internals.CopyDepth(window->GetState());
+  }
   this->UpdateCasters(s);
   this->RenderLightIntensity(renderer, window);
   internals.LightIntensity->Activate();
@@ -634,11 +644,14 @@ void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
     internals.Framebuffer->SetContext(window);
     internals.DepthStencil->SetContext(window);
     internals.LightIntensity->SetContext(window);
+    internals.DepthCopy->SetContext(window);
+    internals.DepthCopyFramebuffer->SetContext(window);
   }
   if (static_cast<int>(internals.DepthStencil->GetWidth()) != width ||
     static_cast<int>(internals.DepthStencil->GetHeight()) != height)
   {
     internals.DepthStencil->AllocateDepthStencil(width, height);
+    internals.DepthCopy->AllocateDepthStencil(width, height);
   }
   if (static_cast<int>(internals.LightIntensity->GetWidth()) != width ||
     static_cast<int>(internals.LightIntensity->GetHeight()) != height || internals.Layers != layers)
@@ -955,6 +968,18 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 }
 } // namespace
 
+void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
+{
+  ostate->PushFramebufferBindings();
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->DepthCopyFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+    this->DepthCopy->GetHandle(), 0);
+  ostate->vtkglBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0],
+    this->Size[1], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  ostate->PopFramebufferBindings();
+}
+
 void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport)
 {
@@ -966,20 +991,15 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     return;
   }
   vtkOpenGLState* ostate = window->GetState();
-  // The wedge shader reads the scene's depth: take the texture off the framebuffer meanwhile.
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
-  this->DepthStencil->Activate();
-  ostate->vtkglDisable(GL_DEPTH_TEST);
+  this->DepthCopy->Activate();
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // Back faces only: whether the eye is inside a convex wedge or not, every pixel whose ray
-  // meets the wedge is shaded exactly once; depth clamping keeps the far end at infinity.
+  ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglEnable(GL_CULL_FACE);
-  ostate->vtkglCullFace(GL_FRONT);
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
 
-  program->SetUniformi("depthTexture", this->DepthStencil->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
   const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
   program->SetUniform2f("viewportSize", viewport);
   program->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
@@ -991,6 +1011,17 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     {
       continue;
     }
+    // A point inside a wedge lies behind its front faces and in front of its back faces. When
+    // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
+    // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
+    // tested against the scene depth skip every point in front of the wedge. Otherwise back
+    // faces, which every ray meeting the wedge crosses once, skip points behind it.
+    const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
+    const bool frontFaces = light.World.w != 0.0 && cache.Fallbacks == 0 &&
+      !VolumeMayReachNearPlane(
+        caster->WorldMin - grow, caster->WorldMax + grow, light.World, this->NearCorners);
+    ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
+    ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
     const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), cache.Origin));
     const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -cache.Origin) * clipToWorld);
     const glm::vec4 lightWedge(cache.LightInWedgeSpace());
@@ -1014,18 +1045,19 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
     const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -origin) * clipToWorld);
     const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
-    horizon->SetUniformi("depthTexture", this->DepthStencil->GetTextureUnit());
+    horizon->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
     horizon->SetUniform2f("viewportSize", viewport);
     horizon->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
     horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
     horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglBlendEquation(GL_MIN);
     this->DrawFullScreen(horizon, this->HorizonVAO);
     ostate->vtkglBlendEquation(GL_FUNC_ADD);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
   }
   ostate->vtkglDisable(GL_DEPTH_CLAMP);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  this->DepthStencil->Deactivate();
+  this->DepthCopy->Deactivate();
 }
 
 void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity)
@@ -1189,6 +1221,8 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Caches.ReleaseGraphicsResources();
   internals.Framebuffer->ReleaseGraphicsResources(w);
   internals.DepthStencil->ReleaseGraphicsResources(w);
+  internals.DepthCopy->ReleaseGraphicsResources(w);
+  internals.DepthCopyFramebuffer->ReleaseGraphicsResources(w);
   internals.LightIntensity->ReleaseGraphicsResources(w);
   internals.FullScreenTriangle->ReleaseGraphicsResources();
   for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO })
