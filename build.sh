@@ -3,6 +3,8 @@
 #   ./build.sh demo   install what is missing, build, render the example scene to build/demo/
 #   ./build.sh test   install what is missing, build, run the whole test suite (ctest under Xvfb)
 #   ./build.sh build  install what is missing and build only
+#   ./build.sh bench [ARGS]  also matplotlib; build, run the speed-versus-error benchmark into
+#                     build/bench/ (results.csv, speed_vs_error.png); ARGS go to PenumbraBench
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -11,6 +13,8 @@ JOBS=${JOBS:-$(nproc)}
 
 PACKAGES=(build-essential cmake libvtk9-dev python3-vtk9 libglm-dev libembree-dev
           xvfb xauth python3-numpy)
+# Only the benchmark needs these (its plot).
+BENCH_PACKAGES=(python3-matplotlib)
 
 install_missing() {
   local missing=()
@@ -48,6 +52,12 @@ case "$cmd" in
     install_missing; configure_and_build
     cd "$BUILD_DIR"
     with_display ctest --output-on-failure -j "$JOBS" ;;
+  bench)
+    shift
+    PACKAGES+=("${BENCH_PACKAGES[@]}")
+    install_missing; configure_and_build
+    mkdir -p "$BUILD_DIR/bench"
+    with_display "$BUILD_DIR/bin/PenumbraBench" --output "$BUILD_DIR/bench" "$@" ;;
   *)
-    echo "usage: $0 {demo|test|build}" >&2; exit 2 ;;
+    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]}" >&2; exit 2 ;;
 esac
