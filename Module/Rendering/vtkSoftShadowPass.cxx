@@ -195,6 +195,54 @@ std::vector<glm::dvec4> SpreadLightSamples(
   return samples;
 }
 
+/**
+ * Whether a caster's shadow can reach the view: false when, for one frustum plane, the caster's
+ * bounds lie outside it and every direction it is swept in (away from any point of the light)
+ * leads further outside. Conservative: true may be a false alarm, never a missed shadow.
+ */
+bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dvec4& light, double radius, const glm::dmat4& worldToClip)
+{
+  const glm::dmat4 rows = glm::transpose(worldToClip);
+  const glm::dvec4 planes[6] = { rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1],
+    rows[3] - rows[1], rows[3] + rows[2], rows[3] - rows[2] };
+  for (const glm::dvec4& plane : planes)
+  {
+    const glm::dvec3 n(plane);
+    const double length = glm::length(n);
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    // Largest signed distance of the box inside this plane (inside: dot(n, x) + w >= 0).
+    const glm::dvec3 furthest(n.x > 0 ? boxMax.x : boxMin.x, n.y > 0 ? boxMax.y : boxMin.y,
+      n.z > 0 ? boxMax.z : boxMin.z);
+    const double boxReach = glm::dot(n, furthest);
+    if (boxReach + plane.w >= 0.0)
+    {
+      continue;
+    }
+    bool sweptOutside;
+    if (light.w != 0.0)
+    {
+      // Sweep directions b - q for b in the box, q in the light's sphere.
+      sweptOutside = boxReach <= glm::dot(n, glm::dvec3(light)) - radius * length;
+    }
+    else
+    {
+      // Sweep directions within the angular radius of the direction away from the light.
+      const glm::dvec3 away = -glm::normalize(glm::dvec3(light));
+      const double cosine = glm::dot(n, away) / length;
+      sweptOutside = cosine <= -std::sin(std::min(radius, 1.5707963267948966));
+    }
+    if (sweptOutside)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
   vtkInformation* info = prop->GetPropertyKeys();
@@ -275,6 +323,30 @@ public:
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
 
+  /// The camera's world-to-clip matrix and near-plane corners, as VTK's mappers use them.
+  void UpdateCamera(vtkRenderer* renderer)
+  {
+    vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
+    vtkMatrix3x3* normals;
+    static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
+      ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
+    // VTK keeps its key matrices transposed for OpenGL: element [i][j] is glm's column i, row j.
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        this->WorldToClip[i][j] = worldToClip->GetElement(i, j);
+      }
+    }
+    const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
+    const std::array<glm::dvec2, 4> ndc = { { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } } };
+    for (int i = 0; i < 4; ++i)
+    {
+      const glm::dvec4 p = clipToWorld * glm::dvec4(ndc[i], -1.0, 1.0);
+      this->NearCorners[i] = glm::dvec3(p) / p.w;
+    }
+  }
+
   /// Fills the light's samples (the light itself, or LightSamples points on it when the method
   /// averages) and its wedge settings, from the pass's method and the light's radius.
   void ChooseMethod(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
@@ -331,6 +403,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfZFailVolumes: " << this->NumberOfZFailVolumes << "\n";
   os << indent << "NumberOfPenumbraWedges: " << this->NumberOfPenumbraWedges << "\n";
   os << indent << "NumberOfFullViewportWedges: " << this->NumberOfFullViewportWedges << "\n";
+  os << indent << "NumberOfCulledShadows: " << this->NumberOfCulledShadows << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
 }
 
@@ -439,6 +512,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfZFailVolumes = 0;
   this->NumberOfPenumbraWedges = 0;
   this->NumberOfFullViewportWedges = 0;
+  this->NumberOfCulledShadows = 0;
 
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
@@ -463,6 +537,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   this->AddReceiverKeys(s);
+  internals.UpdateCamera(renderer);
   this->PrepareFramebuffer(window);
   internals.LightIntensity->Activate();
   this->RenderDepth(s);
@@ -738,6 +813,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     }
     penumbra::CasterCache* caster = internals.Caches.FindCaster(actor);
     caster->Mesh = mesh;
+    caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld =
       ToGlm(actor->GetMatrix()) * glm::translate(glm::dmat4(1.0), topo.Origin);
@@ -756,6 +832,17 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
     for (const auto& light : internals.Lights)
     {
+      const double lightRadius = GetLightRadius(light.Light);
+      const double radius = light.Wedges ? light.WedgeRadius
+        : light.World.w != 0.0           ? lightRadius
+                                         : glm::radians(lightRadius);
+      if (!ShadowMayReachView(caster->WorldMin, caster->WorldMax, light.World, radius,
+            internals.WorldToClip))
+      {
+        caster->Culled.insert(light.Light);
+        ++this->NumberOfCulledShadows;
+        continue;
+      }
       for (std::size_t k = 0; k < light.Samples.size(); ++k)
       {
         penumbra::VolumeCache& volume = caster->Volumes[{ light.Light, static_cast<int>(k) }];
@@ -779,26 +866,6 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
 {
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = window->GetState();
-
-  vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
-  vtkMatrix3x3* normals;
-  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
-    ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
-  // VTK keeps its key matrices transposed for OpenGL: element [i][j] is glm's column i, row j.
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      internals.WorldToClip[i][j] = worldToClip->GetElement(i, j);
-    }
-  }
-  const glm::dmat4 clipToWorld = glm::inverse(internals.WorldToClip);
-  const std::array<glm::dvec2, 4> ndc = { { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } } };
-  for (int i = 0; i < 4; ++i)
-  {
-    const glm::dvec4 p = clipToWorld * glm::dvec4(ndc[i], -1.0, 1.0);
-    internals.NearCorners[i] = glm::dvec3(p) / p.w;
-  }
 
   vtkShaderProgram* volumeProgram = window->GetShaderCache()->ReadyShaderProgram(
     penumbraShadowVolumeVS, penumbraShadowVolumeFS, "");
@@ -859,6 +926,10 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
       for (penumbra::CasterCache* caster : internals.Casters)
       {
+        if (caster->Culled.count(light.Light))
+        {
+          continue;
+        }
         this->NumberOfShadowVolumeTriangles +=
           DrawShadowVolume(ostate, volumeProgram, *caster, { light.Light, static_cast<int>(k) },
             light.Samples[k], internals.WorldToClip, internals.NearCorners, light.Wedges,
@@ -1006,6 +1077,10 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
   for (penumbra::CasterCache* caster : this->Casters)
   {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
     penumbra::WedgeCache& cache = caster->Wedges[light.Light];
     if (cache.VertexCount() == 0)
     {

@@ -153,6 +153,8 @@ public:
   /// their edge nearly points at the light (no wedge planes exist).
   vtkGetMacro(NumberOfPenumbraWedges, vtkIdType);
   vtkGetMacro(NumberOfFullViewportWedges, vtkIdType);
+  /// (caster, light) pairs skipped in the last frame because that shadow cannot reach the view.
+  vtkGetMacro(NumberOfCulledShadows, int);
   /// Shadow volumes drawn with z-fail (caps) in the last frame; the rest used z-pass.
   vtkGetMacro(NumberOfZFailVolumes, int);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
@@ -183,6 +185,7 @@ protected:
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
   int NumberOfZFailVolumes = 0;
+  int NumberOfCulledShadows = 0;
   vtkIdType NumberOfPenumbraWedges = 0;
   vtkIdType NumberOfFullViewportWedges = 0;
   vtkIdType NumberOfSilhouetteUpdates = 0;

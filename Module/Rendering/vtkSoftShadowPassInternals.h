@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include <map>
+#include <set>
 #include <memory>
 
 class vtkActor;
@@ -116,6 +117,8 @@ struct CasterCache
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;
+  /// Lights whose shadow of this caster cannot reach the view this frame: nothing is done.
+  std::set<vtkLight*> Culled;
   bool Used = false;
 };
 

@@ -617,6 +617,16 @@ void TestCachingAndHeadlights()
   scene.Window->Render();
   Check(scene.Pass->GetNumberOfSilhouetteUpdates() > updates, "moving the light recomputes");
 
+  // A caster behind the camera, lit from the front: its shadow points away from the view.
+  vtkActor* behind = scene.Sphere(0, 1, 0, 0.3);
+  behind->SetPosition(6, 5, 14);
+  scene.Light->SetPosition(-2, 6, 2.5);
+  scene.Window->Render();
+  Check(scene.Pass->GetNumberOfCulledShadows() == 1,
+    "a caster whose shadow cannot reach the view is skipped (" +
+      std::to_string(scene.Pass->GetNumberOfCulledShadows()) + " skipped)");
+  scene.Renderer->RemoveActor(behind);
+
   // Only a headlight: nothing to shadow, nothing drawn.
   scene.Renderer->RemoveAllLights();
   vtkNew<vtkLight> headlight;
