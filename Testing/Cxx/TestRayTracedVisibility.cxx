@@ -4,6 +4,7 @@
 // with vtkSoftShadowPass::SetCastsShadows; thread-count independence; a scene far from the origin.
 // Prints every measured error; returns EXIT_FAILURE when one is out of tolerance.
 
+#include "penumbraTestHarness.h"
 #include "vtkRayTracedVisibility.h"
 #include "vtkSoftShadowPass.h"
 
@@ -173,25 +174,9 @@ bool SegmentHitsSphere(
   return glm::dot(closest - centre, closest - centre) < radius * radius;
 }
 
-/// One X connection for every window of the test (see penumbraTestHarness.h for why).
-vtkSmartPointer<vtkRenderWindow> NewRenderWindow()
-{
-  static vtkSmartPointer<vtkRenderWindow> anchor;
-  if (!anchor)
-  {
-    anchor = vtkSmartPointer<vtkRenderWindow>::New();
-    anchor->SetOffScreenRendering(1);
-    anchor->SetSize(1, 1);
-    anchor->Render();
-  }
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetDisplayId(anchor->GetGenericDisplayId());
-  return window;
-}
-
 struct Scene
 {
-  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
+  vtkSmartPointer<vtkRenderWindow> Window = penumbra_test::NewRenderWindow();
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkSphereSource> SphereSource;
   vtkNew<vtkPlaneSource> PlaneSource;
