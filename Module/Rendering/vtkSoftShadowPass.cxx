@@ -280,6 +280,9 @@ public:
     /// or radians for a directional light).
     bool Wedges;
     double WedgeRadius;
+    /// Automatic chose wedges: falls back to averaging if a caster's layers share an outline.
+    bool AutomaticWedges;
+    glm::dvec3 SampleTarget;
   };
 
   penumbra::ShadowCaches Caches;
@@ -322,6 +325,10 @@ public:
 
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
+
+  /// Whether some caster's silhouette from the light's centre has an edge of multiplicity above
+  /// 1 (layers sharing an outline), building those silhouettes as it goes.
+  bool LayeredOutline(const ShadowLight& light, vtkIdType& silhouetteUpdates);
 
   /// The camera's world-to-clip matrix and near-plane corners, as VTK's mappers use them.
   void UpdateCamera(vtkRenderer* renderer)
@@ -622,7 +629,7 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     }
     vtkInternals::ShadowLight shadowLight{ light, collectionIndex, index,
       static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0 };
+      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, false, glm::dvec3(0.0) };
     internals.ChooseMethod(this, renderer, shadowLight);
     internals.Lights.push_back(shadowLight);
   }
@@ -635,7 +642,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   const glm::dvec4& world = shadowLight.World;
   double radius = GetLightRadius(light);
   shadowLight.Samples = { world };
-  shadowLight.Wedges = false;
+  shadowLight.Wedges = shadowLight.AutomaticWedges = false;
   shadowLight.WedgeRadius = 0.0;
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
   {
@@ -650,18 +657,20 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
     }
     radius = 89.0;
   }
-  if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
-  {
-    shadowLight.Wedges = true;
-    shadowLight.WedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
-    return;
-  }
   double bounds[6];
   renderer->ComputeVisiblePropBounds(bounds);
   const glm::dvec3 target = vtkMath::AreBoundsInitialized(bounds)
     ? glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5
     : glm::dvec3(light->GetTransformedFocalPoint()[0], light->GetTransformedFocalPoint()[1],
         light->GetTransformedFocalPoint()[2]);
+  shadowLight.SampleTarget = target;
+  if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
+  {
+    shadowLight.Wedges = true;
+    shadowLight.AutomaticWedges = self->Method == METHOD_AUTOMATIC;
+    shadowLight.WedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
+    return;
+  }
   shadowLight.Samples = SpreadLightSamples(world, radius, self->LightSamples, target);
 }
 
@@ -828,37 +837,79 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       caster->WorldMin = glm::min(caster->WorldMin, world);
       caster->WorldMax = glm::max(caster->WorldMax, world);
     }
-    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
-    for (const auto& light : internals.Lights)
+    internals.Casters.push_back(caster);
+  }
+
+  for (auto& light : internals.Lights)
+  {
+    const double lightRadius = GetLightRadius(light.Light);
+    for (penumbra::CasterCache* caster : internals.Casters)
     {
-      const double lightRadius = GetLightRadius(light.Light);
       const double radius = light.Wedges ? light.WedgeRadius
         : light.World.w != 0.0           ? lightRadius
                                          : glm::radians(lightRadius);
-      if (!ShadowMayReachView(caster->WorldMin, caster->WorldMax, light.World, radius,
-            internals.WorldToClip))
+      if (!ShadowMayReachView(
+            caster->WorldMin, caster->WorldMax, light.World, radius, internals.WorldToClip))
       {
         caster->Culled.insert(light.Light);
         ++this->NumberOfCulledShadows;
+      }
+    }
+    if (light.AutomaticWedges && internals.LayeredOutline(light, this->NumberOfSilhouetteUpdates))
+    {
+      // Layers of one caster share its outline (a clipped isosurface's walls): the wedges would
+      // count them twice. Averaged hard shadows are right for any mesh.
+      light.Wedges = false;
+      light.Samples = SpreadLightSamples(
+        light.World, lightRadius, this->LightSamples, light.SampleTarget);
+    }
+    for (penumbra::CasterCache* caster : internals.Casters)
+    {
+      if (caster->Culled.count(light.Light))
+      {
         continue;
       }
+      const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+      const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
       for (std::size_t k = 0; k < light.Samples.size(); ++k)
       {
         penumbra::VolumeCache& volume = caster->Volumes[{ light.Light, static_cast<int>(k) }];
-        if (volume.Update(*mesh, worldToObject * light.Samples[k], mirrored))
+        if (volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored))
         {
           ++this->NumberOfSilhouetteUpdates;
         }
       }
       if (light.Wedges)
       {
-        caster->Wedges[light.Light].Update(*mesh, caster->Volumes[{ light.Light, 0 }],
+        caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[{ light.Light, 0 }],
           caster->ObjectToWorld, light.World, light.WedgeRadius);
       }
     }
-    internals.Casters.push_back(caster);
   }
+}
+
+bool vtkSoftShadowPass::vtkInternals::LayeredOutline(
+  const ShadowLight& light, vtkIdType& silhouetteUpdates)
+{
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+    penumbra::VolumeCache& centre = caster->Volumes[{ light.Light, 0 }];
+    if (centre.Update(*caster->Mesh, worldToObject * light.World,
+          glm::determinant(caster->ObjectToWorld) < 0.0))
+    {
+      ++silhouetteUpdates;
+    }
+    if (centre.MaxMultiplicity > 1)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

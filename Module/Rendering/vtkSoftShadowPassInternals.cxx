@@ -8,6 +8,7 @@
 
 #include "penumbraWedge.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace penumbra
@@ -116,6 +117,11 @@ bool VolumeCache::Update(const MeshCache& mesh, const glm::dvec4& lightObject, b
   this->MeshGeneration = mesh.Generation;
   this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false);
   ++this->Generation;
+  this->MaxMultiplicity = 0;
+  for (const SilhouetteEdge& edge : this->Volume.Silhouette)
+  {
+    this->MaxMultiplicity = std::max(this->MaxMultiplicity, edge.Multiplicity);
+  }
   this->HasCaps = false;
   this->Uploaded = false;
   return true;

@@ -62,6 +62,8 @@ struct VolumeCache
   bool Mirrored = false;
   std::size_t MeshGeneration = ~std::size_t(0);
   std::size_t Generation = 0; ///< bumped on every silhouette rebuild
+  /// Largest silhouette-edge multiplicity: above 1, layers of the caster share an outline.
+  std::uint32_t MaxMultiplicity = 0;
   ShadowVolume Volume;
   bool HasCaps = false;
   vtkNew<vtkOpenGLBufferObject> Indices;

@@ -8,6 +8,7 @@
 #include "vtkCameraPass.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkCylinderSource.h"
 #include "vtkLight.h"
@@ -22,6 +23,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkSequencePass.h"
 #include "vtkSphereSource.h"
@@ -598,6 +600,37 @@ void TestWedgesTemporalStability()
     "no popping on the ground (clear of the contact) as the light crosses the planes of faces");
 }
 
+void TestAutomaticOnLayeredOutlines()
+{
+  // An isosurface clipped open by its extent: its walls share outlines (silhouette edges of
+  // multiplicity 2), which wedges would count twice. Automatic must average hard shadows instead.
+  Scene scene;
+  scene.Window->SetMultiSamples(0);
+  scene.Ground(6);
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-10, 10, -10, 10, -10, 10);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 160.0);
+  vtkActor* surface = scene.Add(contour, 0.9, 0.55, 0.25);
+  surface->GetMapper()->ScalarVisibilityOff();
+  surface->SetScale(0.1);
+  surface->SetPosition(0, 1.6, 0);
+  scene.Light->SetPosition(-1, 5, 1.5);
+  vtkSoftShadowPass::SetLightRadius(scene.Light, 0.5);
+  scene.Camera(2.5, 5, 6, 0, 0.6, 0);
+  scene.Pass->SetMethodToAutomatic();
+  const SoftComparison automatic = CompareSoft(scene);
+  Check(scene.Pass->GetNumberOfPenumbraWedges() == 0,
+    "automatic averages hard shadows when a caster's layers share an outline");
+  CheckSoft("automatic on a clipped isosurface", automatic, 0.02, 0.03);
+  scene.Pass->SetMethodToPenumbraWedges();
+  const SoftComparison wedges = CompareSoft(scene);
+  std::printf("     forced wedges on it: MAE %.4f, >0.1: %.2f%%\n", wedges.MeanError,
+    100.0 * wedges.FractionAbove01);
+  Check(wedges.MeanError > automatic.MeanError, "the fallback is the better choice there");
+}
+
 void TestCachingAndHeadlights()
 {
   Scene scene;
@@ -866,6 +899,7 @@ int main()
   TestWedgeShapes();
   TestWedgeCorners();
   TestWedgesTemporalStability();
+  TestAutomaticOnLayeredOutlines();
   TestCachingAndHeadlights();
   TestCompositing();
   TestViewportsLightsAndResize();
