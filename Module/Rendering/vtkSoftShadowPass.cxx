@@ -283,7 +283,15 @@ public:
     /// Automatic chose wedges: falls back to averaging if a caster's layers share an outline.
     bool AutomaticWedges;
     glm::dvec3 SampleTarget;
+
+    /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
+    /// centre silhouette (wedges, Automatic's check) and averaged samples never evict each other.
+    std::pair<vtkLight*, int> VolumeKey(std::size_t k) const
+    {
+      return { this->Light, this->Wedges ? CentreVolume : static_cast<int>(k) };
+    }
   };
+  static constexpr int CentreVolume = -1;
 
   penumbra::ShadowCaches Caches;
   std::vector<ShadowLight> Lights;
@@ -873,7 +881,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
       for (std::size_t k = 0; k < light.Samples.size(); ++k)
       {
-        penumbra::VolumeCache& volume = caster->Volumes[{ light.Light, static_cast<int>(k) }];
+        penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
         if (volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored))
         {
           ++this->NumberOfSilhouetteUpdates;
@@ -881,7 +889,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       }
       if (light.Wedges)
       {
-        caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[{ light.Light, 0 }],
+        caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
           caster->ObjectToWorld, light.World, light.WedgeRadius);
       }
     }
@@ -898,7 +906,7 @@ bool vtkSoftShadowPass::vtkInternals::LayeredOutline(
       continue;
     }
     const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    penumbra::VolumeCache& centre = caster->Volumes[{ light.Light, 0 }];
+    penumbra::VolumeCache& centre = caster->Volumes[{ light.Light, CentreVolume }];
     if (centre.Update(*caster->Mesh, worldToObject * light.World,
           glm::determinant(caster->ObjectToWorld) < 0.0))
     {
@@ -982,7 +990,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
           continue;
         }
         this->NumberOfShadowVolumeTriangles +=
-          DrawShadowVolume(ostate, volumeProgram, *caster, { light.Light, static_cast<int>(k) },
+          DrawShadowVolume(ostate, volumeProgram, *caster, light.VolumeKey(k),
             light.Samples[k], internals.WorldToClip, internals.NearCorners, light.Wedges,
             this->NumberOfZFailVolumes);
       }

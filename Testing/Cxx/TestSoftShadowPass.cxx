@@ -624,6 +624,13 @@ void TestAutomaticOnLayeredOutlines()
   Check(scene.Pass->GetNumberOfPenumbraWedges() == 0,
     "automatic averages hard shadows when a caster's layers share an outline");
   CheckSoft("automatic on a clipped isosurface", automatic, 0.02, 0.03);
+  const vtkIdType updates = scene.Pass->GetNumberOfSilhouetteUpdates();
+  scene.Renderer->GetActiveCamera()->Azimuth(5);
+  scene.Window->Render();
+  scene.Renderer->GetActiveCamera()->Azimuth(5);
+  scene.Window->Render();
+  Check(scene.Pass->GetNumberOfSilhouetteUpdates() == updates,
+    "camera orbit does no silhouette work with Automatic's averaged fallback");
   scene.Pass->SetMethodToPenumbraWedges();
   const SoftComparison wedges = CompareSoft(scene);
   std::printf("     forced wedges on it: MAE %.4f, >0.1: %.2f%%\n", wedges.MeanError,
