@@ -1,19 +1,25 @@
 // PenumbraDemo: a small scientific scene (an isosurface of vtkRTAnalyticSource floating over a
-// ground plane, with a field of glyphs standing on it) lit by one positional key light, rendered
-// with and without vtkSoftShadowPass.
+// ground plane, with a field of glyphs standing on it) lit by one key light, a spot light of
+// radius 0.4 (an area light: soft shadows), rendered with and without vtkSoftShadowPass.
 //
-//   PenumbraDemo --output DIR [--width W] [--height H] [--frames N]
+//   PenumbraDemo --output DIR [--width W] [--height H] [--frames N] [--truth-samples N]
 //
 // It writes DIR/demo_no_shadows.png and DIR/demo_shadows.png, times N orbiting frames with and
 // without shadows (median and min of renderWindow->Render()), and compares the pass's light
 // visibility at the final camera of the orbit with the ray-traced ground truth of
 // vtkRayTracedVisibility, writing both as grey images (DIR/visibility_pass.png,
 // DIR/visibility_truth.png) next to the shadowed view they belong to
-// (DIR/demo_shadows_final_view.png).
+// (DIR/demo_shadows_final_view.png). It ends with a short version of PenumbraBench's table
+// (Benchmarks/): none, hard_volumes, averaged_16 and shadowmap_1024, each timed over the same
+// orbit (fewer frames once 5 s have passed) and scored at the final camera against the same truth.
 // Exits 0 on success, 1 when something failed to render or to be written, 2 on a usage error.
 
 #include "vtkRayTracedVisibility.h"
 #include "vtkSoftShadowPass.h"
+
+// Shared with PenumbraBench (header-only): error metrics and VTK's shadow maps.
+#include "../Benchmarks/penumbraMetrics.h"
+#include "../Benchmarks/penumbraShadowMap.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -38,6 +44,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -46,6 +53,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,15 +66,16 @@ struct Options
   int Width = 1024;
   int Height = 768;
   int Frames = 30;
+  int TruthSamples = 256;
 };
 
 void Usage(const char* program)
 {
   std::fprintf(stderr,
-    "usage: %s [--output DIR] [--width W] [--height H] [--frames N]\n"
+    "usage: %s [--output DIR] [--width W] [--height H] [--frames N] [--truth-samples N]\n"
     "  renders the Penumbra demo scene with and without shadows into DIR (default .),\n"
     "  times N orbiting frames of each (default 1024x768, 30 frames) and compares the\n"
-    "  shadow pass with ray-traced ground truth.\n",
+    "  shadow pass with ray-traced ground truth (default 256 shadow rays per pixel).\n",
     program);
 }
 
@@ -115,6 +124,10 @@ bool ParseArguments(int argc, char* argv[], Options& options)
     {
       ok = ParseInt(value, 1, options.Frames);
     }
+    else if (arg == "--truth-samples")
+    {
+      ok = ParseInt(value, 1, options.TruthSamples);
+    }
     else
     {
       std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
@@ -145,14 +158,17 @@ vtkIdType CountTriangles(vtkPolyData* data)
 
 struct Timing
 {
+  int Frames = 0;
   double Median = 0.0;
   double Min = 0.0;
 };
 
 /// Renders `warmUp` frames, then `frames` timed ones, the camera orbiting one degree before each
 /// so that no frame is a repeat. Each sample is Render() plus glFinish (WaitForCompletion), so
-/// that work the driver queued is charged to its frame.
-Timing TimeFrames(vtkRenderWindow* window, vtkCamera* camera, int warmUp, int frames)
+/// that work the driver queued is charged to its frame. Stops early once 3 frames are timed and
+/// they took more than maxSeconds.
+Timing TimeFrames(
+  vtkRenderWindow* window, vtkCamera* camera, int warmUp, int frames, double maxSeconds = 1e30)
 {
   for (int i = 0; i < warmUp; ++i)
   {
@@ -162,18 +178,25 @@ Timing TimeFrames(vtkRenderWindow* window, vtkCamera* camera, int warmUp, int fr
   window->WaitForCompletion();
   std::vector<double> ms;
   ms.reserve(frames);
+  double total = 0.0;
   for (int i = 0; i < frames; ++i)
   {
+    if (i >= 3 && total > 1000.0 * maxSeconds)
+    {
+      break;
+    }
     camera->Azimuth(1.0);
     const auto start = std::chrono::steady_clock::now();
     window->Render();
     window->WaitForCompletion();
     const auto stop = std::chrono::steady_clock::now();
     ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    total += ms.back();
   }
   std::sort(ms.begin(), ms.end());
   Timing t;
   const std::size_t n = ms.size();
+  t.Frames = static_cast<int>(n);
   t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
   t.Min = ms.front();
   return t;
@@ -201,6 +224,17 @@ bool WriteScreenshot(vtkRenderWindow* window, const std::string& path)
   grab->ReadFrontBufferOff();
   grab->Update();
   return WritePNG(grab->GetOutputPort(), path);
+}
+
+/// The RGB bytes and window depths of the frame just rendered (no re-render).
+void GrabFrame(vtkRenderWindow* window, int width, int height, std::vector<unsigned char>& rgb,
+  std::vector<float>& z)
+{
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetPixelData(0, 0, width - 1, height - 1, /*front*/ 0, pixels, /*right*/ 0);
+  rgb.assign(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+  z.resize(static_cast<std::size_t>(width) * height);
+  window->GetZbufferData(0, 0, width - 1, height - 1, z.data());
 }
 
 /// Writes a visibility image (floats in [0, 1]) as an 8-bit grey PNG.
@@ -313,21 +347,24 @@ int main(int argc, char* argv[])
   const vtkIdType triangles = CountTriangles(contour->GetOutput()) +
     CountTriangles(plane->GetOutput()) + CountTriangles(glyph->GetOutput());
 
-  // One positional key light from above, to the side: shadows fall across the plane.
+  // One key light from above, to the side: shadows fall across the plane. A spot light (cone
+  // angle below 90 degrees, so that VTK's shadow maps can compare; 60 covers the whole ground)
+  // with a radius of 0.4: an area light, soft shadows, a penumbra in the ray-traced truth.
   vtkNew<vtkLight> key;
   key->SetLightTypeToSceneLight();
   key->SetPositional(true);
-  key->SetConeAngle(180.0);
+  key->SetConeAngle(60.0);
   key->SetPosition(5.0, -8.7, 8.5);
   key->SetFocalPoint(0.0, 0.0, 0.0);
   key->SetIntensity(1.0);
-  vtkSoftShadowPass::SetLightRadius(key, 0.0); // hard shadows
+  vtkSoftShadowPass::SetLightRadius(key, 0.4);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(ground);
   renderer->AddActor(isosurface);
   renderer->AddActor(glyphs);
   renderer->AddLight(key);
+  renderer->AutomaticLightCreationOff(); // the key light alone, even at intensity 0
   renderer->SetAmbient(1.0, 1.0, 1.0);
   renderer->SetBackground(0.12, 0.14, 0.18);
   renderer->SetBackground2(0.35, 0.40, 0.48);
@@ -349,7 +386,7 @@ int main(int argc, char* argv[])
   window->AddRenderer(renderer);
   window->SetWindowName("Penumbra demo");
 
-  vtkNew<vtkSoftShadowPass> shadows;
+  vtkNew<vtkSoftShadowPass> shadows; // METHOD_AUTOMATIC: the pass picks the soft method
 
   // --- a. Still images. ------------------------------------------------------------------------
   std::vector<std::string> written;
@@ -376,15 +413,18 @@ int main(int argc, char* argv[])
   written.push_back(out + "/demo_shadows.png");
 
   // --- b. Frame times, both in this run. -------------------------------------------------------
-  // Both runs orbit through the same views from the same start, so their times compare.
+  // Both runs orbit through the same views from the same start, so their times compare. A run
+  // stops early once its timed frames pass 10 s (soft shadows on a software rasterizer), and
+  // then also ends at an earlier view: section c uses the shadowed run's last one.
   vtkNew<vtkCamera> start;
   start->DeepCopy(camera);
   renderer->SetPass(nullptr);
-  const Timing plain = TimeFrames(window, camera, 3, options.Frames);
+  const Timing plain = TimeFrames(window, camera, 3, options.Frames, 10.0);
   camera->DeepCopy(start);
+  camera->Modified(); // DeepCopy does not (VTK 9.1): the mappers would keep stale lighting
   renderer->SetPass(shadows);
   const vtkIdType updatesBefore = shadows->GetNumberOfSilhouetteUpdates();
-  const Timing shadowed = TimeFrames(window, camera, 3, options.Frames);
+  const Timing shadowed = TimeFrames(window, camera, 3, options.Frames, 10.0);
   // Only the camera moves: the pass should reuse every caster's silhouette.
   const vtkIdType orbitUpdates = shadows->GetNumberOfSilhouetteUpdates() - updatesBefore;
   const vtkIdType volumeTriangles = shadows->GetNumberOfShadowVolumeTriangles();
@@ -422,7 +462,7 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkRayTracedVisibility> truth;
   truth->SetRenderer(renderer);
-  truth->SetSamplesPerLight(1);
+  truth->SetSamplesPerLight(options.TruthSamples);
   const auto traceStart = std::chrono::steady_clock::now();
   const bool traced = truth->Update();
   const double traceMs = std::chrono::duration<double, std::milli>(
@@ -435,11 +475,11 @@ int main(int argc, char* argv[])
     image->GetDimensions(dims);
     return dims[0] == width && dims[1] == height;
   };
+  const std::size_t pixels = static_cast<std::size_t>(width) * height;
   bool compared = false;
-  vtkIdType comparedPixels = 0, over01 = 0, over05 = 0, depthMismatch = 0;
-  double sumError = 0.0;
+  penumbra::metrics::ErrorStats passError;
   if (!passVisibility || !truthVisibility || !truthDepth ||
-    zbuffer->GetNumberOfValues() != static_cast<vtkIdType>(width) * height)
+    zbuffer->GetNumberOfValues() != static_cast<vtkIdType>(pixels))
   {
     std::fprintf(stderr, "error: no visibility to compare (pass %s, truth %s, z-buffer %s)\n",
       passVisibility ? "ok" : "missing", truthVisibility ? "ok" : "missing",
@@ -455,28 +495,11 @@ int main(int argc, char* argv[])
   else
   {
     compared = true;
-    const float* pass = static_cast<float*>(passVisibility->GetScalarPointer());
-    const float* ref = static_cast<float*>(truthVisibility->GetScalarPointer());
-    const float* refDepth = static_cast<float*>(truthDepth->GetScalarPointer());
-    const float* z = zbuffer->GetPointer(0);
-    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-    for (vtkIdType p = 0; p < pixels; ++p)
-    {
-      if (!(ref[p] < 1.0f || pass[p] < 1.0f))
-      {
-        continue; // lit in both: outside the shadow region
-      }
-      if (refDepth[p] >= 1.0f || z[p] >= 1.0f || std::abs(refDepth[p] - z[p]) >= 1e-3f)
-      {
-        ++depthMismatch; // background, or the two saw different surfaces
-        continue;
-      }
-      const double error = std::abs(static_cast<double>(pass[p]) - ref[p]);
-      sumError += error;
-      over01 += error > 0.1;
-      over05 += error > 0.5;
-      ++comparedPixels;
-    }
+    // Pixels in shadow in either image, where raster and ray tracer saw the same surface.
+    passError = penumbra::metrics::CompareVisibility(
+      static_cast<float*>(passVisibility->GetScalarPointer()),
+      static_cast<float*>(truthVisibility->GetScalarPointer()),
+      static_cast<float*>(truthDepth->GetScalarPointer()), zbuffer->GetPointer(0), pixels);
     if (!WriteVisibility(passVisibility, out + "/visibility_pass.png") ||
       !WriteVisibility(truthVisibility, out + "/visibility_truth.png"))
     {
@@ -490,25 +513,129 @@ int main(int argc, char* argv[])
   }
 
   // --- d. Report. ------------------------------------------------------------------------------
-  std::printf("Penumbra demo: %dx%d, %lld triangles, %d shadowing light%s\n", width, height,
-    static_cast<long long>(triangles), shadowingLights, shadowingLights == 1 ? "" : "s");
+  std::printf("Penumbra demo: %dx%d, %lld triangles, %d shadowing light%s (radius %.2f)\n", width,
+    height, static_cast<long long>(triangles), shadowingLights, shadowingLights == 1 ? "" : "s",
+    vtkSoftShadowPass::GetLightRadius(key));
   std::printf("  no shadows      median %6.1f ms  min %6.1f ms\n", plain.Median, plain.Min);
-  std::printf("  hard shadows    median %6.1f ms  min %6.1f ms  (x%.2f)\n", shadowed.Median,
-    shadowed.Min, plain.Median > 0.0 ? shadowed.Median / plain.Median : 0.0);
-  std::printf("    (%d orbiting frames each, Render() + glFinish; %lld shadow-volume triangles "
+  std::printf("  shadows         median %6.1f ms  min %6.1f ms  (x%.2f; method %s)\n",
+    shadowed.Median, shadowed.Min, plain.Median > 0.0 ? shadowed.Median / plain.Median : 0.0,
+    shadows->GetMethodAsString());
+  std::printf("    (%d and %d orbiting frames, Render() + glFinish; %lld shadow-volume triangles "
               "per frame, %lld silhouette updates while orbiting)\n",
-    options.Frames, static_cast<long long>(volumeTriangles), static_cast<long long>(orbitUpdates));
+    plain.Frames, shadowed.Frames, static_cast<long long>(volumeTriangles),
+    static_cast<long long>(orbitUpdates));
   if (compared)
   {
-    const double n = comparedPixels > 0 ? static_cast<double>(comparedPixels) : 1.0;
-    std::printf("  visibility vs ray-traced truth (%lld px in shadow): MAE %.4f  >0.1: %.2f%%  "
+    std::printf("  visibility vs ray-traced truth (%zu px in shadow): MAE %.4f  >0.1: %.2f%%  "
                 ">0.5: %.2f%%\n",
-      static_cast<long long>(comparedPixels), sumError / n, 100.0 * over01 / n,
-      100.0 * over05 / n);
-    std::printf("    (final camera; %lld shadow px skipped where raster and ray-traced surfaces "
-                "differ; traced in %.0f ms)\n",
-      static_cast<long long>(depthMismatch), traceMs);
+      passError.Pixels, passError.MAE, 100.0 * passError.FracGt01, 100.0 * passError.FracGt05);
+    std::printf("    (final camera; %zu shadow px skipped where raster and ray-traced surfaces "
+                "differ; %d rays per pixel traced in %.0f ms)\n",
+      passError.Skipped, options.TruthSamples, traceMs);
   }
+  std::fflush(stdout);
+
+  // --- e. A short speed-versus-error table (the full one: ./build.sh bench). -------------------
+  // Each method: the error at the final camera (the view the truth above was traced for), then
+  // the frame time over the same orbit as above (fewer frames once 5 s have passed). Methods with
+  // a visibility image are scored on it; the others (no shadows, shadow maps) on luminance
+  // against the reference A + v (D - A): A the scene with the key light at intensity 0, D lit
+  // without shadows, v the ray-traced visibility.
+  if (compared)
+  {
+    vtkNew<vtkCamera> finalView;
+    finalView->DeepCopy(camera);
+    const float* truthValues = static_cast<float*>(truthVisibility->GetScalarPointer());
+    const float* truthZ = static_cast<float*>(truthDepth->GetScalarPointer());
+
+    std::vector<unsigned char> lit, ambient, image;
+    std::vector<float> litZ, ambientZ, imageZ;
+    renderer->SetPass(nullptr);
+    window->Render();
+    GrabFrame(window, width, height, lit, litZ);
+    key->SetIntensity(0.0);
+    window->Render();
+    GrabFrame(window, width, height, ambient, ambientZ);
+    key->SetIntensity(1.0);
+
+    struct ShortRow
+    {
+      const char* Name;
+      std::function<vtkSmartPointer<vtkRenderPass>()> Make;
+    };
+    const ShortRow rows[] = {
+      { "none", []() { return vtkSmartPointer<vtkRenderPass>(); } },
+      { "hard_volumes",
+        []() {
+          auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
+          pass->SetMethodToHardVolumes();
+          return vtkSmartPointer<vtkRenderPass>(pass);
+        } },
+      { "averaged_16",
+        []() {
+          auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
+          pass->SetMethodToAveragedHardShadows();
+          pass->SetLightSamples(16);
+          return vtkSmartPointer<vtkRenderPass>(pass);
+        } },
+      { "shadowmap_1024", []() { return penumbra::bench::MakeShadowMapPass(1024); } },
+    };
+    std::printf("  speed vs error (the full benchmark: ./build.sh bench):\n");
+    std::printf("    %-15s %10s %7s %8s %7s  %s\n", "method", "median ms", "x none", "MAE", ">0.1",
+      "error on");
+    for (const ShortRow& row : rows)
+    {
+      vtkSmartPointer<vtkRenderPass> pass = row.Make();
+      renderer->SetPass(pass);
+      camera->DeepCopy(finalView);
+      camera->Modified();
+      window->Render();
+      window->Render();
+      GrabFrame(window, width, height, image, imageZ);
+      penumbra::metrics::ErrorStats error;
+      bool onVisibility = false;
+      if (auto* soft = vtkSoftShadowPass::SafeDownCast(pass))
+      {
+        vtkImageData* visibility = soft->GetVisibilityImage(lightIndex);
+        if (visibility && sizeMatches(visibility))
+        {
+          error = penumbra::metrics::CompareVisibility(
+            static_cast<float*>(visibility->GetScalarPointer()), truthValues, truthZ,
+            imageZ.data(), pixels);
+          onVisibility = true;
+        }
+        else
+        {
+          std::fprintf(stderr, "error: %s gave no visibility image\n", row.Name);
+          ok = false;
+        }
+      }
+      else
+      {
+        error = penumbra::metrics::CompareLuminance(image.data(), lit.data(), ambient.data(), 3,
+          truthValues, truthZ, imageZ.data(), pixels);
+      }
+      Timing timing = plain; // `none` was timed above, over the same orbit
+      if (pass)
+      {
+        camera->DeepCopy(start);
+        camera->Modified();
+        timing = TimeFrames(window, camera, 1, options.Frames, 5.0);
+      }
+      std::printf("    %-15s %10.1f %7.2f %8.4f %6.2f%%  %s\n", row.Name, timing.Median,
+        plain.Median > 0.0 ? timing.Median / plain.Median : 0.0, error.MAE,
+        100.0 * error.FracGt01, onVisibility ? "visibility" : "luminance");
+      std::fflush(stdout);
+      renderer->SetPass(nullptr);
+      if (pass)
+      {
+        pass->ReleaseGraphicsResources(window);
+      }
+    }
+    std::printf("    (luminance errors are scaled by the light's share of each pixel and read lower "
+                "than visibility errors of the same shadow)\n");
+  }
+
   std::printf("wrote:\n");
   for (const std::string& path : written)
   {

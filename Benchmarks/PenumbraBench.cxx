@@ -1,0 +1,1221 @@
+// PenumbraBench: speed versus error of every shadowing method on a fixed set of scenes.
+//
+//   PenumbraBench [--output DIR] [--width W --height H] [--frames N] [--scenes a,b,...]
+//                 [--methods a,b,...] [--radii r1,r2,...] [--truth-samples N]
+//                 [--max-seconds S] [--images classic|all|none] [--no-noise-check] [--no-plot]
+//                 [--quick]
+//
+// For every scene and light radius it ray-traces the true light visibility (vtkRayTracedVisibility)
+// once, then renders the scene with each method: the error at the starting camera (against the
+// truth's visibility, or for methods without a visibility image against a reference image shaded
+// with it), then the frame time over an orbit. All methods are timed in this one run, in one
+// window, one after the other. It writes
+//   DIR/results.csv            the table (columns below), one row per scene and method
+//   DIR/results_luminance.csv  the same with every method's error measured on luminance
+//   DIR/truth.csv              per scene: truth samples, trace time and the truth's own noise
+//   DIR/README.md              what the columns mean, which rows use which error
+//   DIR/<scene>_<method>.png   still images (for the scenes --images selects)
+//   DIR/speed_vs_error.png     the plot (plot_results.py), when /usr/bin/python3 has matplotlib
+// and prints a table with the frame times' ratios to `none`.
+//
+// Exits 0 on success, 1 when a render, the truth or a file failed, 2 on a usage error.
+
+#include "penumbraMetrics.h"
+#include "penumbraShadowMap.h"
+
+#include "vtkRayTracedVisibility.h"
+#include "vtkSoftShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkArrowSource.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkContourFilter.h"
+#include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGlyph3D.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef PENUMBRA_BENCH_DEFAULT_OUTPUT
+#define PENUMBRA_BENCH_DEFAULT_OUTPUT "bench"
+#endif
+#ifndef PENUMBRA_BENCH_PLOT_SCRIPT
+#define PENUMBRA_BENCH_PLOT_SCRIPT "plot_results.py"
+#endif
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using penumbra::metrics::ErrorStats;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+//--------------------------------------------------------------------------------------------------
+// Options
+//--------------------------------------------------------------------------------------------------
+struct Options
+{
+  std::string Output = PENUMBRA_BENCH_DEFAULT_OUTPUT;
+  int Width = 1024;
+  int Height = 768;
+  int Frames = 20;
+  int WarmUp = 3;
+  double WarmUpSeconds = 3.0;  // warm-up stops early past this (at least 1 warm-up frame)
+  double AzimuthStep = 0.5;    // degrees per frame
+  double MaxSeconds = 10.0;    // per method's timed frames; at least 3 frames are always timed
+  int TruthSamples = 256;
+  bool NoiseCheck = true;      // a second truth with another seed: the truth's own noise
+  bool Plot = true;
+  std::string Images = "classic"; // scenes whose still images are written: classic, all, none
+  std::vector<std::string> Scenes = { "classic", "isosurface", "glyphs", "large" };
+  std::vector<std::string> Methods;  // empty: all
+  std::vector<double> Radii = { 0.2, 1.0 };
+  bool Quick = false;
+  bool SizeGiven = false, FramesGiven = false, TruthGiven = false, MaxGiven = false;
+};
+
+void Usage(const char* program)
+{
+  std::fprintf(stderr,
+    "usage: %s [options]\n"
+    "  --output DIR          results directory (default %s)\n"
+    "  --width W --height H  window size (default 1024x768)\n"
+    "  --frames N            timed frames per method (default 20), after up to 3 warm-up\n"
+    "                        frames (none once 3 s have been spent warming up, the renders\n"
+    "                        the error is measured on included)\n"
+    "  --max-seconds S       stop a method's timing once its timed frames pass S seconds\n"
+    "                        (default 10; at least 1 frame; the frames column says how many)\n"
+    "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all)\n"
+    "  --methods a,b,...     among none,shadowmap_1024,shadowmap_4096,hard_volumes,\n"
+    "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges (default\n"
+    "                        all of these);\n"
+    "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
+    "                        shadow maps without the benchmark's square-bake fix\n"
+    "  --radii r1,r2,...     light radii in world units (default 0.2,1); the scenes are ~10\n"
+    "                        units across, the light ~12 units from their centre\n"
+    "  --truth-samples N     shadow rays per pixel of the ray-traced truth (default 256)\n"
+    "  --images WHICH        still images of: classic (default), all or none of the scenes\n"
+    "  --no-noise-check      skip the second truth (other seed) that measures the truth's noise\n"
+    "  --no-plot             do not run plot_results.py at the end\n"
+    "  --quick               smoke test: 320x240, 3 frames, 1 warm-up, 64 truth samples,\n"
+    "                        5 s timing cap, no averaged_256 unless --methods names it\n",
+    program, PENUMBRA_BENCH_DEFAULT_OUTPUT);
+}
+
+std::vector<std::string> SplitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+bool ParseInt(const char* text, int minimum, int maximum, int& value)
+{
+  char* end = nullptr;
+  const long parsed = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || parsed < minimum || parsed > maximum)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+bool ParseDouble(const char* text, double minimum, double& value)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(parsed) || parsed < minimum)
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+bool ParseArguments(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help")
+    {
+      Usage(argv[0]);
+      std::exit(EXIT_SUCCESS);
+    }
+    if (arg == "--quick")
+    {
+      options.Quick = true;
+      continue;
+    }
+    if (arg == "--no-plot")
+    {
+      options.Plot = false;
+      continue;
+    }
+    if (arg == "--no-noise-check")
+    {
+      options.NoiseCheck = false;
+      continue;
+    }
+    if (i + 1 >= argc)
+    {
+      std::fprintf(stderr, "%s: missing value after %s\n", argv[0], arg.c_str());
+      return false;
+    }
+    const char* value = argv[++i];
+    bool ok = true;
+    if (arg == "--output" || arg == "-o")
+    {
+      options.Output = value;
+    }
+    else if (arg == "--width")
+    {
+      ok = ParseInt(value, 16, 8192, options.Width);
+      options.SizeGiven = true;
+    }
+    else if (arg == "--height")
+    {
+      ok = ParseInt(value, 16, 8192, options.Height);
+      options.SizeGiven = true;
+    }
+    else if (arg == "--frames")
+    {
+      ok = ParseInt(value, 1, 100000, options.Frames);
+      options.FramesGiven = true;
+    }
+    else if (arg == "--max-seconds")
+    {
+      ok = ParseDouble(value, 0.0, options.MaxSeconds);
+      options.MaxGiven = true;
+    }
+    else if (arg == "--truth-samples")
+    {
+      ok = ParseInt(value, 1, 65536, options.TruthSamples);
+      options.TruthGiven = true;
+    }
+    else if (arg == "--scenes")
+    {
+      options.Scenes = SplitList(value);
+      ok = !options.Scenes.empty();
+    }
+    else if (arg == "--methods")
+    {
+      options.Methods = SplitList(value);
+      ok = !options.Methods.empty();
+    }
+    else if (arg == "--radii")
+    {
+      options.Radii.clear();
+      for (const std::string& item : SplitList(value))
+      {
+        double r = 0.0;
+        ok = ok && ParseDouble(item.c_str(), 0.0, r);
+        options.Radii.push_back(r);
+      }
+      ok = ok && !options.Radii.empty();
+    }
+    else if (arg == "--images")
+    {
+      options.Images = value;
+      ok = options.Images == "classic" || options.Images == "all" || options.Images == "none";
+    }
+    else
+    {
+      std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
+      return false;
+    }
+    if (!ok)
+    {
+      std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], value, arg.c_str());
+      return false;
+    }
+  }
+  if (options.Quick)
+  {
+    if (!options.SizeGiven)
+    {
+      options.Width = 320;
+      options.Height = 240;
+    }
+    if (!options.FramesGiven)
+    {
+      options.Frames = 3;
+    }
+    if (!options.TruthGiven)
+    {
+      options.TruthSamples = 64;
+    }
+    if (!options.MaxGiven)
+    {
+      options.MaxSeconds = 5.0;
+    }
+    options.WarmUp = 1;
+  }
+  return true;
+}
+
+//--------------------------------------------------------------------------------------------------
+// Scenes. All share one frame (z up): a 14 x 14 ground plane at z = 0 centred on the origin, the
+// casters within ~8 units of it and up to ~4 units high, one spot light ~12.5 units from the
+// centre (cone 55 degrees, covering the whole ground), one camera orbiting around (0, 0, 1).
+//--------------------------------------------------------------------------------------------------
+vtkIdType CountTriangles(vtkPolyData* data)
+{
+  vtkIdType triangles = 0;
+  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
+  {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
+    }
+  }
+  return triangles;
+}
+
+struct Scene
+{
+  std::string Name;
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
+  vtkIdType Triangles = 0;
+};
+
+vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
+{
+  source->Update();
+  vtkPolyData* data = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
+  vtkNew<vtkPolyData> copy;
+  copy->ShallowCopy(data);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(copy);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(r, g, b);
+  property->SetAmbient(0.15);
+  property->SetDiffuse(0.85);
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(30.0);
+  return actor;
+}
+
+void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
+{
+  scene.Triangles +=
+    CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
+  scene.Actors.push_back(actor);
+}
+
+void AddGround(Scene& scene)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-7.0, -7.0, 0.0);
+  plane->SetPoint1(7.0, -7.0, 0.0);
+  plane->SetPoint2(-7.0, 7.0, 0.0);
+  plane->SetResolution(1, 1);
+  auto ground = MakeActor(plane, 0.85, 0.85, 0.82);
+  ground->GetProperty()->SetSpecular(0.0);
+  AddActor(scene, ground);
+}
+
+/// Spheres and boxes on the ground plane, one of the spheres floating.
+Scene MakeClassic()
+{
+  Scene scene;
+  scene.Name = "classic";
+  AddGround(scene);
+  struct Ball
+  {
+    double X, Y, Z, R;
+    double Colour[3];
+  };
+  for (const Ball& b : { Ball{ -2.2, 1.2, 1.1, 1.1, { 0.85, 0.30, 0.25 } },
+         Ball{ 1.6, 2.2, 2.6, 0.7, { 0.30, 0.55, 0.85 } },
+         Ball{ 2.8, -1.8, 0.55, 0.55, { 0.35, 0.75, 0.40 } } })
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(b.X, b.Y, b.Z);
+    sphere->SetRadius(b.R);
+    sphere->SetThetaResolution(64);
+    sphere->SetPhiResolution(32);
+    AddActor(scene, MakeActor(sphere, b.Colour[0], b.Colour[1], b.Colour[2]));
+  }
+  struct Box
+  {
+    double X, Y, Sx, Sy, Sz, Angle;
+    double Colour[3];
+  };
+  for (const Box& b : { Box{ 0.2, -0.8, 1.5, 1.5, 1.5, 30.0, { 0.90, 0.75, 0.30 } },
+         Box{ -3.4, -2.2, 0.6, 0.6, 3.2, 10.0, { 0.70, 0.45, 0.80 } },
+         Box{ 3.0, 1.6, 2.0, 0.8, 0.9, -20.0, { 0.45, 0.75, 0.75 } } })
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetXLength(b.Sx);
+    cube->SetYLength(b.Sy);
+    cube->SetZLength(b.Sz);
+    auto actor = MakeActor(cube, b.Colour[0], b.Colour[1], b.Colour[2]);
+    actor->SetPosition(b.X, b.Y, 0.5 * b.Sz);
+    actor->RotateZ(b.Angle);
+    AddActor(scene, actor);
+  }
+  return scene;
+}
+
+/// An isosurface of vtkRTAnalyticSource, open where the extent clips it, floating over the plane.
+Scene MakeIsosurface()
+{
+  Scene scene;
+  scene.Name = "isosurface";
+  AddGround(scene);
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-20, 20, -20, 20, -20, 20);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 160.0); // ~600 boundary edges where the extent clips it
+  contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  auto actor = MakeActor(contour, 0.90, 0.55, 0.25);
+  actor->SetScale(0.1);
+  actor->SetPosition(0.0, 0.0, 2.4);
+  actor->RotateZ(20.0);
+  AddActor(scene, actor);
+  return scene;
+}
+
+/// 400 arrows (one vtkGlyph3D actor) following a swirling field over the plane.
+Scene MakeGlyphs()
+{
+  Scene scene;
+  scene.Name = "glyphs";
+  AddGround(scene);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> vectors;
+  vectors->SetNumberOfComponents(3);
+  vectors->SetName("field");
+  const int n = 20;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double x = -5.0 + 10.0 * i / (n - 1), y = -5.0 + 10.0 * j / (n - 1);
+      const double z = 0.8 + 0.5 * std::sin(0.7 * x) * std::cos(0.6 * y);
+      points->InsertNextPoint(x, y, z);
+      const double v[3] = { -y + 0.3 * x, x + 0.3 * y, 2.0 + 0.5 * std::sin(x + y) };
+      vectors->InsertNextTuple(v);
+    }
+  }
+  vtkNew<vtkPolyData> sites;
+  sites->SetPoints(points);
+  sites->GetPointData()->SetVectors(vectors);
+  vtkNew<vtkArrowSource> arrow;
+  arrow->SetTipResolution(12);
+  arrow->SetShaftResolution(12);
+  arrow->SetShaftRadius(0.06);
+  arrow->SetTipRadius(0.15);
+  vtkNew<vtkGlyph3D> glyph;
+  glyph->SetInputData(sites);
+  glyph->SetSourceConnection(arrow->GetOutputPort());
+  glyph->SetVectorModeToUseVector();
+  glyph->SetScaleModeToDataScalingOff();
+  glyph->SetScaleFactor(0.9);
+  glyph->OrientOn();
+  AddActor(scene, MakeActor(glyph, 0.30, 0.50, 0.85));
+  return scene;
+}
+
+/// A tilted torus of 1,000,000 triangles over the plane: triangle throughput and self-shadowing.
+Scene MakeLarge()
+{
+  Scene scene;
+  scene.Name = "large";
+  AddGround(scene);
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(2.4);
+  torus->SetCrossSectionRadius(0.8);
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(torus);
+  source->SetUResolution(1000);
+  source->SetVResolution(500);
+  source->GenerateTextureCoordinatesOff();
+  source->SetScalarModeToNone();
+  auto actor = MakeActor(source, 0.75, 0.75, 0.80);
+  actor->RotateX(35.0);
+  actor->SetPosition(0.0, 0.0, 2.6);
+  AddActor(scene, actor);
+  return scene;
+}
+
+bool MakeScene(const std::string& name, Scene& scene)
+{
+  if (name == "classic")
+    scene = MakeClassic();
+  else if (name == "isosurface")
+    scene = MakeIsosurface();
+  else if (name == "glyphs")
+    scene = MakeGlyphs();
+  else if (name == "large")
+    scene = MakeLarge();
+  else
+    return false;
+  return true;
+}
+
+void SetStartCamera(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 1.0);
+  camera->SetPosition(-6.5, -13.0, 7.5);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(35.0);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
+}
+
+//--------------------------------------------------------------------------------------------------
+// Methods. Each entry makes a fresh render pass (nullptr: VTK's own rendering) and, for methods
+// that expose it, a way to read light 0's visibility back; rows of methods without it are scored
+// on luminance against the reference image. New methods (penumbra wedges, ...) are one more entry.
+//--------------------------------------------------------------------------------------------------
+struct MethodInstance
+{
+  vtkSmartPointer<vtkRenderPass> Pass;              ///< installed with renderer->SetPass
+  std::function<vtkImageData*()> Visibility;       ///< empty: scored on luminance
+  std::function<long long()> ShadowTriangles;      ///< empty: not applicable
+};
+
+struct MethodSpec
+{
+  std::string Name;
+  std::function<MethodInstance()> Make;
+  bool Default = true; ///< run unless --methods names others
+};
+
+MethodInstance MakeShadowMap(int resolution, bool squareBake)
+{
+  // penumbraShadowMap.h: as VTK's TestShadowMapPass, baked at aspect 1 unless squareBake is
+  // false (the `_vtkaspect` methods: VTK 9.1 as it is, shadows misplaced in non-square windows).
+  MethodInstance instance;
+  instance.Pass = penumbra::bench::MakeShadowMapPass(resolution, squareBake);
+  return instance;
+}
+
+MethodInstance MakeSoftShadow(int method, int samples)
+{
+  auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
+  pass->SetMethod(method);
+  pass->SetLightSamples(samples);
+  MethodInstance instance;
+  instance.Pass = pass;
+  vtkSoftShadowPass* raw = pass;
+  instance.Visibility = [raw]() { return raw->GetVisibilityImage(0); };
+  instance.ShadowTriangles = [raw]() {
+    return static_cast<long long>(raw->GetNumberOfShadowVolumeTriangles());
+  };
+  return instance;
+}
+
+std::vector<MethodSpec> AllMethods()
+{
+  std::vector<MethodSpec> methods;
+  methods.push_back({ "none", []() { return MethodInstance{}; } });
+  for (int resolution : { 1024, 4096 })
+  {
+    methods.push_back({ "shadowmap_" + std::to_string(resolution),
+      [resolution]() { return MakeShadowMap(resolution, true); } });
+  }
+  methods.push_back({ "hard_volumes",
+    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_HARD_VOLUMES, 1); } });
+  for (int samples : { 4, 16, 64, 256 })
+  {
+    methods.push_back({ "averaged_" + std::to_string(samples), [samples]() {
+                         return MakeSoftShadow(
+                           vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS, samples);
+                       } });
+  }
+  // VTK 9.1's shadow maps exactly as they come, aspect bug included (only with --methods).
+  for (int resolution : { 1024, 4096 })
+  {
+    methods.push_back({ "shadowmap_" + std::to_string(resolution) + "_vtkaspect",
+      [resolution]() { return MakeShadowMap(resolution, false); }, false });
+  }
+  // Penumbra wedges: the hard shadow of the light's centre plus one wedge per silhouette edge.
+  methods.push_back({ "wedges",
+    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES, 1); } });
+  return methods;
+}
+
+//--------------------------------------------------------------------------------------------------
+// Frame grabs and images.
+//--------------------------------------------------------------------------------------------------
+struct Frame
+{
+  std::vector<unsigned char> RGB; ///< 3 bytes a pixel, row 0 at the bottom
+  std::vector<float> Z;           ///< window depth
+};
+
+/// Reads the colour and depth of the frame just rendered (no re-render).
+Frame Grab(vtkRenderWindow* window, int width, int height)
+{
+  Frame frame;
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(0, 0, width - 1, height - 1, /*front*/ 0, rgb, /*right*/ 0);
+  frame.RGB.assign(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+  frame.Z.resize(static_cast<std::size_t>(width) * height);
+  window->GetZbufferData(0, 0, width - 1, height - 1, frame.Z.data());
+  return frame;
+}
+
+bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::fprintf(stderr, "error: could not write %s\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+
+bool WriteRGB(const std::vector<unsigned char>& rgb, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(rgb.begin(), rgb.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  return WritePNG(image, path);
+}
+
+bool WriteGrey(const float* values, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  unsigned char* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const float v = std::isfinite(values[p]) ? std::min(1.0f, std::max(0.0f, values[p])) : 0.0f;
+    bytes[p] = static_cast<unsigned char>(std::lround(255.0f * v));
+  }
+  return WritePNG(image, path);
+}
+
+//--------------------------------------------------------------------------------------------------
+// Timing.
+//--------------------------------------------------------------------------------------------------
+struct Timing
+{
+  int Frames = 0;
+  double Median = 0.0;
+  double Min = 0.0;
+};
+
+/// Up to WarmUp orbiting warm-up frames, none once WarmUpSeconds of warming up (counting the
+/// `warmSeconds` already spent rendering at the starting camera) have passed; then up to Frames
+/// timed ones, fewer once MaxSeconds have passed (at least 1), the camera orbiting `step` degrees before each so that no frame repeats the previous
+/// one. Each sample is Render() plus glFinish (WaitForCompletion).
+Timing TimeFrames(
+  vtkRenderWindow* window, vtkRenderer* renderer, const Options& options, double warmSeconds)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const auto warmUpStart = Clock::now();
+  for (int i = 0; i < options.WarmUp; ++i)
+  {
+    if (warmSeconds + SecondsSince(warmUpStart) > options.WarmUpSeconds)
+    {
+      break;
+    }
+    camera->Azimuth(options.AzimuthStep);
+    renderer->ResetCameraClippingRange();
+    window->Render();
+  }
+  window->WaitForCompletion();
+  std::vector<double> ms;
+  const auto begin = Clock::now();
+  for (int i = 0; i < options.Frames; ++i)
+  {
+    if (i >= 1 && SecondsSince(begin) > options.MaxSeconds)
+    {
+      break;
+    }
+    camera->Azimuth(options.AzimuthStep);
+    renderer->ResetCameraClippingRange();
+    const auto start = Clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  Timing t;
+  const std::size_t n = ms.size();
+  t.Frames = static_cast<int>(n);
+  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+  t.Min = ms.front();
+  return t;
+}
+
+//--------------------------------------------------------------------------------------------------
+// Results.
+//--------------------------------------------------------------------------------------------------
+struct Row
+{
+  std::string Scene, Method;
+  int Width = 0, Height = 0;
+  long long Triangles = 0;
+  Timing Time;
+  ErrorStats Error;          ///< the error results.csv reports
+  ErrorStats Luminance;      ///< every method on luminance (results_luminance.csv)
+  bool VisibilityMetric = false;
+  long long ShadowTriangles = -1;
+};
+
+const char* CsvHeader =
+  "scene,method,width,height,triangles,frames,ms_median,ms_min,mae,rmse,p99,max,"
+  "frac_gt_0.1,frac_gt_0.5";
+
+void WriteCsvRow(std::FILE* file, const Row& row, const ErrorStats& e)
+{
+  std::fprintf(file, "%s,%s,%d,%d,%lld,%d,%.3f,%.3f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
+    row.Scene.c_str(), row.Method.c_str(), row.Width, row.Height, row.Triangles, row.Time.Frames,
+    row.Time.Median, row.Time.Min, e.MAE, e.RMSE, e.P99, e.Max, e.FracGt01, e.FracGt05);
+  std::fflush(file);
+}
+
+void PrintTableHeader()
+{
+  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s\n", "method",
+    "frames", "median ms", "min ms", "x none", "MAE", "RMSE", "p99", "max", ">0.1", ">0.5",
+    "err", "pixels", "sv tris");
+}
+
+void PrintTableRow(const Row& row, double noneMedian)
+{
+  const ErrorStats& e = row.Error;
+  char ratio[32] = "-";
+  if (noneMedian > 0.0)
+  {
+    std::snprintf(ratio, sizeof(ratio), "%.2f", row.Time.Median / noneMedian);
+  }
+  char shadowTriangles[32] = "-";
+  if (row.ShadowTriangles >= 0)
+  {
+    std::snprintf(shadowTriangles, sizeof(shadowTriangles), "%lld", row.ShadowTriangles);
+  }
+  std::printf("  %-15s %6d %10.2f %10.2f %8s %8.4f %8.4f %7.3f %7.3f %6.2f%% %6.2f%%  %-4s %8zu "
+              "%10s\n",
+    row.Method.c_str(), row.Time.Frames, row.Time.Median, row.Time.Min, ratio, e.MAE, e.RMSE,
+    e.P99, e.Max, 100.0 * e.FracGt01, 100.0 * e.FracGt05, row.VisibilityMetric ? "vis" : "lum",
+    e.Pixels, shadowTriangles);
+  std::fflush(stdout);
+}
+
+bool WriteReadme(const std::string& path, const Options& options)
+{
+  std::ofstream out(path);
+  out << "# PenumbraBench results\n\n"
+         "Written by PenumbraBench (Benchmarks/PenumbraBench.cxx); see Benchmarks/README.md.\n\n"
+         "Run: "
+      << options.Width << "x" << options.Height
+      << ". Per method: two renders at the starting camera (the error is measured on the\n"
+         "second; only one when the first takes over 2 s), then up to "
+      << options.WarmUp << " orbiting warm-up frames (none once\n"
+      << options.WarmUpSeconds
+      << " s have been spent warming up, those renders included), then up to " << options.Frames
+      << " timed\nframes, fewer once they pass " << options.MaxSeconds
+      << " s (at least 1; `frames` says how many). The camera orbits "
+      << options.AzimuthStep << " degrees before each\nwarm-up and timed frame. Truth: "
+      << options.TruthSamples
+      << " shadow rays per pixel.\n\n"
+         "## results.csv\n\n"
+         "- `scene`: scene name and light radius, `<scene>_r<radius>` (world units; the scenes\n"
+         "  are ~10 units across and the light, a spot of cone 55 degrees, ~12.5 units away).\n"
+         "- `method`: `none` (VTK without shadows), `shadowmap_1024|4096` (vtkShadowMapPass),\n"
+         "  `hard_volumes`, `averaged_N` (N light samples), `wedges` (vtkSoftShadowPass).\n"
+         "- `triangles`: triangles of the scene. `frames`: timed frames.\n"
+         "- `ms_median`, `ms_min`: Render() + glFinish per frame, in ms.\n"
+         "- `mae, rmse, p99, max`: mean, root mean square, 99th percentile and largest absolute\n"
+         "  error; `frac_gt_0.1`, `frac_gt_0.5`: fraction of the compared pixels whose error\n"
+         "  exceeds 0.1 and 0.5. All at the orbit's starting camera.\n\n"
+         "Which error each row reports:\n\n"
+         "- **visibility** (`hard_volumes`, `averaged_*`, `wedges`): |pass visibility - ray-traced\n"
+         "  visibility| of the light, over pixels where either is below 1 - 1e-3.\n"
+         "- **luminance** (`none`, `shadowmap_*`: no visibility image): |lum(image) -\n"
+         "  lum(reference)|, reference = A + v (D - A) per pixel (A: the scene with the light's\n"
+         "  intensity 0, D: lit without shadows, v: the ray-traced visibility), Rec. 709\n"
+         "  luminance of RGB in [0, 1], over pixels where v < 1 - 1e-3 or the image is darker\n"
+         "  than D by more than 1/255. `none`'s image is D.\n\n"
+         "Both kinds only count pixels where the rasterized and the ray-traced surface agree\n"
+         "(|truth depth - z-buffer| < 1e-3, not background). Luminance errors are scaled by the\n"
+         "light's contribution (D - A) and are therefore smaller than the visibility errors of the\n"
+         "same shadow: compare luminance rows with luminance rows, or use\n"
+         "results_luminance.csv, where every method (also the pass's) is scored on luminance.\n\n"
+         "Shadow maps: VTK 9.1's vtkShadowMapBakerPass + vtkShadowMapPass (exponential shadow\n"
+         "maps) set up as in VTK's TestShadowMapPass, with one fix: the map is baked with the\n"
+         "renderer's viewport shrunk to a square, because VTK 9.1 bakes a spot light's map at the\n"
+         "window's aspect ratio but looks it up at aspect 1, which misplaces every shadow in a\n"
+         "non-square window (`--methods shadowmap_1024_vtkaspect` shows it unfixed). VTK re-bakes\n"
+         "the maps only when a light or a prop changes, so under the orbiting camera of a static\n"
+         "scene the shadowmap rows time the lookup only; the pass, too, reuses its silhouettes\n"
+         "but draws its volumes every frame.\n\n"
+         "## truth.csv\n\n"
+         "Per scene: shadow rays per pixel, trace time, and the difference between two truths\n"
+         "traced with different seeds over their shadowed pixels (MAE, p99, max). The truth's own\n"
+         "error is about that MAE / sqrt(2).\n";
+  return static_cast<bool>(out);
+}
+
+std::string RadiusLabel(double radius)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", radius);
+  return text;
+}
+
+std::string BenchDirectory(const char* argv0)
+{
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::canonical(argv0, error);
+  return error ? std::string(".") : exe.parent_path().string();
+}
+
+bool HasPlotPython()
+{
+  return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
+}
+
+std::string Quote(const std::string& text)
+{
+  std::string quoted = "'";
+  for (char c : text)
+  {
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return quoted + "'";
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseArguments(argc, argv, options))
+  {
+    Usage(argv[0]);
+    return 2;
+  }
+  const auto programStart = Clock::now();
+
+  std::vector<MethodSpec> methods;
+  {
+    const std::vector<MethodSpec> all = AllMethods();
+    if (options.Methods.empty())
+    {
+      for (const MethodSpec& m : all)
+      {
+        // --quick leaves out averaged_256: at 320x240 its 256 passes a frame cost as much as
+        // the whole rest of the smoke test.
+        if (m.Default && !(options.Quick && m.Name == "averaged_256"))
+        {
+          methods.push_back(m);
+        }
+      }
+    }
+    for (const std::string& name : options.Methods)
+    {
+      auto it = std::find_if(
+        all.begin(), all.end(), [&](const MethodSpec& m) { return m.Name == name; });
+      if (it == all.end())
+      {
+        std::fprintf(stderr, "%s: unknown method %s\n", argv[0], name.c_str());
+        return 2;
+      }
+      methods.push_back(*it);
+    }
+  }
+  for (const std::string& name : options.Scenes)
+  {
+    if (name != "classic" && name != "isosurface" && name != "glyphs" && name != "large")
+    {
+      std::fprintf(stderr, "%s: unknown scene %s\n", argv[0], name.c_str());
+      return 2;
+    }
+  }
+
+  const std::string out = options.Output;
+  {
+    std::error_code error;
+    std::filesystem::create_directories(out, error);
+    if (error)
+    {
+      std::fprintf(stderr, "error: cannot create %s: %s\n", out.c_str(), error.message().c_str());
+      return EXIT_FAILURE;
+    }
+  }
+  std::FILE* csv = std::fopen((out + "/results.csv").c_str(), "w");
+  std::FILE* lumCsv = std::fopen((out + "/results_luminance.csv").c_str(), "w");
+  std::FILE* truthCsv = std::fopen((out + "/truth.csv").c_str(), "w");
+  if (!csv || !lumCsv || !truthCsv)
+  {
+    std::fprintf(stderr, "error: cannot write the CSV files in %s\n", out.c_str());
+    return EXIT_FAILURE;
+  }
+  std::fprintf(csv, "%s\n", CsvHeader);
+  std::fprintf(lumCsv, "%s\n", CsvHeader);
+  std::fprintf(truthCsv,
+    "scene,width,height,samples,trace_ms,noise_pixels,noise_mae,noise_p99,noise_max\n");
+  if (!WriteReadme(out + "/README.md", options))
+  {
+    std::fprintf(stderr, "error: cannot write %s/README.md\n", out.c_str());
+    return EXIT_FAILURE;
+  }
+
+  std::printf("PenumbraBench: %dx%d, up to %d frames (+%d warm-up, %.0f s cap) per method, "
+              "truth %d spp, %zu methods, %zu scenes x %zu radii -> %s\n",
+    options.Width, options.Height, options.Frames, options.WarmUp, options.MaxSeconds,
+    options.TruthSamples, methods.size(), options.Scenes.size(), options.Radii.size(),
+    out.c_str());
+
+  bool ok = true;
+  std::vector<std::string> oddities;
+  const int width = options.Width, height = options.Height;
+  const std::size_t pixels = static_cast<std::size_t>(width) * height;
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AutomaticLightCreationOff();
+  renderer->SetBackground(0.12, 0.14, 0.18);
+  renderer->SetBackground2(0.35, 0.40, 0.48);
+  renderer->GradientBackgroundOn();
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+
+  for (const std::string& sceneName : options.Scenes)
+  {
+    Scene scene;
+    const auto buildStart = Clock::now();
+    MakeScene(sceneName, scene);
+    std::printf("\nscene %s: %lld triangles (built in %.1f s)\n", sceneName.c_str(),
+      static_cast<long long>(scene.Triangles), SecondsSince(buildStart));
+
+    for (double radius : options.Radii)
+    {
+      const std::string label = sceneName + "_r" + RadiusLabel(radius);
+      const bool images = options.Images == "all" ||
+        (options.Images == "classic" && sceneName == "classic");
+
+      // One window and renderer for the whole run (one X connection); the scene's actors and a
+      // new key light per scene and radius.
+      renderer->RemoveAllViewProps();
+      renderer->RemoveAllLights();
+      for (const auto& actor : scene.Actors)
+      {
+        renderer->AddActor(actor);
+      }
+      // The key light: a spot (cone < 90 degrees, so that vtkShadowMapBakerPass accepts it) aimed
+      // at the scene, the same for all methods; light index 0.
+      vtkNew<vtkLight> key;
+      key->SetLightTypeToSceneLight();
+      key->SetPositional(true);
+      key->SetPosition(4.0, -6.0, 10.0);
+      key->SetFocalPoint(0.0, 0.0, 0.0);
+      key->SetConeAngle(55.0);
+      key->SetExponent(1.0);
+      key->SetIntensity(1.0);
+      vtkSoftShadowPass::SetLightRadius(key, radius);
+      renderer->AddLight(key);
+
+      SetStartCamera(renderer);
+      vtkNew<vtkCamera> start;
+      start->DeepCopy(renderer->GetActiveCamera());
+      // vtkCamera::DeepCopy does not call Modified() (VTK 9.1): without it the mappers keep the
+      // lighting uniforms (and, unless the renderer changed, the view matrices) of the last view.
+      auto resetCamera = [&]() {
+        renderer->GetActiveCamera()->DeepCopy(start);
+        renderer->GetActiveCamera()->Modified();
+        renderer->ResetCameraClippingRange();
+      };
+
+      // D (lit, no shadows) and A (the light at intensity 0: ambient only).
+      window->Render();
+      window->Render();
+      const Frame lit = Grab(window, width, height);
+      key->SetIntensity(0.0);
+      window->Render();
+      const Frame ambient = Grab(window, width, height);
+      key->SetIntensity(1.0);
+      window->Render();
+
+      // Ground truth at the starting camera.
+      vtkNew<vtkRayTracedVisibility> tracer;
+      tracer->SetRenderer(renderer);
+      tracer->SetSamplesPerLight(options.TruthSamples);
+      tracer->SetSeed(1);
+      const auto traceStart = Clock::now();
+      if (!tracer->Update() || !tracer->GetVisibilityImage(0) || !tracer->GetDepthImage())
+      {
+        std::fprintf(stderr, "error: %s: the ray tracer gave no visibility\n", label.c_str());
+        ok = false;
+        continue;
+      }
+      const double traceMs = 1000.0 * SecondsSince(traceStart);
+      const float* truthPointer =
+        static_cast<const float*>(tracer->GetVisibilityImage(0)->GetScalarPointer());
+      const std::vector<float> truth(truthPointer, truthPointer + pixels);
+      const float* depthPointer =
+        static_cast<const float*>(tracer->GetDepthImage()->GetScalarPointer());
+      const std::vector<float> truthDepth(depthPointer, depthPointer + pixels);
+      ErrorStats noise;
+      if (options.NoiseCheck && radius > 0.0)
+      {
+        tracer->SetSeed(2);
+        tracer->Update();
+        const float* second =
+          static_cast<const float*>(tracer->GetVisibilityImage(0)->GetScalarPointer());
+        noise =
+          penumbra::metrics::CompareTruths(truth.data(), second, truthDepth.data(), pixels);
+      }
+      std::fprintf(truthCsv, "%s,%d,%d,%d,%.1f,%zu,%.6f,%.6f,%.6f\n", label.c_str(), width, height,
+        options.TruthSamples, traceMs, noise.Pixels, noise.MAE, noise.P99, noise.Max);
+      std::fflush(truthCsv);
+
+      std::printf("\n%s  (%dx%d, %lld triangles, light radius %g; truth %d spp in %.1f s",
+        label.c_str(), width, height, static_cast<long long>(scene.Triangles), radius,
+        options.TruthSamples, traceMs / 1000.0);
+      if (noise.Pixels > 0)
+      {
+        std::printf(", truth seed-to-seed MAE %.4f p99 %.3f", noise.MAE, noise.P99);
+      }
+      std::printf(")\n");
+      PrintTableHeader();
+
+      if (images)
+      {
+        WriteGrey(truth.data(), width, height, out + "/" + label + "_truth_visibility.png");
+        std::vector<unsigned char> reference(lit.RGB.size());
+        for (std::size_t p = 0; p < pixels; ++p)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            const double a = ambient.RGB[3 * p + k], d = lit.RGB[3 * p + k];
+            const double v = truthDepth[p] < 1.0f ? truth[p] : 1.0;
+            reference[3 * p + k] = static_cast<unsigned char>(std::lround(a + v * (d - a)));
+          }
+        }
+        WriteRGB(reference, width, height, out + "/" + label + "_reference.png");
+      }
+
+      double noneMedian = 0.0;
+      std::vector<float> hardVisibility;
+      std::map<std::string, std::vector<float>> averagedVisibility;
+      for (const MethodSpec& spec : methods)
+      {
+        MethodInstance method = spec.Make();
+        renderer->SetPass(method.Pass);
+        resetCamera();
+        // The error is measured on the second frame at the starting camera (the first builds
+        // shaders, silhouettes, shadow maps), or on the first where that took more than 2 s.
+        const auto firstStart = Clock::now();
+        window->Render();
+        window->WaitForCompletion();
+        if (SecondsSince(firstStart) < 2.0)
+        {
+          window->Render();
+          window->WaitForCompletion();
+        }
+        const double startRenderSeconds = SecondsSince(firstStart);
+
+        Row row;
+        row.Scene = label;
+        row.Method = spec.Name;
+        row.Width = width;
+        row.Height = height;
+        row.Triangles = scene.Triangles;
+        const Frame frame = Grab(window, width, height);
+        row.Luminance = penumbra::metrics::CompareLuminance(frame.RGB.data(), lit.RGB.data(),
+          ambient.RGB.data(), 3, truth.data(), truthDepth.data(), frame.Z.data(), pixels);
+        row.Error = row.Luminance;
+        if (method.Visibility)
+        {
+          vtkImageData* image = method.Visibility();
+          int dims[3] = { 0, 0, 0 };
+          if (image)
+          {
+            image->GetDimensions(dims);
+          }
+          if (!image || dims[0] != width || dims[1] != height)
+          {
+            std::fprintf(stderr, "error: %s %s: no visibility image of the window's size\n",
+              label.c_str(), spec.Name.c_str());
+            ok = false;
+          }
+          else
+          {
+            const float* v = static_cast<const float*>(image->GetScalarPointer());
+            std::size_t bad = 0;
+            for (std::size_t p = 0; p < pixels; ++p)
+            {
+              bad += !(v[p] >= 0.0f && v[p] <= 1.0f); // NaN too
+            }
+            if (bad)
+            {
+              oddities.push_back(label + " " + spec.Name + ": " + std::to_string(bad) +
+                " visibility pixels not finite or outside [0, 1]");
+            }
+            row.Error = penumbra::metrics::CompareVisibility(
+              v, truth.data(), truthDepth.data(), frame.Z.data(), pixels);
+            row.VisibilityMetric = true;
+            if (spec.Name == "hard_volumes")
+            {
+              hardVisibility.assign(v, v + pixels);
+            }
+            else if (spec.Name.rfind("averaged_", 0) == 0)
+            {
+              averagedVisibility[spec.Name].assign(v, v + pixels);
+            }
+            if (images)
+            {
+              WriteGrey(v, width, height, out + "/" + label + "_" + spec.Name + "_visibility.png");
+            }
+          }
+        }
+        if (method.ShadowTriangles)
+        {
+          row.ShadowTriangles = method.ShadowTriangles();
+        }
+        if (images)
+        {
+          ok = WriteRGB(frame.RGB, width, height, out + "/" + label + "_" + spec.Name + ".png") &&
+            ok;
+        }
+
+        row.Time = TimeFrames(window, renderer, options, startRenderSeconds);
+        if (spec.Name == "none")
+        {
+          noneMedian = row.Time.Median;
+        }
+        PrintTableRow(row, noneMedian);
+        WriteCsvRow(csv, row, row.Error);
+        WriteCsvRow(lumCsv, row, row.Luminance);
+
+        renderer->SetPass(nullptr);
+        if (method.Pass)
+        {
+          method.Pass->ReleaseGraphicsResources(window);
+        }
+      }
+
+      // Is the averaged method live? At a light of radius > 0 it must differ from hard volumes.
+      if (radius > 0.0 && !hardVisibility.empty())
+      {
+        for (const auto& [name, v] : averagedVisibility)
+        {
+          double maxDiff = 0.0;
+          for (std::size_t p = 0; p < pixels; ++p)
+          {
+            maxDiff = std::max(maxDiff, static_cast<double>(std::abs(v[p] - hardVisibility[p])));
+          }
+          if (maxDiff < 1e-6)
+          {
+            oddities.push_back(label + " " + name +
+              ": visibility identical to hard_volumes although the light has a radius");
+          }
+        }
+      }
+      renderer->RemoveAllViewProps();
+      renderer->RemoveAllLights();
+    }
+    for (const auto& actor : scene.Actors)
+    {
+      actor->ReleaseGraphicsResources(window);
+    }
+  }
+  std::fclose(csv);
+  std::fclose(lumCsv);
+  std::fclose(truthCsv);
+
+  if (!oddities.empty())
+  {
+    std::printf("\nnoticed:\n");
+    for (const std::string& line : oddities)
+    {
+      std::printf("  %s\n", line.c_str());
+    }
+  }
+  std::printf("\nwrote %s/results.csv, results_luminance.csv, truth.csv, README.md\n", out.c_str());
+
+  std::fflush(stdout);
+  if (options.Plot)
+  {
+    std::string script = PENUMBRA_BENCH_PLOT_SCRIPT;
+    if (!std::filesystem::exists(script))
+    {
+      script = BenchDirectory(argv[0]) + "/plot_results.py";
+    }
+    if (!HasPlotPython())
+    {
+      std::printf("no matplotlib for /usr/bin/python3: apt-get install python3-matplotlib, then\n"
+                  "  /usr/bin/python3 %s %s\n",
+        script.c_str(), out.c_str());
+    }
+    else
+    {
+      const std::string command = "/usr/bin/python3 " + Quote(script) + " " + Quote(out);
+      if (std::system(command.c_str()) != 0)
+      {
+        std::fprintf(stderr, "error: %s failed\n", command.c_str());
+        ok = false;
+      }
+    }
+  }
+  std::printf("total %.1f s\n", SecondsSince(programStart));
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
