@@ -74,7 +74,8 @@ public:
   enum Method
   {
     /// The cheapest method that is right for the light: hard volumes for a light of radius 0,
-    /// penumbra wedges for an area light.
+    /// penumbra wedges for an area light, or averaged hard shadows (LightSamples) when layers
+    /// of a caster share an outline seen from the light (wedges would count them twice).
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
@@ -103,7 +104,8 @@ public:
 
   ///@{
   /**
-   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS, default 16.
+   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS (and METHOD_AUTOMATIC's
+   * fallback), default 16.
    */
   vtkSetClampMacro(LightSamples, int, 1, 4096);
   vtkGetMacro(LightSamples, int);
