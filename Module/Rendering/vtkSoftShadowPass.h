@@ -1,6 +1,7 @@
 /**
  * @class   vtkSoftShadowPass
- * @brief   Render pass that shadows a VTK scene with robust stencil shadow volumes.
+ * @brief   Render pass that gives a VTK scene hard and soft shadows (shadow volumes, penumbra
+ *          wedges, averaged hard shadows).
  *
  * Drop it into any renderer (`renderer->SetPass(pass)`) and the scene renders as VTK would
  * (opaque, translucent, volumes, overlays) with the opaque geometry shadowed by every
@@ -16,6 +17,10 @@
  *    depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
  *    otherwise) into the stencil and resolves it into that light's layer of the light-intensity
  *    (LI) buffer, a float texture array (1 lit, 0 shadowed);
+ *    For a light with a radius (SetLightRadius) the layer becomes soft: penumbra wedges add
+ *    each silhouette edge's exact share of the light at every pixel (METHOD_PENUMBRA_WEDGES), or
+ *    the hard shadows of LightSamples points on the light are averaged
+ *    (METHOD_AVERAGED_HARD_SHADOWS); METHOD_AUTOMATIC picks per light;
  * 4. renders the scene through its delegate (by default VTK's own render steps) with the
  *    mappers' fragment shaders edited so that each light's diffuse and specular terms are scaled
  *    by 1 - ShadowAttenuation * (1 - LI), ambient untouched (Phong and PBR).
