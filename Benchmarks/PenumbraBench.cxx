@@ -303,18 +303,6 @@ bool ParseArguments(int argc, char* argv[], Options& options)
 // casters within ~8 units of it and up to ~4 units high, one spot light ~12.5 units from the
 // centre (cone 55 degrees, covering the whole ground), one camera orbiting around (0, 0, 1).
 //--------------------------------------------------------------------------------------------------
-vtkIdType CountTriangles(vtkPolyData* data)
-{
-  vtkIdType triangles = 0;
-  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
-  {
-    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-    {
-      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
-    }
-  }
-  return triangles;
-}
 
 struct Scene
 {
@@ -346,7 +334,7 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, do
 void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
 {
   scene.Triangles +=
-    CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
+    penumbra::metrics::CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
   scene.Actors.push_back(actor);
 }
 

@@ -142,20 +142,6 @@ bool ParseArguments(int argc, char* argv[], Options& options)
   return true;
 }
 
-/// Triangles a polydata draws (polygons and strips fanned into triangles).
-vtkIdType CountTriangles(vtkPolyData* data)
-{
-  vtkIdType triangles = 0;
-  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
-  {
-    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-    {
-      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
-    }
-  }
-  return triangles;
-}
-
 struct Timing
 {
   int Frames = 0;
@@ -344,6 +330,7 @@ int main(int argc, char* argv[])
     actor->GetProperty()->SetAmbient(0.15);
     actor->GetProperty()->SetDiffuse(0.85);
   }
+  using penumbra::metrics::CountTriangles;
   const vtkIdType triangles = CountTriangles(contour->GetOutput()) +
     CountTriangles(plane->GetOutput()) + CountTriangles(glyph->GetOutput());
 
