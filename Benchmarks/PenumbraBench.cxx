@@ -20,6 +20,7 @@
 //
 // Exits 0 on success, 1 when a render, the truth or a file failed, 2 on a usage error.
 
+#include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
 #include "penumbraShadowMap.h"
 
@@ -39,7 +40,6 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricTorus.h"
 #include "vtkPlaneSource.h"
@@ -53,7 +53,6 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -80,6 +79,14 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 using penumbra::metrics::ErrorStats;
+using penumbra::bench::CountTriangles;
+using penumbra::bench::Frame;
+using penumbra::bench::GrabFrame;
+using penumbra::bench::Summarize;
+using penumbra::bench::Timing;
+using penumbra::bench::WriteGrey;
+using penumbra::bench::WritePNG;
+using penumbra::bench::WriteRGB;
 
 double SecondsSince(Clock::time_point start)
 {
@@ -334,7 +341,7 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, do
 void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
 {
   scene.Triangles +=
-    penumbra::metrics::CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
+    CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
   scene.Actors.push_back(actor);
 }
 
@@ -579,72 +586,9 @@ std::vector<MethodSpec> AllMethods()
 //--------------------------------------------------------------------------------------------------
 // Frame grabs and images.
 //--------------------------------------------------------------------------------------------------
-struct Frame
-{
-  std::vector<unsigned char> RGB; ///< 3 bytes a pixel, row 0 at the bottom
-  std::vector<float> Z;           ///< window depth
-};
-
-/// Reads the colour and depth of the frame just rendered (no re-render).
-Frame Grab(vtkRenderWindow* window, int width, int height)
-{
-  Frame frame;
-  vtkNew<vtkUnsignedCharArray> rgb;
-  window->GetPixelData(0, 0, width - 1, height - 1, /*front*/ 0, rgb, /*right*/ 0);
-  frame.RGB.assign(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
-  frame.Z.resize(static_cast<std::size_t>(width) * height);
-  window->GetZbufferData(0, 0, width - 1, height - 1, frame.Z.data());
-  return frame;
-}
-
-bool WritePNG(vtkImageData* image, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(image);
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    std::fprintf(stderr, "error: could not write %s\n", path.c_str());
-    return false;
-  }
-  return true;
-}
-
-bool WriteRGB(const std::vector<unsigned char>& rgb, int width, int height, const std::string& path)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(rgb.begin(), rgb.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
-  return WritePNG(image, path);
-}
-
-bool WriteGrey(const float* values, int width, int height, const std::string& path)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  unsigned char* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
-  const std::size_t n = static_cast<std::size_t>(width) * height;
-  for (std::size_t p = 0; p < n; ++p)
-  {
-    const float v = std::isfinite(values[p]) ? std::min(1.0f, std::max(0.0f, values[p])) : 0.0f;
-    bytes[p] = static_cast<unsigned char>(std::lround(255.0f * v));
-  }
-  return WritePNG(image, path);
-}
-
 //--------------------------------------------------------------------------------------------------
 // Timing.
 //--------------------------------------------------------------------------------------------------
-struct Timing
-{
-  int Frames = 0;
-  double Median = 0.0;
-  double Min = 0.0;
-};
-
 /// Up to WarmUp orbiting warm-up frames, none once WarmUpSeconds of warming up (counting the
 /// `warmSeconds` already spent rendering at the starting camera) have passed; then up to Frames
 /// timed ones, fewer once MaxSeconds have passed (at least 1), the camera orbiting `step` degrees before each so that no frame repeats the previous
@@ -680,13 +624,7 @@ Timing TimeFrames(
     window->WaitForCompletion();
     ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
   }
-  std::sort(ms.begin(), ms.end());
-  Timing t;
-  const std::size_t n = ms.size();
-  t.Frames = static_cast<int>(n);
-  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-  t.Min = ms.front();
-  return t;
+  return Summarize(ms);
 }
 
 //--------------------------------------------------------------------------------------------------
@@ -975,10 +913,10 @@ int main(int argc, char* argv[])
       // D (lit, no shadows) and A (the light at intensity 0: ambient only).
       window->Render();
       window->Render();
-      const Frame lit = Grab(window, width, height);
+      const Frame lit = GrabFrame(window, width, height);
       key->SetIntensity(0.0);
       window->Render();
-      const Frame ambient = Grab(window, width, height);
+      const Frame ambient = GrabFrame(window, width, height);
       key->SetIntensity(1.0);
       window->Render();
 
@@ -1067,7 +1005,7 @@ int main(int argc, char* argv[])
         row.Width = width;
         row.Height = height;
         row.Triangles = scene.Triangles;
-        const Frame frame = Grab(window, width, height);
+        const Frame frame = GrabFrame(window, width, height);
         row.Luminance = penumbra::metrics::CompareLuminance(frame.RGB.data(), lit.RGB.data(),
           ambient.RGB.data(), 3, truth.data(), truthDepth.data(), frame.Z.data(), pixels);
         row.Error = row.Luminance;

@@ -17,9 +17,6 @@
 #ifndef penumbraMetrics_h
 #define penumbraMetrics_h
 
-#include "vtkCellArray.h"
-#include "vtkPolyData.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -199,20 +196,6 @@ inline ErrorStats CompareTruths(const float* truthA, const float* truthB, const 
     errors.push_back(std::abs(truthA[p] - truthB[p]));
   }
   return Summarize(errors);
-}
-
-/// Triangles a polydata draws (polygons and strips fanned into triangles).
-inline vtkIdType CountTriangles(vtkPolyData* data)
-{
-  vtkIdType triangles = 0;
-  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
-  {
-    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-    {
-      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
-    }
-  }
-  return triangles;
 }
 
 } // namespace metrics

@@ -18,6 +18,7 @@
 #include "vtkSoftShadowPass.h"
 
 // Shared with PenumbraBench (header-only): error metrics and VTK's shadow maps.
+#include "../Benchmarks/penumbraBenchSupport.h"
 #include "../Benchmarks/penumbraMetrics.h"
 #include "../Benchmarks/penumbraShadowMap.h"
 
@@ -29,11 +30,9 @@
 #include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
 #include "vtkImageData.h"
-#include "vtkImageShiftScale.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -44,7 +43,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -56,6 +54,14 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+using penumbra::bench::CountTriangles;
+using penumbra::bench::Frame;
+using penumbra::bench::GrabFrame;
+using penumbra::bench::Summarize;
+using penumbra::bench::Timing;
+using penumbra::bench::WriteGrey;
+using penumbra::bench::WritePNG;
 
 namespace
 {
@@ -142,13 +148,6 @@ bool ParseArguments(int argc, char* argv[], Options& options)
   return true;
 }
 
-struct Timing
-{
-  int Frames = 0;
-  double Median = 0.0;
-  double Min = 0.0;
-};
-
 /// Renders `warmUp` frames, then `frames` timed ones, the camera orbiting one degree before each
 /// so that no frame is a repeat. Each sample is Render() plus glFinish (WaitForCompletion), so
 /// that work the driver queued is charged to its frame. Stops early once 3 frames are timed and
@@ -179,27 +178,7 @@ Timing TimeFrames(
     ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
     total += ms.back();
   }
-  std::sort(ms.begin(), ms.end());
-  Timing t;
-  const std::size_t n = ms.size();
-  t.Frames = static_cast<int>(n);
-  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-  t.Min = ms.front();
-  return t;
-}
-
-bool WritePNG(vtkAlgorithmOutput* image, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(image);
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    std::fprintf(stderr, "error: could not write %s\n", path.c_str());
-    return false;
-  }
-  return true;
+  return Summarize(ms);
 }
 
 bool WriteScreenshot(vtkRenderWindow* window, const std::string& path)
@@ -209,31 +188,7 @@ bool WriteScreenshot(vtkRenderWindow* window, const std::string& path)
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
-  return WritePNG(grab->GetOutputPort(), path);
-}
-
-/// The RGB bytes and window depths of the frame just rendered (no re-render).
-void GrabFrame(vtkRenderWindow* window, int width, int height, std::vector<unsigned char>& rgb,
-  std::vector<float>& z)
-{
-  vtkNew<vtkUnsignedCharArray> pixels;
-  window->GetPixelData(0, 0, width - 1, height - 1, /*front*/ 0, pixels, /*right*/ 0);
-  rgb.assign(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
-  z.resize(static_cast<std::size_t>(width) * height);
-  window->GetZbufferData(0, 0, width - 1, height - 1, z.data());
-}
-
-/// Writes a visibility image (floats in [0, 1]) as an 8-bit grey PNG.
-bool WriteVisibility(vtkImageData* visibility, const std::string& path)
-{
-  vtkNew<vtkImageShiftScale> toBytes;
-  toBytes->SetInputData(visibility);
-  toBytes->SetShift(0.0);
-  toBytes->SetScale(255.0);
-  toBytes->SetOutputScalarTypeToUnsignedChar();
-  toBytes->ClampOverflowOn();
-  toBytes->Update();
-  return WritePNG(toBytes->GetOutputPort(), path);
+  return WritePNG(grab->GetOutput(), path);
 }
 
 } // namespace
@@ -330,7 +285,6 @@ int main(int argc, char* argv[])
     actor->GetProperty()->SetAmbient(0.15);
     actor->GetProperty()->SetDiffuse(0.85);
   }
-  using penumbra::metrics::CountTriangles;
   const vtkIdType triangles = CountTriangles(contour->GetOutput()) +
     CountTriangles(plane->GetOutput()) + CountTriangles(glyph->GetOutput());
 
@@ -487,8 +441,10 @@ int main(int argc, char* argv[])
       static_cast<float*>(passVisibility->GetScalarPointer()),
       static_cast<float*>(truthVisibility->GetScalarPointer()),
       static_cast<float*>(truthDepth->GetScalarPointer()), zbuffer->GetPointer(0), pixels);
-    if (!WriteVisibility(passVisibility, out + "/visibility_pass.png") ||
-      !WriteVisibility(truthVisibility, out + "/visibility_truth.png"))
+    if (!WriteGrey(static_cast<float*>(passVisibility->GetScalarPointer()), width, height,
+          out + "/visibility_pass.png") ||
+      !WriteGrey(static_cast<float*>(truthVisibility->GetScalarPointer()), width, height,
+        out + "/visibility_truth.png"))
     {
       ok = false;
     }
@@ -535,14 +491,12 @@ int main(int argc, char* argv[])
     const float* truthValues = static_cast<float*>(truthVisibility->GetScalarPointer());
     const float* truthZ = static_cast<float*>(truthDepth->GetScalarPointer());
 
-    std::vector<unsigned char> lit, ambient, image;
-    std::vector<float> litZ, ambientZ, imageZ;
     renderer->SetPass(nullptr);
     window->Render();
-    GrabFrame(window, width, height, lit, litZ);
+    const Frame lit = GrabFrame(window, width, height);
     key->SetIntensity(0.0);
     window->Render();
-    GrabFrame(window, width, height, ambient, ambientZ);
+    const Frame ambient = GrabFrame(window, width, height);
     key->SetIntensity(1.0);
 
     struct ShortRow
@@ -578,7 +532,7 @@ int main(int argc, char* argv[])
       camera->Modified();
       window->Render();
       window->Render();
-      GrabFrame(window, width, height, image, imageZ);
+      const Frame image = GrabFrame(window, width, height);
       penumbra::metrics::ErrorStats error;
       bool onVisibility = false;
       if (auto* soft = vtkSoftShadowPass::SafeDownCast(pass))
@@ -588,7 +542,7 @@ int main(int argc, char* argv[])
         {
           error = penumbra::metrics::CompareVisibility(
             static_cast<float*>(visibility->GetScalarPointer()), truthValues, truthZ,
-            imageZ.data(), pixels);
+            image.Z.data(), pixels);
           onVisibility = true;
         }
         else
@@ -599,8 +553,8 @@ int main(int argc, char* argv[])
       }
       else
       {
-        error = penumbra::metrics::CompareLuminance(image.data(), lit.data(), ambient.data(), 3,
-          truthValues, truthZ, imageZ.data(), pixels);
+        error = penumbra::metrics::CompareLuminance(image.RGB.data(), lit.RGB.data(),
+          ambient.RGB.data(), 3, truthValues, truthZ, image.Z.data(), pixels);
       }
       Timing timing = plain; // `none` was timed above, over the same orbit
       if (pass)

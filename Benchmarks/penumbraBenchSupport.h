@@ -1,0 +1,119 @@
+// Header-only helpers shared by PenumbraBench and the demo (Examples/PenumbraDemo.cxx): triangle
+// counts, frame-time summaries, frame grabs and PNG output.
+#ifndef penumbraBenchSupport_h
+#define penumbraBenchSupport_h
+
+#include "vtkCellArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace penumbra
+{
+namespace bench
+{
+
+/// Triangles a polydata draws (polygons and strips fanned into triangles).
+inline vtkIdType CountTriangles(vtkPolyData* data)
+{
+  vtkIdType triangles = 0;
+  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
+  {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
+    }
+  }
+  return triangles;
+}
+
+struct Timing
+{
+  int Frames = 0;
+  double Median = 0.0;
+  double Min = 0.0;
+};
+
+/// Median and minimum of per-frame times in ms (at least one).
+inline Timing Summarize(std::vector<double> ms)
+{
+  std::sort(ms.begin(), ms.end());
+  Timing t;
+  const std::size_t n = ms.size();
+  t.Frames = static_cast<int>(n);
+  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+  t.Min = ms.front();
+  return t;
+}
+
+struct Frame
+{
+  std::vector<unsigned char> RGB; ///< 3 bytes a pixel, row 0 at the bottom
+  std::vector<float> Z;           ///< window depth
+};
+
+/// Reads the colour and depth of the frame just rendered (no re-render).
+inline Frame GrabFrame(vtkRenderWindow* window, int width, int height)
+{
+  Frame frame;
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(0, 0, width - 1, height - 1, /*front*/ 0, rgb, /*right*/ 0);
+  frame.RGB.assign(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+  frame.Z.resize(static_cast<std::size_t>(width) * height);
+  window->GetZbufferData(0, 0, width - 1, height - 1, frame.Z.data());
+  return frame;
+}
+
+inline bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::fprintf(stderr, "error: could not write %s\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+
+inline bool WriteRGB(
+  const std::vector<unsigned char>& rgb, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(rgb.begin(), rgb.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  return WritePNG(image, path);
+}
+
+/// Writes values in [0, 1] (a visibility image) as an 8-bit grey PNG; NaN as black.
+inline bool WriteGrey(const float* values, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  unsigned char* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const float v = std::isfinite(values[p]) ? std::min(1.0f, std::max(0.0f, values[p])) : 0.0f;
+    bytes[p] = static_cast<unsigned char>(std::lround(255.0f * v));
+  }
+  return WritePNG(image, path);
+}
+
+} // namespace bench
+} // namespace penumbra
+
+#endif
