@@ -557,12 +557,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.LightIntensity->Activate();
   this->RenderDepth(s);
   internals.LightIntensity->Deactivate();
+  this->UpdateCasters(s);
+  // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
         [](const vtkInternals::ShadowLight& light) { return light.Wedges; }))
   {
     internals.CopyDepth(window->GetState());
   }
-  this->UpdateCasters(s);
   this->RenderLightIntensity(renderer, window);
   internals.LightIntensity->Activate();
   internals.ApplyShadows = true;
