@@ -3,7 +3,6 @@
 #include "vtkSoftShadowPassInternals.h"
 
 #include "vtkActor.h"
-#include "vtkCollectionIterator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -823,8 +822,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     {
       continue;
     }
-    bool rebuilt = false;
-    penumbra::MeshCache* mesh = internals.Caches.FindMesh(data, this, rebuilt);
+    penumbra::MeshCache* mesh = internals.Caches.FindMesh(data, this);
     if (mesh->Topology.Empty())
     {
       continue;

@@ -242,14 +242,14 @@ void WedgeCache::Bind(vtkShaderProgram* program)
   this->VAO->Bind();
 }
 
-MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner, bool& rebuilt)
+MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner)
 {
   std::unique_ptr<MeshCache>& mesh = this->Meshes[data];
   if (!mesh || mesh->Data != data)
   {
     mesh.reset(new MeshCache);
   }
-  rebuilt = mesh->Update(data, owner);
+  mesh->Update(data, owner);
   return mesh.get();
 }
 

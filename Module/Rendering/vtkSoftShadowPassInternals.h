@@ -131,7 +131,7 @@ struct ShadowCaches
   std::map<vtkActor*, std::unique_ptr<CasterCache>> Casters;
 
   /// Finds or creates the mesh of `data` and brings it up to date.
-  MeshCache* FindMesh(vtkDataObject* data, vtkObject* owner, bool& rebuilt);
+  MeshCache* FindMesh(vtkDataObject* data, vtkObject* owner);
   CasterCache* FindCaster(vtkActor* actor);
   /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
   void BeginFrame();
