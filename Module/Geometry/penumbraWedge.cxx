@@ -1,5 +1,7 @@
 #include "penumbraWedge.h"
 
+#include "penumbraLightSamples.h"
+
 #include <cmath>
 
 namespace penumbra
@@ -8,14 +10,6 @@ namespace
 {
 
 constexpr double Pi = 3.14159265358979323846;
-
-/// Two unit vectors with e1 x e2 = axis.
-void PlaneBasis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
-{
-  const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-  e1 = glm::normalize(glm::cross(helper, axis));
-  e2 = glm::cross(axis, e1);
-}
 
 /// Signed area of (triangle(origin, A, B) inside the disk) minus the disk sector between OA and
 /// OB: only the part of segment AB inside the disk contributes, so it vanishes outside it.

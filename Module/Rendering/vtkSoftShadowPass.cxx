@@ -35,6 +35,8 @@
 #include "vtkPointData.h"
 #include "vtk_glew.h"
 
+#include "penumbraLightSamples.h"
+
 #include "penumbraHorizonFS.h"
 #include "penumbraReceiverDec.h"
 #include "penumbraResolveFS.h"
@@ -144,54 +146,6 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
     }
   }
   return true;
-}
-
-/// Two unit vectors completing `axis` to an orthonormal basis.
-void Basis(const glm::dvec3& axis, glm::dvec3& u, glm::dvec3& v)
-{
-  const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-  u = glm::normalize(glm::cross(axis, helper));
-  v = glm::cross(axis, u);
-}
-
-/**
- * Samples spread evenly over an area light (Vogel's sunflower: equal-area rings, golden-angle
- * turns), so each carries weight 1/N. A positional light of radius r is sampled on the disk
- * through its centre facing `target` (the light as the casters see it); a directional light of
- * angular radius a on the cone of directions of half-angle a, uniformly in solid angle.
- */
-std::vector<glm::dvec4> SpreadLightSamples(
-  const glm::dvec4& light, double radius, int count, const glm::dvec3& target)
-{
-  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
-  std::vector<glm::dvec4> samples;
-  samples.reserve(count);
-  if (light.w != 0.0)
-  {
-    const glm::dvec3 centre(light);
-    glm::dvec3 axis = target - centre;
-    axis = glm::length(axis) > 0.0 ? glm::normalize(axis) : glm::dvec3(0, 0, 1);
-    glm::dvec3 u, v;
-    Basis(axis, u, v);
-    for (int k = 0; k < count; ++k)
-    {
-      const double rho = radius * std::sqrt((k + 0.5) / count), phi = k * golden;
-      samples.emplace_back(centre + rho * (std::cos(phi) * u + std::sin(phi) * v), 1.0);
-    }
-    return samples;
-  }
-  const glm::dvec3 axis(light);
-  glm::dvec3 u, v;
-  Basis(axis, u, v);
-  const double cosMax = std::cos(glm::radians(radius));
-  for (int k = 0; k < count; ++k)
-  {
-    const double cosTheta = 1.0 - (k + 0.5) / count * (1.0 - cosMax);
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta)), phi = k * golden;
-    samples.emplace_back(
-      cosTheta * axis + sinTheta * (std::cos(phi) * u + std::sin(phi) * v), 0.0);
-  }
-  return samples;
 }
 
 /**
@@ -679,7 +633,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
     shadowLight.WedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
     return;
   }
-  shadowLight.Samples = SpreadLightSamples(world, radius, self->LightSamples, target);
+  shadowLight.Samples = penumbra::SpreadLightSamples(world, radius, self->LightSamples, target);
 }
 
 void vtkSoftShadowPass::UpdateShaderConfiguration()
@@ -867,7 +821,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       // Layers of one caster share its outline (a clipped isosurface's walls): the wedges would
       // count them twice. Averaged hard shadows are right for any mesh.
       light.Wedges = false;
-      light.Samples = SpreadLightSamples(
+      light.Samples = penumbra::SpreadLightSamples(
         light.World, lightRadius, this->LightSamples, light.SampleTarget);
     }
     for (penumbra::CasterCache* caster : internals.Casters)

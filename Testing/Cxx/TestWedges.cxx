@@ -4,6 +4,7 @@
 // EdgeOcclusion integrates over) by ray casting against the caster: what is left between the
 // two is the one approximation of the method, a single silhouette seen from the light's centre.
 #include "penumbraCasterTopology.h"
+#include "penumbraLightSamples.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
 
@@ -274,6 +275,33 @@ void TestDegenerateEdges()
   Check(EdgeOcclusion(p, { 0, 0, 0 }, { 1, 0, 0 }, light, 0.0) == 0.0, "radius 0: no penumbra");
 }
 
+void TestLightSamples()
+{
+  // Positional: on the disk of radius r through the centre, facing the target, centred on it.
+  const glm::dvec3 centre(1, 4, 2), target(0, 0, 0);
+  const glm::dvec3 axis = glm::normalize(target - centre);
+  const std::vector<glm::dvec4> disk = SpreadLightSamples(glm::dvec4(centre, 1), 0.5, 64, target);
+  bool onDisk = disk.size() == 64;
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec4& q : disk)
+  {
+    const glm::dvec3 d = glm::dvec3(q) - centre;
+    onDisk = onDisk && q.w == 1.0 && std::abs(glm::dot(d, axis)) < 1e-12 && glm::length(d) <= 0.5;
+    mean += glm::dvec3(q) / 64.0;
+  }
+  Check(onDisk, "positional light samples lie on the disk facing the casters");
+  Check(glm::length(mean - centre) < 0.02, "positional light samples are centred on the light");
+  // Directional: unit directions within the cone of 5 degrees around the light's direction.
+  const glm::dvec3 towards = glm::normalize(glm::dvec3(0.2, 1, 0.1));
+  bool inCone = true;
+  for (const glm::dvec4& q : SpreadLightSamples(glm::dvec4(towards, 0), 5.0, 32, target))
+  {
+    inCone = inCone && q.w == 0.0 && std::abs(glm::length(glm::dvec3(q)) - 1.0) < 1e-12 &&
+      glm::dot(glm::dvec3(q), towards) >= std::cos(glm::radians(5.0)) - 1e-12;
+  }
+  Check(inCone, "directional light samples lie within the light's cone");
+}
+
 } // namespace
 
 int main()
@@ -282,6 +310,7 @@ int main()
   TestContinuityAndMonotonicity();
   TestWedgeContainsItsSupport();
   TestDegenerateEdges();
+  TestLightSamples();
   std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
   return Failures ? 1 : 0;
 }
