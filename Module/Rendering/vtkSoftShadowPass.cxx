@@ -236,6 +236,7 @@ public:
     /// Automatic chose wedges: falls back to averaging if a caster's layers share an outline.
     bool AutomaticWedges;
     glm::dvec3 SampleTarget;
+    double SampleRadius; ///< as SpreadLightSamples takes it: world units, or clamped degrees
 
     /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
     /// centre silhouette (wedges, Automatic's check) and averaged samples never evict each other.
@@ -591,7 +592,7 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     }
     vtkInternals::ShadowLight shadowLight{ light, collectionIndex, index,
       static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, false, glm::dvec3(0.0) };
+      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, false, glm::dvec3(0.0), 0.0 };
     internals.ChooseMethod(this, renderer, shadowLight);
     internals.Lights.push_back(shadowLight);
   }
@@ -626,6 +627,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
     : glm::dvec3(light->GetTransformedFocalPoint()[0], light->GetTransformedFocalPoint()[1],
         light->GetTransformedFocalPoint()[2]);
   shadowLight.SampleTarget = target;
+  shadowLight.SampleRadius = radius;
   if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
   {
     shadowLight.Wedges = true;
@@ -822,7 +824,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       // count them twice. Averaged hard shadows are right for any mesh.
       light.Wedges = false;
       light.Samples = penumbra::SpreadLightSamples(
-        light.World, lightRadius, this->LightSamples, light.SampleTarget);
+        light.World, light.SampleRadius, this->LightSamples, light.SampleTarget);
     }
     for (penumbra::CasterCache* caster : internals.Casters)
     {
