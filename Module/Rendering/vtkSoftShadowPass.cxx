@@ -52,6 +52,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -264,6 +265,13 @@ public:
   vtkNew<vtkTextureObject> DepthCopy;
   vtkNew<vtkOpenGLFramebufferObject> DepthCopyFramebuffer;
   void CopyDepth(vtkOpenGLState* ostate);
+  /// Bytes of GPU memory held: framebuffer textures (4 bytes per texel each) and cached buffers.
+  std::size_t GraphicsMemoryBytes() const
+  {
+    const std::size_t pixels = static_cast<std::size_t>(this->Size[0]) * this->Size[1];
+    const std::size_t texturePixels = this->DepthStencil->GetHandle() ? pixels * 2 : 0;
+    return (texturePixels + pixels * this->Layers) * 4 + this->Caches.GraphicsBufferBytes();
+  }
   vtkNew<vtkTextureObject> LightIntensity;
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
@@ -374,6 +382,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfFullViewportWedges: " << this->NumberOfFullViewportWedges << "\n";
   os << indent << "NumberOfCulledShadows: " << this->NumberOfCulledShadows << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
+  os << indent << "GraphicsMemoryBytes: " << this->GraphicsMemoryBytes << "\n";
 }
 
 const char* vtkSoftShadowPass::GetMethodAsString()
@@ -529,6 +538,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.LightIntensity->Deactivate();
   this->RemoveReceiverKeys();
   internals.Caches.PurgeUnused();
+  this->GraphicsMemoryBytes = static_cast<vtkIdType>(internals.GraphicsMemoryBytes());
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -1217,9 +1227,13 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
   vtkNew<vtkFloatArray> values;
   values->SetName("Visibility");
   values->SetNumberOfValues(pixels);
-  // Overlapping penumbrae add up: the buffer is clamped where it is used, and here.
+  // Overlapping penumbrae add up: the buffer is clamped where it is used, and here. A value
+  // that is not finite is a bug to expose, not to clamp away: it is returned as NaN.
   std::transform(data + light->Layer * pixels, data + (light->Layer + 1) * pixels,
-    values->GetPointer(0), [](float v) { return std::min(1.0f, std::max(0.0f, v)); });
+    values->GetPointer(0), [](float v) {
+      return std::isfinite(v) ? std::min(1.0f, std::max(0.0f, v))
+                              : std::numeric_limits<float>::quiet_NaN();
+    });
   download->UnmapPackedBuffer();
   download->Delete();
 

@@ -166,6 +166,10 @@ public:
   vtkGetMacro(NumberOfZFailVolumes, int);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
+  /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
+  /// and stencil, depth copy, one light-intensity layer per light) and the casters' vertex,
+  /// index and wedge buffers.
+  vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -196,6 +200,7 @@ protected:
   vtkIdType NumberOfPenumbraWedges = 0;
   vtkIdType NumberOfFullViewportWedges = 0;
   vtkIdType NumberOfSilhouetteUpdates = 0;
+  vtkIdType GraphicsMemoryBytes = 0;
 
 private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;

@@ -335,4 +335,27 @@ void ShadowCaches::ReleaseGraphicsResources()
   }
 }
 
+std::size_t ShadowCaches::GraphicsBufferBytes() const
+{
+  std::size_t bytes = 0;
+  for (const auto& mesh : this->Meshes)
+  {
+    // Two float4 copies of every point (see MeshCache::Bind).
+    bytes += mesh.second->Uploaded ? mesh.second->Topology.Points.size() * 8 * sizeof(float) : 0;
+  }
+  for (const auto& caster : this->Casters)
+  {
+    for (const auto& volume : caster.second->Volumes)
+    {
+      const VolumeCache& v = volume.second;
+      bytes += v.Uploaded ? (v.SideCount() + v.CapCount() + v.DarkCapCount()) * sizeof(std::uint32_t) : 0;
+    }
+    for (const auto& wedges : caster.second->Wedges)
+    {
+      bytes += wedges.second.Uploaded ? wedges.second.Vertices.size() * sizeof(float) : 0;
+    }
+  }
+  return bytes;
+}
+
 } // namespace penumbra

@@ -137,6 +137,8 @@ struct ShadowCaches
   void BeginFrame();
   void PurgeUnused();
   void ReleaseGraphicsResources();
+  /// Bytes of the vertex and index buffers uploaded to the GPU.
+  std::size_t GraphicsBufferBytes() const;
 };
 
 } // namespace penumbra
