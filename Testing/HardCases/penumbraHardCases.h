@@ -1,0 +1,99 @@
+// The hard-case suite of vtkSoftShadowPass (issue 5): scenes that break shadow algorithms, each
+// rendered with every method of the pass and compared with the ray-traced truth by
+// PenumbraHardCases. Documentation/robustness.md lists the cases, the metrics and the figures.
+#ifndef penumbraHardCases_h
+#define penumbraHardCases_h
+
+#include "vtkActor.h"
+#include "vtkLight.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace penumbra_hard
+{
+
+/// The pass's methods, as the suite runs them (Automatic is one of these per light).
+enum MethodId
+{
+  HARD = 0,     ///< METHOD_HARD_VOLUMES, compared with the truth of the lights' centres
+  AVERAGED = 1, ///< METHOD_AVERAGED_HARD_SHADOWS with 16 samples
+  WEDGES = 2,   ///< METHOD_PENUMBRA_WEDGES
+  AUTOMATIC = 3, ///< METHOD_AUTOMATIC, what a user gets by default
+  METHOD_COUNT = 4
+};
+const char* MethodName(int method);
+
+/// A known limitation: the case/method may exceed the default limits up to these, for a reason
+/// the report prints next to the figures.
+struct Allowance
+{
+  int Method;
+  int Leaks;      ///< leaks accepted
+  double MAE;     ///< mean absolute error accepted
+  double Popping; ///< share of popping pixels accepted in the worst step (temporal cases)
+  std::string Why;
+};
+
+/// A scene under test: one window, one or more renderers, each with its own shadow pass.
+struct CaseScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  std::vector<vtkSmartPointer<vtkRenderer>> Renderers;
+  std::vector<vtkSmartPointer<vtkSoftShadowPass>> Passes;
+  std::vector<vtkSmartPointer<vtkObject>> Keep;
+
+  CaseScene(int width, int height);
+  vtkRenderer* Renderer() const { return this->Renderers.front(); }
+  /// Adds a renderer with its own pass over `viewport` (xmin, ymin, xmax, ymax).
+  vtkRenderer* AddRenderer(double xmin, double ymin, double xmax, double ymax);
+
+  /// A positional scene light with radius `radius` (0: point light), added to `renderer`.
+  vtkLight* PointLight(double x, double y, double z, double radius, vtkRenderer* renderer = nullptr);
+  /// A directional light from the direction (x, y, z), angular radius in degrees.
+  vtkLight* DirectionalLight(double x, double y, double z, double degrees);
+
+  vtkActor* Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer = nullptr);
+  vtkActor* AddData(vtkPolyData* data, double r, double g, double b);
+  vtkActor* Ground(double half = 5.0, double height = 0.0);
+  vtkActor* Sphere(double x, double y, double z, double radius, int resolution = 32);
+  vtkActor* Box(double x, double y, double z, double sx, double sy, double sz);
+  void Camera(double px, double py, double pz, double fx, double fy, double fz,
+    vtkRenderer* renderer = nullptr);
+};
+
+struct HardCase
+{
+  std::string Name;
+  int Group;            ///< the issue's case number (1..14)
+  std::string Expected; ///< the behaviour the case must show, in one sentence
+  int Width = 200, Height = 150;
+  /// Frames rendered; Frame(scene, i) runs before each (a moving light, a resize).
+  int Frames = 1;
+  std::function<void(CaseScene&)> Build;
+  std::function<void(CaseScene&, int)> Frame;
+  /// Frame-to-frame change of visibility is compared with the truth's (temporal stability).
+  bool Temporal = false;
+  /// Compare the visibility with this (earlier) case's, pixel for pixel, and use its truth.
+  std::string Reference;
+  /// Also render through vtkRenderLargeImage tiles and compare with the direct frame.
+  bool LargeImageTiles = false;
+  /// Bad input: the pass must say so with at least one warning.
+  bool ExpectWarnings = false;
+  std::vector<Allowance> Known;
+};
+
+/// Every case, in the issue's order.
+const std::vector<HardCase>& AllCases();
+
+} // namespace penumbra_hard
+
+#endif
