@@ -5,6 +5,8 @@
 #   ./build.sh build  install what is missing and build only
 #   ./build.sh bench [ARGS]  also matplotlib; build, run the speed-versus-error benchmark into
 #                     build/bench/ (results.csv, speed_vs_error.png); ARGS go to PenumbraBench
+#   ./build.sh fuzz [SECONDS]  also clang; libFuzzer on the geometry core for SECONDS (600) in
+#                     build-fuzz/ (corpus/, artifacts/); see Documentation/fuzzing.md
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -15,6 +17,9 @@ PACKAGES=(build-essential cmake libvtk9-dev python3-vtk9 libglm-dev libembree-de
           xvfb xauth python3-numpy)
 # Only the benchmark needs these (its plot).
 BENCH_PACKAGES=(python3-matplotlib)
+# Only the libFuzzer run needs these (Clang and its fuzzer and sanitizer runtimes).
+FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+FUZZ_DIR=${FUZZ_DIR:-$ROOT/build-fuzz}
 
 install_missing() {
   local missing=()
@@ -35,6 +40,23 @@ configure_and_build() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 
+# libFuzzer on Penumbra::Geometry for $1 seconds, in its own Clang build tree; the seed corpus
+# is copied so that what the run learns stays out of the source tree. Exits non-zero on a crash.
+run_fuzzer() {
+  local seconds=$1
+  PACKAGES+=("${FUZZ_PACKAGES[@]}")
+  install_missing
+  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$FUZZ_DIR" -DCMAKE_BUILD_TYPE=Release \
+    -DPython3_EXECUTABLE=/usr/bin/python3 -DPENUMBRA_ENABLE_FUZZING=ON -DBUILD_TESTING=ON >/dev/null
+  cmake --build "$FUZZ_DIR" -j "$JOBS" --target penumbraGeometryFuzzer
+  mkdir -p "$FUZZ_DIR/corpus" "$FUZZ_DIR/artifacts"
+  cp "$ROOT"/Testing/Fuzz/corpus/* "$FUZZ_DIR/corpus/"
+  echo "== fuzzing the geometry core for $seconds s (crashes go to $FUZZ_DIR/artifacts/)"
+  "$FUZZ_DIR/bin/penumbraGeometryFuzzer" "$FUZZ_DIR/corpus" -max_total_time="$seconds" \
+    -timeout=10 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
+    -artifact_prefix="$FUZZ_DIR/artifacts/"
+}
+
 # Debian's VTK talks to X only: every render runs under a virtual display.
 with_display() {
   if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1920x1080x24" "$@"; fi
@@ -51,13 +73,17 @@ case "$cmd" in
   test)
     install_missing; configure_and_build
     cd "$BUILD_DIR"
-    with_display ctest --output-on-failure -j "$JOBS" ;;
+    with_display ctest --output-on-failure -j "$JOBS"
+    # Then a bounded libFuzzer run on the geometry core (FUZZ_SECONDS=0 skips it).
+    if [ "${FUZZ_SECONDS:-60}" -gt 0 ]; then run_fuzzer "${FUZZ_SECONDS:-60}"; fi ;;
   bench)
     shift
     PACKAGES+=("${BENCH_PACKAGES[@]}")
     install_missing; configure_and_build
     mkdir -p "$BUILD_DIR/bench"
     with_display "$BUILD_DIR/bin/PenumbraBench" --output "$BUILD_DIR/bench" "$@" ;;
+  fuzz)
+    run_fuzzer "${2:-600}" ;;
   *)
-    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]}" >&2; exit 2 ;;
+    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]|fuzz [SECONDS]}" >&2; exit 2 ;;
 esac

@@ -34,8 +34,10 @@ std::vector<std::uint32_t> WeldPoints(const std::vector<glm::dvec3>& points, dou
   {
     std::size_t operator()(const glm::i64vec3& c) const
     {
-      return std::size_t(c.x * 73856093LL) ^ std::size_t(c.y * 19349663LL) ^
-        std::size_t(c.z * 83492791LL);
+      // Unsigned: the products wrap (signed overflow is undefined for far cells).
+      return std::size_t(std::uint64_t(c.x) * 73856093ULL) ^
+        std::size_t(std::uint64_t(c.y) * 19349663ULL) ^
+        std::size_t(std::uint64_t(c.z) * 83492791ULL);
     }
   };
   std::unordered_map<glm::i64vec3, std::vector<std::uint32_t>, CellHash> grid;
@@ -51,7 +53,10 @@ std::vector<std::uint32_t> WeldPoints(const std::vector<glm::dvec3>& points, dou
     {
       continue;
     }
-    const glm::i64vec3 cell(glm::floor(p / cellSize));
+    // Clamped before the conversion: with a zero tolerance (cell size 1) a point at 1e30 would
+    // overflow int64 (undefined behaviour). Clamping keeps neighbours in neighbouring cells.
+    const double limit = 4e18;
+    const glm::i64vec3 cell(glm::clamp(glm::floor(p / cellSize), -limit, limit));
     std::uint32_t found = InvalidIndex;
     for (int dz = -1; dz <= 1 && found == InvalidIndex; ++dz)
     {
@@ -203,7 +208,8 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
 {
   CasterTopology topo;
   report.InputPoints = points.size();
-  report.InputTriangles = triangles.size();
+  // Cells the vtkPolyData path dropped for bad ids were counted there.
+  report.InputTriangles = triangles.size() + report.InvalidIndexTriangles;
 
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const glm::dvec3& p : points)
@@ -220,11 +226,17 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   }
   if (report.NonFinitePoints == points.size())
   {
-    report.NonFiniteTriangles = triangles.size();
+    for (const glm::uvec3& tri : triangles)
+    {
+      const bool inRange = tri.x < points.size() && tri.y < points.size() && tri.z < points.size();
+      ++(inRange ? report.NonFiniteTriangles : report.InvalidIndexTriangles);
+    }
     topo.Report = report;
     return topo;
   }
-  topo.Origin = 0.5 * (lo + hi);
+  // Halves first: lo + hi overflows to Inf for points near the largest doubles, and an infinite
+  // origin would drop every point as non-finite (and reach the renderer's matrices).
+  topo.Origin = 0.5 * lo + 0.5 * hi;
   const double diagonal = glm::length(hi - lo);
 
   std::vector<glm::dvec3> relative(points.size());
@@ -239,8 +251,13 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   topo.Triangles.reserve(triangles.size());
   for (const glm::uvec3& tri : triangles)
   {
-    if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size() ||
-      map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
+    // Out-of-range indices (malformed input) are dropped and reported apart from NaN points.
+    if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size())
+    {
+      ++report.InvalidIndexTriangles;
+      continue;
+    }
+    if (map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
     {
       ++report.NonFiniteTriangles;
       continue;
@@ -250,8 +267,10 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
     const glm::dvec3 e2 = topo.Points[w.z] - topo.Points[w.x];
     const glm::dvec3 n = glm::cross(e1, e2);
     // Zero-area triangles occlude nothing and have no facing; relative test keeps slivers.
+    // Written as !(area > ...) so that a NaN normal (inf - inf in the cross product of points
+    // near 1e300) counts as degenerate instead of passing every comparison.
     const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
-    if (w.x == w.y || w.y == w.z || w.z == w.x || glm::dot(n, n) <= 1e-28 * scale * scale)
+    if (w.x == w.y || w.y == w.z || w.z == w.x || !(glm::dot(n, n) > 1e-28 * scale * scale))
     {
       ++report.DegenerateTriangles;
       continue;
@@ -293,6 +312,10 @@ std::string TopologyReport::Describe() const
     os << this->NonFinitePoints << " points with NaN or infinite coordinates dropped with "
        << this->NonFiniteTriangles << " triangles; ";
   }
+  if (this->InvalidIndexTriangles)
+  {
+    os << this->InvalidIndexTriangles << " triangles naming points that do not exist dropped; ";
+  }
   if (this->DegenerateTriangles)
   {
     os << this->DegenerateTriangles << " degenerate (zero-area) triangles dropped; ";
@@ -331,17 +354,35 @@ CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTole
     vtkNew<vtkIdList> local;
     vtkIdType npts;
     const vtkIdType* ids;
+    // A malformed cell naming a point that does not exist would make vtkPolygon read past the
+    // points, and ids >= 2^32 would alias valid points once narrowed: drop the whole cell.
+    const vtkIdType pointCount = pts->GetNumberOfPoints();
+    auto validIds = [&](vtkIdType count, const vtkIdType* cellIds) {
+      const bool valid = std::all_of(cellIds, cellIds + count,
+        [pointCount](vtkIdType id) { return id >= 0 && id < pointCount; });
+      if (!valid)
+      {
+        report.InvalidIndexTriangles += static_cast<std::size_t>(std::max<vtkIdType>(count - 2, 0));
+      }
+      return valid;
+    };
     auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
     for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
     {
       polys->GetCurrentCell(npts, ids);
-      TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+      if (validIds(npts, ids))
+      {
+        TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+      }
     }
     auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
     for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
     {
       strips->GetCurrentCell(npts, ids);
-      AppendStrip(npts, ids, triangles);
+      if (validIds(npts, ids))
+      {
+        AppendStrip(npts, ids, triangles);
+      }
     }
   }
   return BuildFromSoup(points, triangles, relativeWeldTolerance, report);

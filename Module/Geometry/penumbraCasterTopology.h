@@ -61,6 +61,8 @@ struct TopologyReport
   std::size_t InputTriangles = 0; ///< after triangulating polygons and strips
   std::size_t DegenerateTriangles = 0;
   std::size_t NonFiniteTriangles = 0;
+  /// Triangles (or the triangles of polygons and strips) naming a point that does not exist.
+  std::size_t InvalidIndexTriangles = 0;
   std::size_t SkippedVerts = 0;
   std::size_t SkippedLines = 0;
   std::size_t BoundaryEdges = 0;

@@ -112,7 +112,14 @@ double EdgeOcclusion(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3&
   const glm::dvec3 fromPlane = from * (distance / hFrom), toPlane = to * (distance / hTo);
   const glm::dvec2 A(glm::dot(fromPlane, e1), glm::dot(fromPlane, e2));
   const glm::dvec2 B(glm::dot(toPlane, e1), glm::dot(toPlane, e2));
-  return InsideCorrection(A, B, diskRadius) / (Pi * diskRadius * diskRadius);
+  // A disk so small (or large) that its area underflows (or overflows) would give 0 / 0: such a
+  // light has no penumbra worth a correction.
+  const double diskArea = Pi * diskRadius * diskRadius;
+  if (!(diskArea > 0.0) || !std::isfinite(diskArea))
+  {
+    return 0.0;
+  }
+  return InsideCorrection(A, B, diskRadius) / diskArea;
 }
 
 Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
@@ -139,6 +146,12 @@ Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& l
   }
   else
   {
+    // A cone of half-angle 90 degrees or more has no tangent planes, and past pi the sine below
+    // turns negative and would pass the test after it with h = 0 (NaN planes, Valid true).
+    if (!(radius < 0.5 * Pi))
+    {
+      return wedge;
+    }
     const glm::dvec3 l = glm::normalize(centre);
     perpendicular = l - glm::dot(l, d) * d;
     reach = std::sin(radius);
@@ -185,6 +198,23 @@ Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& l
       {
         return wedge;
       }
+    }
+  }
+  // Far beyond the edge's scale (a light near 1e200) squared lengths overflow: h or a side
+  // direction becomes Inf or 0 and the planes come out zero or NaN. Such planes are no wedge.
+  for (int k = 0; k < 4; ++k)
+  {
+    const glm::dvec3& n = wedge.Normals[k];
+    if (!std::isfinite(wedge.Offsets[k]) || !(std::abs(glm::dot(n, n) - 1.0) < 1e-6))
+    {
+      return wedge;
+    }
+  }
+  for (const glm::dvec4& v : wedge.Vertices)
+  {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    {
+      return wedge;
     }
   }
   wedge.Valid = true;

@@ -1,0 +1,386 @@
+// Stand-alone driver for LLVMFuzzerTestOneInput where libFuzzer is not available (g++ builds):
+// replays every corpus file given, then runs pseudo-random and mutated inputs from a fixed seed,
+// so the ctest smoke test is reproducible. A failed invariant aborts inside the target; the
+// driver names the input and leaves it in --crash-dir (default: the working directory).
+//
+//   penumbraGeometryFuzzSmoke [--runs N] [--seed S] [--max-len L] [--crash-dir DIR]
+//                             [--write-seeds DIR] [FILE|DIR]...
+#include "penumbraFuzzInput.h"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+
+namespace
+{
+namespace fs = std::filesystem;
+using Bytes = std::vector<std::uint8_t>;
+using penumbra::fuzz::ByteWriter;
+
+std::string CrashDir = ".";
+std::string CurrentLabel;
+std::string CurrentPath;
+const Bytes* CurrentInput = nullptr;
+
+void WriteAll(int fd, const void* data, std::size_t size)
+{
+  const char* p = static_cast<const char*>(data);
+  while (size > 0)
+  {
+    const ssize_t written = ::write(fd, p, size);
+    if (written <= 0)
+    {
+      return;
+    }
+    p += written;
+    size -= static_cast<std::size_t>(written);
+  }
+}
+
+/// An invariant failure aborts inside the target: save the input and say which one it was
+/// (plain write(2) calls: this runs in a signal handler).
+extern "C" void OnAbort(int)
+{
+  const int fd = ::open(CurrentPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0 && CurrentInput)
+  {
+    WriteAll(fd, CurrentInput->data(), CurrentInput->size());
+    ::close(fd);
+  }
+  const char* parts[] = { "penumbraGeometryFuzzSmoke: failed on ", CurrentLabel.c_str(),
+    ", saved as ", CurrentPath.c_str(), "\n" };
+  for (const char* part : parts)
+  {
+    WriteAll(2, part, std::strlen(part));
+  }
+  std::signal(SIGABRT, SIG_DFL);
+  std::abort();
+}
+
+void Run(const Bytes& input, const std::string& label)
+{
+  CurrentInput = &input;
+  CurrentLabel = label;
+  LLVMFuzzerTestOneInput(input.data(), input.size());
+  CurrentInput = nullptr;
+}
+
+Bytes ReadFile(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void WriteFile(const fs::path& path, const Bytes& bytes)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+}
+
+/// libFuzzer-like mutations: flip, overwrite, insert, erase, truncate, splice.
+Bytes Mutate(
+  Bytes input, const std::vector<Bytes>& corpus, std::mt19937& rng, std::size_t maxLength)
+{
+  const int steps = 1 + static_cast<int>(rng() % 8);
+  for (int s = 0; s < steps; ++s)
+  {
+    const std::size_t at = input.empty() ? 0 : rng() % input.size();
+    switch (rng() % 6)
+    {
+      case 0:
+        if (!input.empty())
+        {
+          input[at] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
+        }
+        break;
+      case 1:
+        if (!input.empty())
+        {
+          input[at] = static_cast<std::uint8_t>(rng());
+        }
+        break;
+      case 2:
+        input.insert(
+          input.begin() + static_cast<std::ptrdiff_t>(at), static_cast<std::uint8_t>(rng()));
+        break;
+      case 3:
+        if (!input.empty())
+        {
+          input.erase(input.begin() + static_cast<std::ptrdiff_t>(at));
+        }
+        break;
+      case 4:
+        input.resize(at);
+        break;
+      default:
+      {
+        const Bytes& other = corpus[rng() % corpus.size()];
+        if (!other.empty())
+        {
+          const std::size_t from = rng() % other.size();
+          input.resize(at);
+          input.insert(input.end(), other.begin() + static_cast<std::ptrdiff_t>(from), other.end());
+        }
+      }
+    }
+  }
+  if (input.size() > maxLength)
+  {
+    input.resize(maxLength);
+  }
+  return input;
+}
+
+// Hand-made seeds: ordinary scenes the mutations start from, and the regressions.
+ByteWriter PositionalLight(double x, double y, double z, double radius)
+{
+  ByteWriter w;
+  w.U8(1);
+  w.Scalar(x).Scalar(y).Scalar(z).Scalar(radius);
+  return w;
+}
+
+void CubeCorners(ByteWriter& w)
+{
+  for (int k = 0; k < 8; ++k)
+  {
+    w.Lattice(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  }
+}
+
+void Receivers(ByteWriter& w)
+{
+  w.U8(4);
+  w.U8(0).U8(128).Scalar(0.5);  // beyond the middle of each edge
+  w.U8(0).U8(10).Scalar(2.0);   // beyond one end
+  w.U8(1).Point(0.25, -3.0, 0.5); // on the ground
+  w.U8(1).Lattice(0, 0, 0);     // inside the caster
+  w.U8(8).Point(0, 0, 0);       // light samples towards the origin
+}
+
+std::vector<std::pair<std::string, Bytes>> Seeds()
+{
+  // Closed cube (12 outward triangles) as raw triangles.
+  static const int cube[12][3] = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 },
+    { 0, 1, 4 }, { 1, 5, 4 }, { 2, 6, 3 }, { 3, 6, 7 }, { 0, 4, 2 }, { 2, 4, 6 },
+    { 1, 3, 5 }, { 3, 7, 5 } };
+  std::vector<std::pair<std::string, Bytes>> seeds;
+
+  ByteWriter raw = PositionalLight(0.5, 3.0, 0.25, 0.5);
+  raw.U8(8);
+  CubeCorners(raw);
+  raw.U16(12);
+  for (const auto& t : cube)
+  {
+    raw.U8(t[0]).U8(t[1]).U8(t[2]);
+  }
+  Receivers(raw);
+  seeds.emplace_back("raw-cube-positional", raw.Bytes);
+
+  // The same cube under a directional light, mirrored, weld tolerance 1e-3.
+  ByteWriter sun;
+  sun.U8(2 | (2 << 2)).U8(0);
+  sun.Scalar(0.25).Scalar(1.0).Scalar(0.125).Scalar(0.05);
+  sun.U8(8);
+  CubeCorners(sun);
+  sun.U16(12);
+  for (const auto& t : cube)
+  {
+    sun.U8(t[0]).U8(t[1]).U8(t[2]);
+  }
+  Receivers(sun);
+  seeds.emplace_back("raw-cube-directional-mirrored", sun.Bytes);
+
+  // Light inside the cube, with out-of-range, NaN and duplicate-point triangles.
+  ByteWriter inside = PositionalLight(0.1, 0.05, -0.1, 0.2);
+  inside.U8(10);
+  CubeCorners(inside);
+  inside.U8(254).Special(penumbra::fuzz::TagNaN).Scalar(0).Scalar(0); // NaN point (index 8)
+  inside.U8(134).U8(1).U8(0).U8(0xff);                    // (1,1,1) + 1e-9 jitter (index 9)
+  inside.U16(16);
+  for (const auto& t : cube)
+  {
+    inside.U8(t[0]).U8(t[1]).U8(t[2]);
+  }
+  inside.U8(0).U8(1).U8(248);     // index 10: just past the end
+  inside.U8(0).U8(252).U8(1);     // 0xffffffff
+  inside.U8(8).U8(1).U8(2);       // NaN corner
+  inside.U8(9).U8(7).U8(6);       // welded onto corner 7: degenerate
+  Receivers(inside);
+  seeds.emplace_back("raw-inside-malformed", inside.Bytes);
+
+  // vtkPolyData: a cube of quads, a strip, verts, lines, a pentagon with a repeated id and
+  // empty, one- and two-point polygons.
+  ByteWriter poly = PositionalLight(-2.0, 4.0, 1.0, 0.75);
+  poly.Bytes[0] = 1;
+  poly.U8(0).U8(9);
+  CubeCorners(poly);
+  poly.Lattice(0, 1, 0);
+  static const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  poly.U8(13);
+  for (const auto& q : quads)
+  {
+    poly.U8(2 | (4 << 2)).U8(q[0]).U8(q[1]).U8(q[2]).U8(q[3]);
+  }
+  poly.U8(3 | (5 << 2)).U8(0).U8(1).U8(8).U8(2).U8(3); // strip
+  poly.U8(0 | (2 << 2)).U8(0).U8(8);                   // verts
+  poly.U8(1 | (3 << 2)).U8(1).U8(2).U8(3);             // polyline
+  poly.U8(2 | (5 << 2)).U8(4).U8(5).U8(8).U8(5).U8(6); // pentagon, repeated id
+  poly.U8(2 | (0 << 2));                               // empty polygon
+  poly.U8(2 | (1 << 2)).U8(3);                         // one point
+  poly.U8(2 | (2 << 2)).U8(3).U8(4);                   // two points
+  Receivers(poly);
+  seeds.emplace_back("polydata-mixed-cells", poly.Bytes);
+
+  // Regression: polygon and strip ids out of range (-1, n, >= 2^32 aliasing a valid id). Before
+  // the fix vtkPolygon read past the points (ASan heap overflow) and 2^32 + i became point i.
+  ByteWriter bad = PositionalLight(0.5, 3.0, 0.25, 0.5);
+  bad.Bytes[0] = 1;
+  bad.U8(0x20).U8(8); // float points
+  CubeCorners(bad);
+  bad.U8(5);
+  bad.U8(2 | (4 << 2)).U8(0).U8(2).U8(251).U8(1);        // quad naming point n
+  bad.U8(2 | (5 << 2)).U8(4).U8(5).U8(7).U8(250).U8(6);  // pentagon with id -1
+  bad.U8(3 | (4 << 2)).U8(0).U8(253).U8(1).U8(4).U8(5);  // strip with 2^32 + 1
+  bad.U8(2 | (3 << 2)).U8(253).U8(2).U8(1).U8(3);        // triangle with 2^32 + 2
+  bad.U8(2 | (3 << 2)).U8(1).U8(3).U8(5);                // one valid triangle
+  Receivers(bad);
+  seeds.emplace_back("regression-polydata-invalid-ids", bad.Bytes);
+
+  // Extreme values: 1e30 light, NaN radius, huge and tiny points.
+  ByteWriter extreme;
+  extreme.U8(4).U8(1); // weld tolerance 0
+  extreme.Special(10).Special(10).Special(11).Special(13);
+  extreme.U8(6);
+  extreme.U8(254).Special(10).Scalar(0).Scalar(0);
+  extreme.U8(254).Scalar(0).Special(10).Scalar(0);
+  extreme.U8(254).Scalar(0).Scalar(0).Special(10);
+  extreme.U8(254).Special(11).Scalar(0).Scalar(0);
+  extreme.U8(254).Scalar(0).Special(11).Scalar(0);
+  extreme.U8(254).Special(14).Scalar(0).Scalar(0);
+  extreme.U16(4).U8(0).U8(1).U8(2).U8(3).U8(4).U8(0).U8(0).U8(1).U8(5).U8(2).U8(1).U8(0);
+  Receivers(extreme);
+  seeds.emplace_back("extreme-values", extreme.Bytes);
+  return seeds;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  long runs = 0;
+  unsigned seed = 1;
+  std::size_t maxLength = 4096;
+  std::vector<fs::path> inputs;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--runs" && i + 1 < argc)
+    {
+      runs = std::strtol(argv[++i], nullptr, 10);
+    }
+    else if (arg == "--seed" && i + 1 < argc)
+    {
+      seed = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
+    }
+    else if (arg == "--max-len" && i + 1 < argc)
+    {
+      maxLength = static_cast<std::size_t>(std::strtoul(argv[++i], nullptr, 10));
+    }
+    else if (arg == "--crash-dir" && i + 1 < argc)
+    {
+      CrashDir = argv[++i];
+    }
+    else if (arg == "--write-seeds" && i + 1 < argc)
+    {
+      const fs::path dir = argv[++i];
+      fs::create_directories(dir);
+      for (const auto& s : Seeds())
+      {
+        WriteFile(dir / s.first, s.second);
+        std::printf("wrote %s (%zu bytes)\n", (dir / s.first).c_str(), s.second.size());
+      }
+      return 0;
+    }
+    else if (arg.rfind("--", 0) == 0)
+    {
+      std::fprintf(stderr,
+        "usage: %s [--runs N] [--seed S] [--max-len L] [--crash-dir DIR] [--write-seeds DIR] "
+        "[FILE|DIR]...\n",
+        argv[0]);
+      return 2;
+    }
+    else
+    {
+      inputs.emplace_back(arg);
+    }
+  }
+
+  CurrentPath = (fs::path(CrashDir) / "penumbra-fuzz-last-input").string();
+  std::signal(SIGABRT, OnAbort);
+
+  std::vector<fs::path> files;
+  for (const fs::path& p : inputs)
+  {
+    if (fs::is_directory(p))
+    {
+      for (const auto& entry : fs::directory_iterator(p))
+      {
+        if (entry.is_regular_file())
+        {
+          files.push_back(entry.path());
+        }
+      }
+    }
+    else
+    {
+      files.push_back(p);
+    }
+  }
+  std::sort(files.begin(), files.end()); // directory order is not reproducible
+
+  std::vector<Bytes> corpus;
+  for (const fs::path& f : files)
+  {
+    corpus.push_back(ReadFile(f));
+    Run(corpus.back(), f.string());
+  }
+  std::printf("replayed %zu corpus file(s)\n", corpus.size());
+
+  std::mt19937 rng(seed);
+  for (long r = 0; r < runs; ++r)
+  {
+    Bytes input;
+    if (!corpus.empty() && r % 2 == 1)
+    {
+      input = Mutate(corpus[rng() % corpus.size()], corpus, rng, maxLength);
+    }
+    else
+    {
+      input.resize(rng() % (maxLength + 1));
+      for (std::uint8_t& b : input)
+      {
+        b = static_cast<std::uint8_t>(rng());
+      }
+    }
+    Run(input, "random input " + std::to_string(r));
+  }
+  std::printf("ran %ld pseudo-random input(s) from seed %u: no invariant violated\n", runs, seed);
+  return 0;
+}
