@@ -147,12 +147,20 @@ PlateauReport BuildPlateaus(const CasterTopology& topo, const ShadowVolume& volu
   auto world = [&](std::uint32_t i) {
     return glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0));
   };
+  // Geometry on (or under) the plane cannot shadow it: the receiver itself, when it casts too.
+  const double onPlane = 1e-6 * glm::length(glm::dvec3(objectToWorld *
+                                  glm::dvec4(topo.BoundsMax - topo.BoundsMin, 0.0)));
+  auto above = [&](const glm::dvec3& x) { return plane.Height(x) > onPlane; };
 
   // The hard drop shadow: the casting triangles (the light cap) at depth 0.
   const std::vector<std::uint32_t>& cap = volume.LightCap;
   for (std::size_t i = 0; i + 2 < cap.size(); i += 3)
   {
     const glm::dvec3 a = world(cap[i] % n), b = world(cap[i + 1] % n), c = world(cap[i + 2] % n);
+    if (!above(a) && !above(b) && !above(c))
+    {
+      continue;
+    }
     if (!project.CanCast(a) || !project.CanCast(b) || !project.CanCast(c))
     {
       ++report.SkippedAboveLight;
@@ -175,7 +183,7 @@ PlateauReport BuildPlateaus(const CasterTopology& topo, const ShadowVolume& volu
     for (const std::uint32_t v : { edge.From, edge.To })
     {
       const glm::dvec3 x = world(v);
-      if (rims.count(v) || !project.CanCast(x))
+      if (rims.count(v) || !above(x) || !project.CanCast(x))
       {
         continue;
       }
@@ -197,7 +205,7 @@ PlateauReport BuildPlateaus(const CasterTopology& topo, const ShadowVolume& volu
   for (const SilhouetteEdge& edge : volume.Silhouette)
   {
     const glm::dvec3 a = world(edge.From), b = world(edge.To);
-    if (!project.CanCast(a) || !project.CanCast(b))
+    if ((!above(a) && !above(b)) || !project.CanCast(a) || !project.CanCast(b))
     {
       continue;
     }

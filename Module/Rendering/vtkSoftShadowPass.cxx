@@ -25,6 +25,8 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
@@ -36,8 +38,12 @@
 #include "vtk_glew.h"
 
 #include "penumbraLightSamples.h"
+#include "penumbraPlateaus.h"
 
 #include "penumbraHorizonFS.h"
+#include "penumbraPlateauFS.h"
+#include "penumbraPlateauResolveFS.h"
+#include "penumbraPlateauVS.h"
 #include "penumbraReceiverDec.h"
 #include "penumbraResolveFS.h"
 #include "penumbraResolveVS.h"
@@ -63,6 +69,7 @@ vtkCxxSetObjectMacro(vtkSoftShadowPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyMacro(vtkSoftShadowPass, LIGHT_RADIUS, Double);
 vtkInformationKeyMacro(vtkSoftShadowPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkSoftShadowPass, RECEIVES_SHADOWS, Integer);
+vtkInformationKeyMacro(vtkSoftShadowPass, SHADOW_PLANE, Integer);
 
 namespace
 {
@@ -238,6 +245,10 @@ public:
     bool AutomaticWedges;
     glm::dvec3 SampleTarget;
     double SampleRadius; ///< as SpreadLightSamples takes it: world units, or clamped degrees
+    /// Haines' plateaus on the receiver plane, with the light's radius (world units, or
+    /// radians for a directional light); the hard shadow of the centre elsewhere.
+    bool Plateaus = false;
+    double PlateauRadius = 0.0;
 
     /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
     /// centre silhouette (wedges, Automatic's check) and averaged samples never evict each other.
@@ -270,9 +281,38 @@ public:
   {
     const std::size_t pixels = static_cast<std::size_t>(this->Size[0]) * this->Size[1];
     const std::size_t texturePixels = this->DepthStencil->GetHandle() ? pixels * 2 : 0;
-    return (texturePixels + pixels * this->Layers) * 4 + this->Caches.GraphicsBufferBytes();
+    const std::size_t plateauTexels = this->Plateau.Depth->GetHandle()
+      ? static_cast<std::size_t>(this->Plateau.Depth->GetWidth()) * this->Plateau.Depth->GetHeight()
+      : 0;
+    const std::size_t plateauBuffer = this->Plateau.Vertices->GetHandle()
+      ? this->Plateau.Triangles.size() * sizeof(penumbra::PlateauVertex)
+      : 0;
+    return (texturePixels + plateauTexels + pixels * this->Layers) * 4 + plateauBuffer +
+      this->Caches.GraphicsBufferBytes();
   }
   vtkNew<vtkTextureObject> LightIntensity;
+
+  /// The receiver plane of METHOD_PLATEAUS this frame, and the plateau texture's resources.
+  struct PlateauState
+  {
+    bool HavePlane = false;
+    penumbra::ReceiverPlane Plane;
+    vtkProp* PlaneProp = nullptr;         ///< the marked actor, if the plane is one
+    bool Bounded = false;                 ///< the plane is an actor: plane coordinates bounds
+    glm::dvec2 Min{ 0.0 }, Max{ 0.0 };
+    double Tolerance = 0.0;               ///< distance still counted as on the plane
+    std::set<vtkProp*> WarnedProps;
+    bool WarnedNoPlane = false;
+    std::vector<penumbra::PlateauVertex> Triangles;
+    vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+    vtkNew<vtkTextureObject> Depth;
+    vtkNew<vtkOpenGLBufferObject> Vertices;
+    vtkNew<vtkOpenGLVertexArrayObject> VAO;
+    vtkShaderProgram* VAOProgram = nullptr;
+  } Plateau;
+  /// Renders `light`'s plateaus over the receiver plane, then writes them into its LI layer at
+  /// the pixels on the plane; returns the plateau triangles drawn.
+  vtkIdType DrawPlateaus(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light);
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   int Layers = 0;
@@ -286,6 +326,7 @@ public:
   vtkNew<vtkOpenGLBufferObject> FullScreenTriangle;
   FullScreenVAO ResolveVAO;
   FullScreenVAO HorizonVAO;
+  FullScreenVAO PlateauResolveVAO;
   void DrawFullScreen(vtkShaderProgram* program, FullScreenVAO& vao);
 
   vtkNew<vtkOpaquePass> DepthPass;
@@ -374,6 +415,15 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowsEnabled: " << this->ShadowsEnabled << "\n";
   os << indent << "Method: " << this->GetMethodAsString() << "\n";
   os << indent << "LightSamples: " << this->LightSamples << "\n";
+  os << indent << "PlateauFalloff: "
+     << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
+  os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
+  os << indent << "UseReceiverPlane: " << this->UseReceiverPlane << "\n";
+  os << indent << "ReceiverPlaneOrigin: " << this->ReceiverPlaneOrigin[0] << " "
+     << this->ReceiverPlaneOrigin[1] << " " << this->ReceiverPlaneOrigin[2] << "\n";
+  os << indent << "ReceiverPlaneNormal: " << this->ReceiverPlaneNormal[0] << " "
+     << this->ReceiverPlaneNormal[1] << " " << this->ReceiverPlaneNormal[2] << "\n";
+  os << indent << "NumberOfPlateauTriangles: " << this->NumberOfPlateauTriangles << "\n";
   os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
   os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
      << "\n";
@@ -395,6 +445,8 @@ const char* vtkSoftShadowPass::GetMethodAsString()
       return "AveragedHardShadows";
     case METHOD_PENUMBRA_WEDGES:
       return "PenumbraWedges";
+    case METHOD_PLATEAUS:
+      return "Plateaus";
     default:
       return "Automatic";
   }
@@ -468,6 +520,17 @@ void vtkSoftShadowPass::SetReceivesShadows(vtkProp* prop, bool receives)
   SetPropFlag(prop, RECEIVES_SHADOWS(), receives);
 }
 
+void vtkSoftShadowPass::SetShadowPlane(vtkProp* prop, bool isPlane)
+{
+  SetPropFlag(prop, SHADOW_PLANE(), isPlane);
+}
+
+bool vtkSoftShadowPass::GetShadowPlane(vtkProp* prop)
+{
+  vtkInformation* info = prop ? prop->GetPropertyKeys() : nullptr;
+  return info && info->Has(SHADOW_PLANE()) && info->Get(SHADOW_PLANE()) != 0;
+}
+
 bool vtkSoftShadowPass::GetReceivesShadows(vtkProp* prop)
 {
   return GetPropFlag(prop, RECEIVES_SHADOWS());
@@ -491,6 +554,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfPenumbraWedges = 0;
   this->NumberOfFullViewportWedges = 0;
   this->NumberOfCulledShadows = 0;
+  this->NumberOfPlateauTriangles = 0;
 
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
@@ -521,9 +585,10 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->RenderDepth(s);
   internals.LightIntensity->Deactivate();
   this->UpdateCasters(s);
-  // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows.
+  // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
+  // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-        [](const vtkInternals::ShadowLight& light) { return light.Wedges; }))
+        [](const vtkInternals::ShadowLight& light) { return light.Wedges || light.Plateaus; }))
   {
     internals.CopyDepth(window->GetState());
   }
@@ -615,7 +680,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   const glm::dvec4& world = shadowLight.World;
   double radius = GetLightRadius(light);
   shadowLight.Samples = { world };
-  shadowLight.Wedges = shadowLight.AutomaticWedges = false;
+  shadowLight.Wedges = shadowLight.AutomaticWedges = shadowLight.Plateaus = false;
   shadowLight.WedgeRadius = 0.0;
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
   {
@@ -638,6 +703,12 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
         light->GetTransformedFocalPoint()[2]);
   shadowLight.SampleTarget = target;
   shadowLight.SampleRadius = radius;
+  if (self->Method == METHOD_PLATEAUS)
+  {
+    shadowLight.Plateaus = true;
+    shadowLight.PlateauRadius = world.w != 0.0 ? radius : glm::radians(radius);
+    return;
+  }
   if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
   {
     shadowLight.Wedges = true;
@@ -813,6 +884,22 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     internals.Casters.push_back(caster);
   }
 
+  const bool plateaus = std::any_of(internals.Lights.begin(), internals.Lights.end(),
+    [](const vtkInternals::ShadowLight& light) { return light.Plateaus; });
+  if (plateaus && !this->FindReceiverPlane(s->GetRenderer()))
+  {
+    if (!internals.Plateau.WarnedNoPlane)
+    {
+      vtkWarningMacro("METHOD_PLATEAUS needs a receiver plane (SetShadowPlane on a flat actor, "
+                      "or UseReceiverPlaneOn): hard shadows instead.");
+      internals.Plateau.WarnedNoPlane = true;
+    }
+    for (auto& light : internals.Lights)
+    {
+      light.Plateaus = false;
+    }
+  }
+
   for (auto& light : internals.Lights)
   {
     const double lightRadius = GetLightRadius(light.Light);
@@ -984,6 +1071,10 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     {
       internals.DrawWedges(
         window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
+    }
+    if (light.Plateaus)
+    {
+      this->NumberOfPlateauTriangles += internals.DrawPlateaus(this, window, light);
     }
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
@@ -1179,7 +1270,7 @@ void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
   {
     const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
     this->FullScreenTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
-    this->ResolveVAO.Program = this->HorizonVAO.Program = nullptr;
+    this->ResolveVAO.Program = this->HorizonVAO.Program = this->PlateauResolveVAO.Program = nullptr;
   }
   if (vao.Program != program)
   {
@@ -1193,6 +1284,245 @@ void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
   vao.VAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   vao.VAO->Release();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
+{
+  vtkInternals::PlateauState& plateau = this->Internals->Plateau;
+  plateau.HavePlane = plateau.Bounded = false;
+  plateau.PlaneProp = nullptr;
+  if (this->UseReceiverPlane)
+  {
+    plateau.HavePlane = penumbra::ReceiverPlane::Make(glm::make_vec3(this->ReceiverPlaneOrigin),
+      glm::make_vec3(this->ReceiverPlaneNormal), plateau.Plane);
+    if (!plateau.HavePlane && !plateau.WarnedNoPlane)
+    {
+      vtkWarningMacro("The receiver plane's normal is zero or not finite.");
+    }
+    plateau.Tolerance = 0.0; // set from the plateaus' extent when they are drawn
+    return plateau.HavePlane;
+  }
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  {
+    auto actor = vtkActor::SafeDownCast(prop);
+    if (!actor || !actor->GetVisibility() || !GetShadowPlane(actor) || !actor->GetMapper())
+    {
+      continue;
+    }
+    auto data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+    vtkPoints* points = data ? data->GetPoints() : nullptr;
+    std::vector<glm::dvec3> world;
+    const glm::dmat4 toWorld = ToGlm(actor->GetMatrix());
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      const glm::dvec3 p(toWorld * glm::dvec4(glm::make_vec3(points->GetPoint(i)), 1.0));
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+      {
+        world.push_back(p);
+      }
+    }
+    // The plane through three spread points: the first, the farthest from it, and the one
+    // farthest from the line of those two.
+    glm::dvec3 normal(0.0);
+    if (world.size() >= 3)
+    {
+      const glm::dvec3 a = world.front();
+      glm::dvec3 b = a;
+      for (const glm::dvec3& p : world)
+      {
+        b = glm::distance(p, a) > glm::distance(b, a) ? p : b;
+      }
+      for (const glm::dvec3& p : world)
+      {
+        const glm::dvec3 n = glm::cross(b - a, p - a);
+        normal = glm::dot(n, n) > glm::dot(normal, normal) ? n : normal;
+      }
+    }
+    glm::dvec3 centre(0.0);
+    for (const glm::dvec3& p : world)
+    {
+      centre += p / static_cast<double>(world.size());
+    }
+    penumbra::ReceiverPlane plane;
+    if (!penumbra::ReceiverPlane::Make(centre, normal, plane))
+    {
+      if (plateau.WarnedProps.insert(actor).second)
+      {
+        vtkWarningMacro("Shadow plane " << actor << " has no flat surface: it is not used.");
+      }
+      continue;
+    }
+    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    double thickness = 0.0;
+    for (const glm::dvec3& p : world)
+    {
+      lo = glm::min(lo, plane.ToPlane(p));
+      hi = glm::max(hi, plane.ToPlane(p));
+      thickness = std::max(thickness, std::abs(plane.Height(p)));
+    }
+    const double extent = glm::length(hi - lo);
+    if (thickness > 1e-6 * extent && plateau.WarnedProps.insert(actor).second)
+    {
+      vtkWarningMacro("Shadow plane " << actor << " is not flat (points up to " << thickness
+                                      << " off its plane): plateaus use its best plane.");
+    }
+    plateau.HavePlane = plateau.Bounded = true;
+    plateau.Plane = plane;
+    plateau.PlaneProp = actor;
+    plateau.Min = lo;
+    plateau.Max = hi;
+    plateau.Tolerance = std::max(1e-5 * extent, 2.0 * thickness);
+    return true;
+  }
+  return false;
+}
+
+vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
+  vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light)
+{
+  PlateauState& plateau = this->Plateau;
+  // The plane faces the light, whichever way its polygons wind.
+  penumbra::ReceiverPlane plane = plateau.Plane;
+  const double lightSide = light.World.w != 0.0 ? plane.Height(glm::dvec3(light.World))
+                                                : glm::dot(plane.Normal, glm::dvec3(light.World));
+  if (lightSide < 0.0)
+  {
+    penumbra::ReceiverPlane::Make(plane.Origin, -plane.Normal, plane);
+  }
+  plateau.Triangles.clear();
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light) || caster->Actor == plateau.PlaneProp)
+    {
+      continue;
+    }
+    penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
+    volume.EnsureCaps(*caster->Mesh);
+    penumbra::BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld,
+      light.World, light.PlateauRadius, plane, plateau.Triangles);
+  }
+  if (plateau.Triangles.empty())
+  {
+    return 0;
+  }
+  // The texture covers the plateaus, within the receiver's extent when it has one.
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const penumbra::PlateauVertex& v : plateau.Triangles)
+  {
+    lo = glm::min(lo, glm::dvec2(v.U, v.V));
+    hi = glm::max(hi, glm::dvec2(v.U, v.V));
+  }
+  if (plateau.Bounded)
+  {
+    lo = glm::max(lo, plateau.Min);
+    hi = glm::min(hi, plateau.Max);
+  }
+  const glm::dvec2 size = hi - lo;
+  if (!(size.x > 0.0) || !(size.y > 0.0))
+  {
+    return 0;
+  }
+  const double tolerance = plateau.Bounded ? plateau.Tolerance : 1e-5 * glm::length(size);
+
+  vtkOpenGLState* ostate = window->GetState();
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraPlateauVS, penumbraPlateauFS, "");
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(self, "Could not compile the plateau shader.");
+    return 0;
+  }
+  const int resolution = self->GetPlateauResolution();
+  if (!plateau.Framebuffer->GetFBOIndex())
+  {
+    plateau.Framebuffer->SetContext(window);
+    plateau.Depth->SetContext(window);
+  }
+  if (static_cast<int>(plateau.Depth->GetWidth()) != resolution)
+  {
+    // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
+    plateau.Depth->SetMinificationFilter(vtkTextureObject::Linear);
+    plateau.Depth->SetMagnificationFilter(vtkTextureObject::Linear);
+    plateau.Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    plateau.Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    plateau.Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32);
+  }
+
+  // 1. The plateau texture: seen down the normal, the smallest depth (darkest) wins.
+  ostate->PushFramebufferBindings();
+  plateau.Framebuffer->Bind();
+  plateau.Framebuffer->AddDepthAttachment(plateau.Depth);
+  ostate->vtkglDrawBuffer(GL_NONE);
+  ostate->vtkglViewport(0, 0, resolution, resolution);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LESS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  const float planeToClip[4] = { static_cast<float>(2.0 / size.x), static_cast<float>(2.0 / size.y),
+    static_cast<float>(-1.0 - 2.0 * lo.x / size.x), static_cast<float>(-1.0 - 2.0 * lo.y / size.y) };
+  program->SetUniform4f("planeToClip", planeToClip);
+  plateau.Vertices->Upload(plateau.Triangles, vtkOpenGLBufferObject::ArrayBuffer);
+  if (plateau.VAOProgram != program)
+  {
+    // Releases the old VAO: must come before Bind.
+    plateau.VAO->ShaderProgramChanged();
+    plateau.VAO->Bind();
+    plateau.VAO->AddAttributeArray(program, plateau.Vertices, "plateauVertex", 0,
+      sizeof(penumbra::PlateauVertex), VTK_FLOAT, 3, false);
+    plateau.VAOProgram = program;
+  }
+  plateau.VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(plateau.Triangles.size()));
+  plateau.VAO->Release();
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->PopFramebufferBindings();
+
+  // 2. Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
+  vtkShaderProgram* resolve =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraPlateauResolveFS, "");
+  if (!resolve)
+  {
+    vtkErrorWithObjectMacro(self, "Could not compile the plateau resolve shader.");
+    return 0;
+  }
+  ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  this->DepthCopy->Activate();
+  plateau.Depth->Activate();
+  const glm::mat4 clipToPlane(
+    glm::translate(glm::dmat4(1.0), -plane.Origin) * glm::inverse(this->WorldToClip));
+  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  const float planeToTexture[4] = { static_cast<float>(1.0 / size.x),
+    static_cast<float>(1.0 / size.y), static_cast<float>(-lo.x / size.x),
+    static_cast<float>(-lo.y / size.y) };
+  const glm::vec3 normal(plane.Normal), u(plane.U), v(plane.V);
+  resolve->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
+  resolve->SetUniformi("plateauTexture", plateau.Depth->GetTextureUnit());
+  resolve->SetUniformMatrix4x4("clipToPlane", const_cast<float*>(glm::value_ptr(clipToPlane)));
+  resolve->SetUniform2f("viewportSize", viewport);
+  resolve->SetUniform3f("planeNormal", glm::value_ptr(normal));
+  resolve->SetUniform3f("planeU", glm::value_ptr(u));
+  resolve->SetUniform3f("planeV", glm::value_ptr(v));
+  resolve->SetUniform4f("planeToTexture", planeToTexture);
+  resolve->SetUniformf("planeTolerance", static_cast<float>(tolerance));
+  resolve->SetUniformi("sinusoidal", self->GetPlateauFalloff() == PLATEAU_FALLOFF_SINUSOIDAL);
+  this->DrawFullScreen(resolve, this->PlateauResolveVAO);
+  plateau.Depth->Deactivate();
+  this->DepthCopy->Deactivate();
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  return static_cast<vtkIdType>(plateau.Triangles.size() / 3);
 }
 
 //------------------------------------------------------------------------------
@@ -1326,9 +1656,14 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.DepthStencil->ReleaseGraphicsResources(w);
   internals.DepthCopy->ReleaseGraphicsResources(w);
   internals.DepthCopyFramebuffer->ReleaseGraphicsResources(w);
+  internals.Plateau.Framebuffer->ReleaseGraphicsResources(w);
+  internals.Plateau.Depth->ReleaseGraphicsResources(w);
+  internals.Plateau.Vertices->ReleaseGraphicsResources();
+  internals.Plateau.VAO->ReleaseGraphicsResources();
+  internals.Plateau.VAOProgram = nullptr;
   internals.LightIntensity->ReleaseGraphicsResources(w);
   internals.FullScreenTriangle->ReleaseGraphicsResources();
-  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO })
+  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO })
   {
     vao->VAO->ReleaseGraphicsResources();
     vao->Program = nullptr;

@@ -91,19 +91,26 @@ public:
     /// Akenine-Moller and Assarsson: the hard shadow of the light's centre plus one penumbra
     /// wedge per silhouette edge, each adding that edge's exact share of the light seen from
     /// the pixel. One volume pass and one wedge pass per light.
-    METHOD_PENUMBRA_WEDGES = 3
+    METHOD_PENUMBRA_WEDGES = 3,
+    /// Haines' plateaus, for a planar receiver (an actor marked with SetShadowPlane, or the
+    /// plane set with SetReceiverPlaneOrigin/Normal and UseReceiverPlaneOn): the hard drop shadow plus cones and sheets around its
+    /// outline, rendered straight down the plane's normal into a texture where the darkest
+    /// primitive wins. Fast and smooth, with an umbra too large (no inner penumbra). Pixels
+    /// off the plane get the hard shadow of the light's centre.
+    METHOD_PLATEAUS = 4
   };
 
   ///@{
   /**
    * The method (default METHOD_AUTOMATIC).
    */
-  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_PENUMBRA_WEDGES);
+  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_PLATEAUS);
   vtkGetMacro(Method, int);
   void SetMethodToAutomatic() { this->SetMethod(METHOD_AUTOMATIC); }
   void SetMethodToHardVolumes() { this->SetMethod(METHOD_HARD_VOLUMES); }
   void SetMethodToAveragedHardShadows() { this->SetMethod(METHOD_AVERAGED_HARD_SHADOWS); }
   void SetMethodToPenumbraWedges() { this->SetMethod(METHOD_PENUMBRA_WEDGES); }
+  void SetMethodToPlateaus() { this->SetMethod(METHOD_PLATEAUS); }
   const char* GetMethodAsString();
   ///@}
 
@@ -114,6 +121,52 @@ public:
    */
   vtkSetClampMacro(LightSamples, int, 1, 4096);
   vtkGetMacro(LightSamples, int);
+  ///@}
+
+  /// How a plateau's depth t (0 at the hard shadow, 1 at the penumbra's edge) becomes light.
+  enum PlateauFalloffType
+  {
+    PLATEAU_FALLOFF_LINEAR = 0,    ///< intensity t
+    PLATEAU_FALLOFF_SINUSOIDAL = 1 ///< (1 - cos(pi t)) / 2: no crease at either end
+  };
+  ///@{
+  /**
+   * Falloff of METHOD_PLATEAUS (default sinusoidal, Haines' Figure 5).
+   */
+  vtkSetClampMacro(PlateauFalloff, int, PLATEAU_FALLOFF_LINEAR, PLATEAU_FALLOFF_SINUSOIDAL);
+  vtkGetMacro(PlateauFalloff, int);
+  void SetPlateauFalloffToLinear() { this->SetPlateauFalloff(PLATEAU_FALLOFF_LINEAR); }
+  void SetPlateauFalloffToSinusoidal() { this->SetPlateauFalloff(PLATEAU_FALLOFF_SINUSOIDAL); }
+  ///@}
+  ///@{
+  /**
+   * Width and height in texels of the plateau texture, which covers the shadows on the plane
+   * (default 1024).
+   */
+  vtkSetClampMacro(PlateauResolution, int, 16, 8192);
+  vtkGetMacro(PlateauResolution, int);
+  ///@}
+  ///@{
+  /**
+   * The receiver plane of METHOD_PLATEAUS, when UseReceiverPlane is on; otherwise the plane of
+   * the first visible actor marked with SetShadowPlane (its polydata must be flat).
+   */
+  vtkSetVector3Macro(ReceiverPlaneOrigin, double);
+  vtkGetVector3Macro(ReceiverPlaneOrigin, double);
+  vtkSetVector3Macro(ReceiverPlaneNormal, double);
+  vtkGetVector3Macro(ReceiverPlaneNormal, double);
+  vtkSetMacro(UseReceiverPlane, bool);
+  vtkGetMacro(UseReceiverPlane, bool);
+  vtkBooleanMacro(UseReceiverPlane, bool);
+  ///@}
+  ///@{
+  /**
+   * Marks a flat actor (a ground plane, a slice) as the receiver plane of METHOD_PLATEAUS,
+   * through its property keys; default false.
+   */
+  static void SetShadowPlane(vtkProp* prop, bool isPlane);
+  static bool GetShadowPlane(vtkProp* prop);
+  static vtkInformationIntegerKey* SHADOW_PLANE();
   ///@}
 
   ///@{
@@ -164,6 +217,8 @@ public:
   vtkGetMacro(NumberOfCulledShadows, int);
   /// Shadow volumes drawn with z-fail (caps) in the last frame; the rest used z-pass.
   vtkGetMacro(NumberOfZFailVolumes, int);
+  /// Plateau triangles (drop shadows, cones, sheets) drawn in the last frame.
+  vtkGetMacro(NumberOfPlateauTriangles, vtkIdType);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
@@ -193,6 +248,12 @@ protected:
   bool ShadowsEnabled = true;
   int Method = METHOD_AUTOMATIC;
   int LightSamples = 16;
+  int PlateauFalloff = PLATEAU_FALLOFF_SINUSOIDAL;
+  int PlateauResolution = 1024;
+  double ReceiverPlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double ReceiverPlaneNormal[3] = { 0.0, 0.0, 1.0 };
+  bool UseReceiverPlane = false;
+  vtkIdType NumberOfPlateauTriangles = 0;
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
   int NumberOfZFailVolumes = 0;
@@ -217,6 +278,7 @@ private:
   void UpdateCasters(const vtkRenderState* s);
   void RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
   void DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity);
+  bool FindReceiverPlane(vtkRenderer* renderer);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
