@@ -7,6 +7,8 @@
 #                     build/bench/ (results.csv, speed_vs_error.png); ARGS go to PenumbraBench
 #   ./build.sh fuzz [SECONDS]  also clang; libFuzzer on the geometry core for SECONDS (600) in
 #                     build-fuzz/ (corpus/, artifacts/); see Documentation/fuzzing.md
+#   ./build.sh load [ARGS]  build, run the load test (1000 actors, 8 lights, a 4M-triangle mesh)
+#                     into build/load/ (load.csv, one PNG per scene); ARGS go to PenumbraLoad
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -84,6 +86,11 @@ case "$cmd" in
     with_display "$BUILD_DIR/bin/PenumbraBench" --output "$BUILD_DIR/bench" "$@" ;;
   fuzz)
     run_fuzzer "${2:-600}" ;;
+  load)
+    shift
+    install_missing; configure_and_build
+    mkdir -p "$BUILD_DIR/load"
+    with_display "$BUILD_DIR/bin/PenumbraLoad" --output "$BUILD_DIR/load" "$@" ;;
   *)
-    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]|fuzz [SECONDS]}" >&2; exit 2 ;;
+    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]|fuzz [SECONDS]|load [PenumbraLoad options]}" >&2; exit 2 ;;
 esac
