@@ -12,6 +12,8 @@
 // window, one after the other. It writes
 //   DIR/results.csv            the table (columns below), one row per scene and method
 //   DIR/results_luminance.csv  the same with every method's error measured on luminance
+//   DIR/results_ground.csv     the visibility methods' error on the ground plane's pixels only
+//                              (where the planar methods, plateaus, shadow)
 //   DIR/truth.csv              per scene: truth samples, trace time and the truth's own noise
 //   DIR/README.md              what the columns mean, which rows use which error
 //   DIR/<scene>_<method>.png   still images (for the scenes --images selects)
@@ -130,8 +132,8 @@ void Usage(const char* program)
     "                        (default 10; at least 1 frame; the frames column says how many)\n"
     "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all)\n"
     "  --methods a,b,...     among none,shadowmap_1024,shadowmap_4096,hard_volumes,\n"
-    "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges (default\n"
-    "                        all of these);\n"
+    "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges,\n"
+    "                        plateaus (default all of these);\n"
     "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
     "                        shadow maps without the benchmark's square-bake fix\n"
     "  --radii r1,r2,...     light radii in world units (default 0.2,1); the scenes are ~10\n"
@@ -354,6 +356,8 @@ void AddGround(Scene& scene)
   plane->SetResolution(1, 1);
   auto ground = MakeActor(plane, 0.85, 0.85, 0.82);
   ground->GetProperty()->SetSpecular(0.0);
+  // The receiver plane of the planar methods (plateaus); other methods ignore the mark.
+  vtkSoftShadowPass::SetShadowPlane(ground, true);
   AddActor(scene, ground);
 }
 
@@ -580,6 +584,9 @@ std::vector<MethodSpec> AllMethods()
   // Penumbra wedges: the hard shadow of the light's centre plus one wedge per silhouette edge.
   methods.push_back({ "wedges",
     []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES, 1); } });
+  // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
+  methods.push_back({ "plateaus",
+    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });
   return methods;
 }
 
@@ -638,6 +645,7 @@ struct Row
   Timing Time;
   ErrorStats Error;          ///< the error results.csv reports
   ErrorStats Luminance;      ///< every method on luminance (results_luminance.csv)
+  ErrorStats Ground;         ///< visibility on the ground's pixels only (results_ground.csv)
   bool VisibilityMetric = false;
   long long ShadowTriangles = -1;
 };
@@ -656,9 +664,9 @@ void WriteCsvRow(std::FILE* file, const Row& row, const ErrorStats& e)
 
 void PrintTableHeader()
 {
-  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s\n", "method",
+  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s\n", "method",
     "frames", "median ms", "min ms", "x none", "MAE", "RMSE", "p99", "max", ">0.1", ">0.5",
-    "err", "pixels", "sv tris");
+    "err", "pixels", "sv tris", "gnd MAE");
 }
 
 void PrintTableRow(const Row& row, double noneMedian)
@@ -674,11 +682,16 @@ void PrintTableRow(const Row& row, double noneMedian)
   {
     std::snprintf(shadowTriangles, sizeof(shadowTriangles), "%lld", row.ShadowTriangles);
   }
+  char ground[32] = "-";
+  if (row.VisibilityMetric)
+  {
+    std::snprintf(ground, sizeof(ground), "%.4f", row.Ground.MAE);
+  }
   std::printf("  %-15s %6d %10.2f %10.2f %8s %8.4f %8.4f %7.3f %7.3f %6.2f%% %6.2f%%  %-4s %8zu "
-              "%10s\n",
+              "%10s %8s\n",
     row.Method.c_str(), row.Time.Frames, row.Time.Median, row.Time.Min, ratio, e.MAE, e.RMSE,
     e.P99, e.Max, 100.0 * e.FracGt01, 100.0 * e.FracGt05, row.VisibilityMetric ? "vis" : "lum",
-    e.Pixels, shadowTriangles);
+    e.Pixels, shadowTriangles, ground);
   std::fflush(stdout);
 }
 
@@ -826,14 +839,16 @@ int main(int argc, char* argv[])
   }
   std::FILE* csv = std::fopen((out + "/results.csv").c_str(), "w");
   std::FILE* lumCsv = std::fopen((out + "/results_luminance.csv").c_str(), "w");
+  std::FILE* groundCsv = std::fopen((out + "/results_ground.csv").c_str(), "w");
   std::FILE* truthCsv = std::fopen((out + "/truth.csv").c_str(), "w");
-  if (!csv || !lumCsv || !truthCsv)
+  if (!csv || !lumCsv || !groundCsv || !truthCsv)
   {
     std::fprintf(stderr, "error: cannot write the CSV files in %s\n", out.c_str());
     return EXIT_FAILURE;
   }
   std::fprintf(csv, "%s\n", CsvHeader);
   std::fprintf(lumCsv, "%s\n", CsvHeader);
+  std::fprintf(groundCsv, "%s\n", CsvHeader);
   std::fprintf(truthCsv,
     "scene,width,height,samples,trace_ms,noise_pixels,noise_mae,noise_p99,noise_max\n");
   if (!WriteReadme(out + "/README.md", options))
@@ -939,6 +954,20 @@ int main(int argc, char* argv[])
       const float* depthPointer =
         static_cast<const float*>(tracer->GetDepthImage()->GetScalarPointer());
       const std::vector<float> truthDepth(depthPointer, depthPointer + pixels);
+      // The same depth with everything but the ground (z = 0) as background: comparisons on
+      // the ground's pixels only.
+      std::vector<float> groundDepth(truthDepth);
+      for (std::size_t p = 0; p < pixels; ++p)
+      {
+        if (truthDepth[p] < 1.0f)
+        {
+          renderer->SetDisplayPoint(static_cast<double>(p % width) + 0.5,
+            static_cast<double>(p / width) + 0.5, truthDepth[p]);
+          renderer->DisplayToWorld();
+          const double* world = renderer->GetWorldPoint();
+          groundDepth[p] = std::abs(world[2] / world[3]) < 1e-3 ? truthDepth[p] : 1.0f;
+        }
+      }
       ErrorStats noise;
       if (options.NoiseCheck && radius > 0.0)
       {
@@ -1038,6 +1067,8 @@ int main(int argc, char* argv[])
             }
             row.Error = penumbra::metrics::CompareVisibility(
               v, truth.data(), truthDepth.data(), frame.Z.data(), pixels);
+            row.Ground = penumbra::metrics::CompareVisibility(
+              v, truth.data(), groundDepth.data(), frame.Z.data(), pixels);
             row.VisibilityMetric = true;
             if (spec.Name == "hard_volumes")
             {
@@ -1071,6 +1102,10 @@ int main(int argc, char* argv[])
         PrintTableRow(row, noneMedian);
         WriteCsvRow(csv, row, row.Error);
         WriteCsvRow(lumCsv, row, row.Luminance);
+        if (row.VisibilityMetric)
+        {
+          WriteCsvRow(groundCsv, row, row.Ground);
+        }
 
         renderer->SetPass(nullptr);
         if (method.Pass)
@@ -1106,6 +1141,7 @@ int main(int argc, char* argv[])
   }
   std::fclose(csv);
   std::fclose(lumCsv);
+  std::fclose(groundCsv);
   std::fclose(truthCsv);
 
   if (!oddities.empty())
@@ -1116,7 +1152,8 @@ int main(int argc, char* argv[])
       std::printf("  %s\n", line.c_str());
     }
   }
-  std::printf("\nwrote %s/results.csv, results_luminance.csv, truth.csv, README.md\n", out.c_str());
+  std::printf("\nwrote %s/results.csv, results_luminance.csv, results_ground.csv, truth.csv, "
+              "README.md\n", out.c_str());
 
   std::fflush(stdout);
   if (options.Plot)

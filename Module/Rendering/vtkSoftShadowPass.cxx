@@ -58,6 +58,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -304,6 +305,11 @@ public:
     std::set<vtkProp*> WarnedProps;
     bool WarnedNoPlane = false;
     std::vector<penumbra::PlateauVertex> Triangles;
+    /// What the triangles and the texture were made from (light, plane, casters' silhouettes
+    /// and matrices): while it holds, an orbiting camera redraws neither.
+    std::vector<double> Signature;
+    glm::dvec2 Lo{ 0.0 }, Hi{ 0.0 };
+    bool TextureCurrent = false;
     vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
     vtkNew<vtkTextureObject> Depth;
     vtkNew<vtkOpenGLBufferObject> Vertices;
@@ -313,6 +319,9 @@ public:
   /// Renders `light`'s plateaus over the receiver plane, then writes them into its LI layer at
   /// the pixels on the plane; returns the plateau triangles drawn.
   vtkIdType DrawPlateaus(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light);
+  /// Draws the current plateau triangles into the plateau texture over [lo, lo + size].
+  bool RenderPlateauTexture(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window,
+    const glm::dvec2& lo, const glm::dvec2& size);
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   int Layers = 0;
@@ -1381,78 +1390,20 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
   return false;
 }
 
-vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
-  vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light)
+bool vtkSoftShadowPass::vtkInternals::RenderPlateauTexture(vtkSoftShadowPass* self,
+  vtkOpenGLRenderWindow* window, const glm::dvec2& lo, const glm::dvec2& size)
 {
   PlateauState& plateau = this->Plateau;
-  // The plane faces the light, whichever way its polygons wind.
-  penumbra::ReceiverPlane plane = plateau.Plane;
-  const double lightSide = light.World.w != 0.0 ? plane.Height(glm::dvec3(light.World))
-                                                : glm::dot(plane.Normal, glm::dvec3(light.World));
-  if (lightSide < 0.0)
-  {
-    penumbra::ReceiverPlane::Make(plane.Origin, -plane.Normal, plane);
-  }
-  plateau.Triangles.clear();
-  for (penumbra::CasterCache* caster : this->Casters)
-  {
-    if (caster->Culled.count(light.Light) || caster->Actor == plateau.PlaneProp)
-    {
-      continue;
-    }
-    penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
-    volume.EnsureCaps(*caster->Mesh);
-    penumbra::BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld,
-      light.World, light.PlateauRadius, plane, plateau.Triangles);
-  }
-  if (plateau.Triangles.empty())
-  {
-    return 0;
-  }
-  // The texture covers the plateaus, within the receiver's extent when it has one.
-  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const penumbra::PlateauVertex& v : plateau.Triangles)
-  {
-    lo = glm::min(lo, glm::dvec2(v.U, v.V));
-    hi = glm::max(hi, glm::dvec2(v.U, v.V));
-  }
-  if (plateau.Bounded)
-  {
-    lo = glm::max(lo, plateau.Min);
-    hi = glm::min(hi, plateau.Max);
-  }
-  const glm::dvec2 size = hi - lo;
-  if (!(size.x > 0.0) || !(size.y > 0.0))
-  {
-    return 0;
-  }
-  const double tolerance = plateau.Bounded ? plateau.Tolerance : 1e-5 * glm::length(size);
-
-  vtkOpenGLState* ostate = window->GetState();
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(penumbraPlateauVS, penumbraPlateauFS, "");
   if (!program)
   {
     vtkErrorWithObjectMacro(self, "Could not compile the plateau shader.");
-    return 0;
+    return false;
   }
   const int resolution = self->GetPlateauResolution();
-  if (!plateau.Framebuffer->GetFBOIndex())
-  {
-    plateau.Framebuffer->SetContext(window);
-    plateau.Depth->SetContext(window);
-  }
-  if (static_cast<int>(plateau.Depth->GetWidth()) != resolution)
-  {
-    // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
-    plateau.Depth->SetMinificationFilter(vtkTextureObject::Linear);
-    plateau.Depth->SetMagnificationFilter(vtkTextureObject::Linear);
-    plateau.Depth->SetWrapS(vtkTextureObject::ClampToEdge);
-    plateau.Depth->SetWrapT(vtkTextureObject::ClampToEdge);
-    plateau.Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32);
-  }
-
-  // 1. The plateau texture: seen down the normal, the smallest depth (darkest) wins.
+  vtkOpenGLState* ostate = window->GetState();
+  // The plateau texture: seen down the normal, the smallest depth (darkest) wins.
   ostate->PushFramebufferBindings();
   plateau.Framebuffer->Bind();
   plateau.Framebuffer->AddDepthAttachment(plateau.Depth);
@@ -1485,6 +1436,94 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
   plateau.VAO->Release();
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->PopFramebufferBindings();
+
+  plateau.TextureCurrent = true;
+  return true;
+}
+
+vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
+  vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light)
+{
+  PlateauState& plateau = this->Plateau;
+  // The plane faces the light, whichever way its polygons wind.
+  penumbra::ReceiverPlane plane = plateau.Plane;
+  const double lightSide = light.World.w != 0.0 ? plane.Height(glm::dvec3(light.World))
+                                                : glm::dot(plane.Normal, glm::dvec3(light.World));
+  if (lightSide < 0.0)
+  {
+    penumbra::ReceiverPlane::Make(plane.Origin, -plane.Normal, plane);
+  }
+  const int resolution = self->GetPlateauResolution();
+  std::vector<double> signature = { light.World.x, light.World.y, light.World.z, light.World.w,
+    light.PlateauRadius, plane.Origin.x, plane.Origin.y, plane.Origin.z, plane.Normal.x,
+    plane.Normal.y, plane.Normal.z, static_cast<double>(resolution) };
+  std::vector<penumbra::CasterCache*> casters;
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light) || caster->Actor == plateau.PlaneProp)
+    {
+      continue;
+    }
+    casters.push_back(caster);
+    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(caster)));
+    signature.push_back(static_cast<double>(caster->Volumes[light.VolumeKey(0)].Generation));
+    const double* m = glm::value_ptr(caster->ObjectToWorld);
+    signature.insert(signature.end(), m, m + 16);
+  }
+  const bool unchanged = signature == plateau.Signature;
+  if (!unchanged)
+  {
+    plateau.Signature = signature;
+    plateau.TextureCurrent = false;
+    plateau.Triangles.clear();
+    for (penumbra::CasterCache* caster : casters)
+    {
+      penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
+      volume.EnsureCaps(*caster->Mesh);
+      penumbra::BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld,
+        light.World, light.PlateauRadius, plane, plateau.Triangles);
+    }
+    // The texture covers the plateaus, within the receiver's extent when it has one.
+    plateau.Lo = glm::dvec2(std::numeric_limits<double>::max());
+    plateau.Hi = -plateau.Lo;
+    for (const penumbra::PlateauVertex& v : plateau.Triangles)
+    {
+      plateau.Lo = glm::min(plateau.Lo, glm::dvec2(v.U, v.V));
+      plateau.Hi = glm::max(plateau.Hi, glm::dvec2(v.U, v.V));
+    }
+    if (plateau.Bounded)
+    {
+      plateau.Lo = glm::max(plateau.Lo, plateau.Min);
+      plateau.Hi = glm::min(plateau.Hi, plateau.Max);
+    }
+  }
+  const glm::dvec2 lo = plateau.Lo, size = plateau.Hi - plateau.Lo;
+  if (plateau.Triangles.empty() || !(size.x > 0.0) || !(size.y > 0.0))
+  {
+    return 0;
+  }
+  const double tolerance = plateau.Bounded ? plateau.Tolerance : 1e-5 * glm::length(size);
+
+  vtkOpenGLState* ostate = window->GetState();
+  if (!plateau.Framebuffer->GetFBOIndex())
+  {
+    plateau.Framebuffer->SetContext(window);
+    plateau.Depth->SetContext(window);
+  }
+  if (static_cast<int>(plateau.Depth->GetWidth()) != resolution)
+  {
+    // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
+    plateau.Depth->SetMinificationFilter(vtkTextureObject::Linear);
+    plateau.Depth->SetMagnificationFilter(vtkTextureObject::Linear);
+    plateau.Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    plateau.Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    plateau.Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32);
+    plateau.TextureCurrent = false;
+  }
+  if (!plateau.TextureCurrent && !this->RenderPlateauTexture(self, window, lo, size))
+  {
+    return 0;
+  }
 
   // 2. Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
   vtkShaderProgram* resolve =
@@ -1661,6 +1700,8 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Plateau.Vertices->ReleaseGraphicsResources();
   internals.Plateau.VAO->ReleaseGraphicsResources();
   internals.Plateau.VAOProgram = nullptr;
+  internals.Plateau.TextureCurrent = false;
+  internals.Plateau.Signature.clear();
   internals.LightIntensity->ReleaseGraphicsResources(w);
   internals.FullScreenTriangle->ReleaseGraphicsResources();
   for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO })
