@@ -125,7 +125,9 @@ void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& k
   ground->SetOrigin(-4, 0, -4);
   ground->SetPoint1(4, 0, -4);
   ground->SetPoint2(-4, 0, 4);
-  renderer->AddActor(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
+  auto groundActor = penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8);
+  vtkSoftShadowPass::SetShadowPlane(groundActor, true); // for the plateaus variant
+  renderer->AddActor(groundActor);
   vtkNew<vtkCubeSource> box;
   box->SetCenter(1.2, 0.5, -0.5);
   box->SetXLength(0.8);
@@ -168,7 +170,8 @@ int main(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    std::fprintf(stderr, "usage: %s scientific|awkward|soft baseline.png output-dir\n", argv[0]);
+    std::fprintf(
+      stderr, "usage: %s scientific|awkward|soft|plateaus baseline.png output-dir\n", argv[0]);
     return 2;
   }
   const std::string scene = argv[1];
@@ -185,10 +188,15 @@ int main(int argc, char* argv[])
     ScientificScene(renderer, keep);
     renderer->ResetCameraClippingRange();
   }
-  else if (scene == "soft")
+  else if (scene == "soft" || scene == "plateaus")
   {
+    // The same scene with Haines' plateaus on the ground plane.
     SoftScene(renderer, keep);
     renderer->ResetCameraClippingRange();
+    if (scene == "plateaus")
+    {
+      pass->SetMethodToPlateaus();
+    }
   }
   else
   {
