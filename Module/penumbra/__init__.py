@@ -7,3 +7,4 @@
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL factories first)
 
 from .vtkPenumbraRendering import *  # noqa: F401,F403
+from .vtkPenumbraFilters import *  # noqa: F401,F403
