@@ -26,13 +26,18 @@
 #include "penumbraMetrics.h"
 #include "penumbraShadowMap.h"
 
+#include "vtkPlanarSoftShadowFilter.h"
 #include "vtkRayTracedVisibility.h"
 #include "vtkSoftShadowPass.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAppendPolyData.h"
 #include "vtkArrowSource.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellLocator.h"
+#include "vtkGenericCell.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
@@ -41,6 +46,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricTorus.h"
@@ -55,9 +61,12 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -66,6 +75,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -133,7 +143,8 @@ void Usage(const char* program)
     "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all)\n"
     "  --methods a,b,...     among none,shadowmap_1024,shadowmap_4096,hard_volumes,\n"
     "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges,\n"
-    "                        plateaus (default all of these);\n"
+    "                        plateaus, planar_filter_16, planar_filter_64 (default all of\n"
+    "                        these);\n"
     "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
     "                        shadow maps without the benchmark's square-bake fix\n"
     "  --radii r1,r2,...     light radii in world units (default 0.2,1); the scenes are ~10\n"
@@ -524,7 +535,19 @@ struct MethodInstance
   vtkSmartPointer<vtkRenderPass> Pass;              ///< installed with renderer->SetPass
   std::function<vtkImageData*()> Visibility;       ///< empty: scored on luminance
   std::function<long long()> ShadowTriangles;      ///< empty: not applicable
+  /// Scene changes the method makes (a decal actor) and takes back; empty: none.
+  std::function<void(vtkRenderer*)> Attach, Detach;
 };
+
+/// What the planar filter's visibility needs from the loop: the ground's pixels, and where they
+/// are on the ground, found where the truth was traced (later renders may move the clipping
+/// planes, and with them what a window depth means).
+struct GroundView
+{
+  std::vector<std::size_t> Pixels;
+  std::vector<std::array<double, 2>> Points; ///< world (x, y) of each, z = 0
+};
+GroundView CurrentGround;
 
 struct MethodSpec
 {
@@ -553,6 +576,125 @@ MethodInstance MakeSoftShadow(int method, int samples)
   instance.Visibility = [raw]() { return raw->GetVisibilityImage(0); };
   instance.ShadowTriangles = [raw]() {
     return static_cast<long long>(raw->GetNumberOfShadowVolumeTriangles());
+  };
+  return instance;
+}
+
+/**
+ * vtkPlanarSoftShadowFilter with `samples` light samples: the casters' soft shadow on the ground
+ * (z = 0) as triangles, drawn as a translucent black decal over the ground, which then takes no
+ * shadow from the pass; every other surface gets the pass's hard shadows. Its visibility is the
+ * filter's LightIntensity at the ground's pixels and the hard shadow elsewhere. The filter runs
+ * when the method is attached (light and casters stand still while the camera orbits); its time
+ * is printed.
+ */
+MethodInstance MakePlanarFilter(int samples)
+{
+  MethodInstance instance = MakeSoftShadow(vtkSoftShadowPass::METHOD_HARD_VOLUMES, 1);
+  auto pass = vtkSoftShadowPass::SafeDownCast(instance.Pass);
+  auto filter = vtkSmartPointer<vtkPlanarSoftShadowFilter>::New();
+  auto decal = vtkSmartPointer<vtkActor>::New();
+  auto ground = std::make_shared<vtkSmartPointer<vtkActor>>();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  instance.Attach = [=](vtkRenderer* renderer) {
+    vtkNew<vtkAppendPolyData> casters;
+    vtkActorCollection* actors = renderer->GetActors();
+    vtkCollectionSimpleIterator it;
+    vtkActor* actor;
+    for (actors->InitTraversal(it); (actor = actors->GetNextActor(it));)
+    {
+      if (vtkSoftShadowPass::GetShadowPlane(actor))
+      {
+        *ground = actor;
+        continue;
+      }
+      vtkNew<vtkTransform> toWorld;
+      toWorld->SetMatrix(actor->GetMatrix());
+      vtkNew<vtkTransformPolyDataFilter> place;
+      place->SetTransform(toWorld);
+      place->SetInputData(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
+      place->Update();
+      casters->AddInputData(place->GetOutput());
+    }
+    vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+    filter->SetInputConnection(casters->GetOutputPort());
+    filter->SetLightPosition(light->GetPosition());
+    filter->SetPositional(light->GetPositional());
+    filter->SetLightRadius(vtkSoftShadowPass::GetLightRadius(light));
+    filter->SetLightSamples(samples);
+    filter->SetPlaneOrigin(0, 0, 0);
+    filter->SetPlaneNormal(0, 0, 1);
+    filter->SetOffset(1e-3);
+    const auto start = Clock::now();
+    filter->Update();
+    std::printf("  (planar_filter_%d: filter update %.1f ms, %lld triangles)\n", samples,
+      1000.0 * SecondsSince(start), static_cast<long long>(filter->GetOutput()->GetNumberOfCells()));
+    // Black with alpha (1 - intensity): the ground darkened as far as the light is hidden.
+    vtkNew<vtkLookupTable> shade;
+    shade->SetTableRange(0.0, 1.0);
+    shade->SetHueRange(0.0, 0.0);
+    shade->SetSaturationRange(0.0, 0.0);
+    shade->SetValueRange(0.0, 0.0);
+    shade->SetAlphaRange(0.8, 0.0);
+    shade->Build();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(filter->GetOutputPort());
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray("LightIntensity");
+    mapper->SetLookupTable(shade);
+    mapper->SetScalarRange(0.0, 1.0);
+    mapper->SetColorModeToMapScalars();
+    decal->SetMapper(mapper);
+    decal->GetProperty()->SetLighting(false);
+    decal->ForceTranslucentOn();
+    vtkSoftShadowPass::SetCastsShadows(decal, false);
+    renderer->AddActor(decal);
+    if (*ground)
+    {
+      vtkSoftShadowPass::SetReceivesShadows(*ground, false);
+    }
+  };
+  instance.Detach = [=](vtkRenderer* renderer) {
+    renderer->RemoveActor(decal);
+    if (*ground)
+    {
+      vtkSoftShadowPass::SetReceivesShadows(*ground, true);
+    }
+  };
+  vtkSoftShadowPass* raw = pass;
+  instance.Visibility = [=]() -> vtkImageData* {
+    vtkImageData* hard = raw->GetVisibilityImage(0);
+    const GroundView& view = CurrentGround;
+    if (!hard)
+    {
+      return hard;
+    }
+    image->DeepCopy(hard);
+    auto values = static_cast<float*>(image->GetScalarPointer());
+    // The ground's pixels as points on the decal's plane, located in the filter's triangles.
+    vtkPolyData* shadow = filter->GetOutput();
+    vtkDataArray* intensity = shadow->GetPointData()->GetArray("LightIntensity");
+    vtkNew<vtkCellLocator> locator;
+    locator->SetDataSet(shadow);
+    locator->BuildLocator();
+    vtkNew<vtkGenericCell> cell;
+    for (std::size_t i = 0; i < view.Pixels.size(); ++i)
+    {
+      double point[3] = { view.Points[i][0], view.Points[i][1], filter->GetOffset() };
+      double pcoords[3], weights[3];
+      const vtkIdType id = intensity ? locator->FindCell(point, 1e-12, cell, pcoords, weights) : -1;
+      double v = 1.0; // outside the filter's triangles the ground is lit
+      if (id >= 0)
+      {
+        v = 0.0;
+        for (vtkIdType k = 0; k < cell->GetNumberOfPoints() && k < 3; ++k)
+        {
+          v += weights[k] * intensity->GetTuple1(cell->GetPointId(k));
+        }
+      }
+      values[view.Pixels[i]] = static_cast<float>(v);
+    }
+    return image;
   };
   return instance;
 }
@@ -587,6 +729,12 @@ std::vector<MethodSpec> AllMethods()
   // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
   methods.push_back({ "plateaus",
     []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });
+  // The triangulated geometric soft shadow on the ground (vtkPlanarSoftShadowFilter).
+  for (int samples : { 16, 64 })
+  {
+    methods.push_back({ "planar_filter_" + std::to_string(samples),
+      [samples]() { return MakePlanarFilter(samples); } });
+  }
   return methods;
 }
 
@@ -957,6 +1105,7 @@ int main(int argc, char* argv[])
       // The same depth with everything but the ground (z = 0) as background: comparisons on
       // the ground's pixels only.
       std::vector<float> groundDepth(truthDepth);
+      CurrentGround = GroundView();
       for (std::size_t p = 0; p < pixels; ++p)
       {
         if (truthDepth[p] < 1.0f)
@@ -965,7 +1114,13 @@ int main(int argc, char* argv[])
             static_cast<double>(p / width) + 0.5, truthDepth[p]);
           renderer->DisplayToWorld();
           const double* world = renderer->GetWorldPoint();
-          groundDepth[p] = std::abs(world[2] / world[3]) < 1e-3 ? truthDepth[p] : 1.0f;
+          const bool onGround = std::abs(world[2] / world[3]) < 1e-3;
+          groundDepth[p] = onGround ? truthDepth[p] : 1.0f;
+          if (onGround)
+          {
+            CurrentGround.Pixels.push_back(p);
+            CurrentGround.Points.push_back({ world[0] / world[3], world[1] / world[3] });
+          }
         }
       }
       ErrorStats noise;
@@ -1015,6 +1170,10 @@ int main(int argc, char* argv[])
       {
         MethodInstance method = spec.Make();
         renderer->SetPass(method.Pass);
+        if (method.Attach)
+        {
+          method.Attach(renderer);
+        }
         resetCamera();
         // The error is measured on the second frame at the starting camera (the first builds
         // shaders, silhouettes, shadow maps), or on the first where that took more than 2 s.
@@ -1108,6 +1267,10 @@ int main(int argc, char* argv[])
         }
 
         renderer->SetPass(nullptr);
+        if (method.Detach)
+        {
+          method.Detach(renderer);
+        }
         if (method.Pass)
         {
           method.Pass->ReleaseGraphicsResources(window);
