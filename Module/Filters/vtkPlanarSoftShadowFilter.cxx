@@ -810,14 +810,23 @@ int vtkPlanarSoftShadowFilter::RequestData(
     for (int i = 0; i < 3; ++i)
     {
       const CDT::Vertex_handle v = f->vertex(i);
-      vtkIdType& id = pointOf[region][v->info()];
+      // A penumbra face between rings c - 1/2 and c + 1/2 (in samples) keeps its corners in that
+      // band. Where many rings meet in one vertex (a caster standing on the plane: every sample's
+      // outline passes through its contact corners) the vertex's mean coverage belongs to none
+      // of the faces around it, and long faces would carry it far along their ring (measured
+      // 0.34 off the truth across a tall box's shadow). Such a corner gets a point of its own.
+      const double shared = value[v->info()];
+      const double banded = region == 1 ? std::min(c + 0.5, std::max(c - 0.5, shared)) : shared;
+      const bool own = std::abs(banded - shared) > 1e-9;
+      vtkIdType ownId = -1;
+      vtkIdType& id = own ? ownId : pointOf[region][v->info()];
       if (id < 0)
       {
         id = static_cast<vtkIdType>(result.Points.size());
         result.Points.push_back(ToDouble(v->point()));
         const double lit = region == 0 ? 0.0
           : region == 2               ? 1.0
-                                      : 1.0 - value[v->info()] / count;
+                                      : 1.0 - banded / count;
         result.Intensity.push_back(static_cast<float>(std::min(1.0, std::max(0.0, lit))));
       }
       result.Triangles.push_back(id);
