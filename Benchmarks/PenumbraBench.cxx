@@ -89,7 +89,8 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
+using penumbra::bench::Clock;
+using penumbra::bench::SecondsSince;
 using penumbra::metrics::ErrorStats;
 using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
@@ -99,11 +100,6 @@ using penumbra::bench::Timing;
 using penumbra::bench::WriteGrey;
 using penumbra::bench::WritePNG;
 using penumbra::bench::WriteRGB;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 //--------------------------------------------------------------------------------------------------
 // Options

@@ -77,17 +77,13 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
+using penumbra::bench::Clock;
+using penumbra::bench::SecondsSince;
 using penumbra::bench::CountTriangles;
 using penumbra::bench::GrabFrame;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteRGB;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 double MillisecondsSince(Clock::time_point start)
 {

@@ -12,6 +12,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -21,6 +22,14 @@ namespace penumbra
 {
 namespace bench
 {
+
+using Clock = std::chrono::steady_clock;
+
+/// Seconds elapsed since `start`.
+inline double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 /// Triangles a polydata draws (polygons and strips fanned into triangles).
 inline vtkIdType CountTriangles(vtkPolyData* data)

@@ -3,6 +3,8 @@
 // degrees (directional), as vtkSoftShadowPass::SetLightRadius takes them.
 #include "penumbraHardCases.h"
 
+#include "penumbraTestHarness.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
@@ -57,18 +59,7 @@ const char* MethodName(int method)
 //------------------------------------------------------------------------------
 CaseScene::CaseScene(int width, int height)
 {
-  // One X connection for every window (Xvfb refuses rapid reconnects).
-  static vtkSmartPointer<vtkRenderWindow> anchor;
-  if (!anchor)
-  {
-    anchor = vtkSmartPointer<vtkRenderWindow>::New();
-    anchor->SetOffScreenRendering(1);
-    anchor->SetSize(1, 1);
-    anchor->Render();
-  }
-  this->Window = vtkSmartPointer<vtkRenderWindow>::New();
-  this->Window->SetDisplayId(anchor->GetGenericDisplayId());
-  this->Window->SetOffScreenRendering(1);
+  this->Window = penumbra_test::NewRenderWindow(); // one X connection for all windows
   this->Window->SetMultiSamples(0);
   this->Window->SetSize(width, height);
   this->AddRenderer(0, 0, 1, 1);
