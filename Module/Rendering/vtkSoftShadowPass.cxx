@@ -1470,8 +1470,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
     const double* m = glm::value_ptr(caster->ObjectToWorld);
     signature.insert(signature.end(), m, m + 16);
   }
-  const bool unchanged = signature == plateau.Signature;
-  if (!unchanged)
+  if (signature != plateau.Signature)
   {
     plateau.Signature = signature;
     plateau.TextureCurrent = false;
@@ -1525,7 +1524,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
     return 0;
   }
 
-  // 2. Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
+  // Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
   vtkShaderProgram* resolve =
     window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraPlateauResolveFS, "");
   if (!resolve)
