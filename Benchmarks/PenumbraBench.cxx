@@ -94,6 +94,9 @@ using penumbra::bench::SecondsSince;
 using penumbra::metrics::ErrorStats;
 using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
+using penumbra::bench::ParseDouble;
+using penumbra::bench::ParseInt;
+using penumbra::bench::SplitList;
 using penumbra::bench::GrabFrame;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
@@ -152,44 +155,6 @@ void Usage(const char* program)
     "  --quick               smoke test: 320x240, 3 frames, 1 warm-up, 64 truth samples,\n"
     "                        5 s timing cap, no averaged_256 unless --methods names it\n",
     program, PENUMBRA_BENCH_DEFAULT_OUTPUT);
-}
-
-std::vector<std::string> SplitList(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');)
-  {
-    if (!item.empty())
-    {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
-bool ParseInt(const char* text, int minimum, int maximum, int& value)
-{
-  char* end = nullptr;
-  const long parsed = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || parsed < minimum || parsed > maximum)
-  {
-    return false;
-  }
-  value = static_cast<int>(parsed);
-  return true;
-}
-
-bool ParseDouble(const char* text, double minimum, double& value)
-{
-  char* end = nullptr;
-  const double parsed = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(parsed) || parsed < minimum)
-  {
-    return false;
-  }
-  value = parsed;
-  return true;
 }
 
 bool ParseArguments(int argc, char* argv[], Options& options)
@@ -329,22 +294,7 @@ struct Scene
 
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
-  source->Update();
-  vtkPolyData* data = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
-  vtkNew<vtkPolyData> copy;
-  copy->ShallowCopy(data);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(copy);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  vtkProperty* property = actor->GetProperty();
-  property->SetColor(r, g, b);
-  property->SetAmbient(0.15);
-  property->SetDiffuse(0.85);
-  property->SetSpecular(0.2);
-  property->SetSpecularPower(30.0);
-  return actor;
+  return penumbra::bench::MakeShadedActor(penumbra::bench::DetachedOutput(source), r, g, b);
 }
 
 void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)

@@ -80,7 +80,10 @@ namespace
 using penumbra::bench::Clock;
 using penumbra::bench::SecondsSince;
 using penumbra::bench::CountTriangles;
+using penumbra::bench::DetachedOutput;
+using penumbra::bench::MakeShadedActor;
 using penumbra::bench::GrabFrame;
+using penumbra::bench::SplitList;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteRGB;
@@ -214,20 +217,6 @@ void Usage(const char* program)
     program);
 }
 
-std::vector<std::string> SplitList(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');)
-  {
-    if (!item.empty())
-    {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
 bool ParseArguments(int argc, char* argv[], Options& options)
 {
   bool sizeGiven = false, framesGiven = false, jobsGiven = false;
@@ -345,31 +334,6 @@ struct Scene
   double CameraPosition[3], CameraFocalPoint[3], CameraViewAngle = 30.0;
 };
 
-vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* data, double r, double g, double b)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  vtkProperty* property = actor->GetProperty();
-  property->SetColor(r, g, b);
-  property->SetAmbient(0.15);
-  property->SetDiffuse(0.85);
-  property->SetSpecular(0.2);
-  property->SetSpecularPower(30.0);
-  return actor;
-}
-
-/// The algorithm's output, detached from the pipeline (a mapper holding it keeps it alive).
-vtkSmartPointer<vtkPolyData> Output(vtkPolyDataAlgorithm* source)
-{
-  source->Update();
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->ShallowCopy(source->GetOutput());
-  return data;
-}
-
 void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
 {
   scene.Triangles +=
@@ -383,7 +347,7 @@ void AddGround(Scene& scene, double halfX, double halfY)
   plane->SetOrigin(-halfX, -halfY, 0.0);
   plane->SetPoint1(halfX, -halfY, 0.0);
   plane->SetPoint2(-halfX, halfY, 0.0);
-  auto ground = MakeActor(Output(plane), 0.85, 0.85, 0.82);
+  auto ground = MakeShadedActor(DetachedOutput(plane), 0.85, 0.85, 0.82);
   ground->GetProperty()->SetSpecular(0.0);
   AddActor(scene, ground);
 }
@@ -433,7 +397,8 @@ Scene MakeActors1000()
   vtkNew<vtkConeSource> cone;
   cone->SetResolution(16);
   cone->SetDirection(0.0, 0.0, 1.0);
-  const vtkSmartPointer<vtkPolyData> shared[3] = { Output(sphere), Output(cube), Output(cone) };
+  const vtkSmartPointer<vtkPolyData> shared[3] = { DetachedOutput(sphere), DetachedOutput(cube),
+    DetachedOutput(cone) };
 
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -455,26 +420,27 @@ Scene MakeActors1000()
         own->SetThetaResolution(10 + i % 9);
         own->SetPhiResolution(8 + i % 7);
         own->SetRadius(0.5);
-        data = Output(own);
+        data = DetachedOutput(own);
       }
       else if (kind == 1)
       {
         vtkNew<vtkCubeSource> own;
         own->SetXLength(0.6 + 0.4 * unit(random));
         own->SetYLength(0.6 + 0.4 * unit(random));
-        data = Output(own);
+        data = DetachedOutput(own);
       }
       else
       {
         vtkNew<vtkConeSource> own;
         own->SetResolution(6 + i % 13);
         own->SetDirection(0.0, 0.0, 1.0);
-        data = Output(own);
+        data = DetachedOutput(own);
       }
     }
     datasets.insert(data);
     const double hue = unit(random);
-    auto actor = MakeActor(data, 0.45 + 0.5 * hue, 0.35 + 0.4 * (1.0 - hue), 0.3 + 0.5 * unit(random));
+    auto actor = MakeShadedActor(
+      data, 0.45 + 0.5 * hue, 0.35 + 0.4 * (1.0 - hue), 0.3 + 0.5 * unit(random));
     actor->SetScale(size);
     // Spheres float (their shadows fall away from them), cubes and cones stand on the ground.
     const double z = kind == 0 ? 0.3 + 1.2 * unit(random) : 0.5 * size;
@@ -554,7 +520,7 @@ Scene MakeLights8()
   Scene scene;
   scene.Name = "lights8";
   AddGround(scene, 10.0, 10.0);
-  auto ring = MakeActor(MakeTorus(1.2, 0.4, 96, 48), 0.85, 0.85, 0.85);
+  auto ring = MakeShadedActor(MakeTorus(1.2, 0.4, 96, 48), 0.85, 0.85, 0.85);
   ring->RotateX(60.0);
   ring->SetPosition(0.0, 0.0, 2.0);
   AddActor(scene, ring);
@@ -569,13 +535,13 @@ Scene MakeLights8()
     sphere->SetRadius(b.R);
     sphere->SetThetaResolution(48);
     sphere->SetPhiResolution(24);
-    AddActor(scene, MakeActor(Output(sphere), 0.9, 0.9, 0.9));
+    AddActor(scene, MakeShadedActor(DetachedOutput(sphere), 0.9, 0.9, 0.9));
   }
   vtkNew<vtkCubeSource> box;
   box->SetXLength(1.0);
   box->SetYLength(1.0);
   box->SetZLength(2.4);
-  auto boxActor = MakeActor(Output(box), 0.9, 0.9, 0.9);
+  auto boxActor = MakeShadedActor(DetachedOutput(box), 0.9, 0.9, 0.9);
   boxActor->SetPosition(1.5, -2.0, 1.2);
   boxActor->RotateZ(25.0);
   AddActor(scene, boxActor);
@@ -584,7 +550,7 @@ Scene MakeLights8()
   cone->SetHeight(1.8);
   cone->SetRadius(0.7);
   cone->SetDirection(0.0, 0.0, 1.0);
-  auto coneActor = MakeActor(Output(cone), 0.9, 0.9, 0.9);
+  auto coneActor = MakeShadedActor(DetachedOutput(cone), 0.9, 0.9, 0.9);
   coneActor->SetPosition(-2.0, -2.2, 0.9);
   AddActor(scene, coneActor);
   scene.Datasets = 6;
@@ -628,7 +594,7 @@ Scene MakeMesh(bool smoke)
   scene.Name = "mesh4m";
   scene.DefaultFrames = 3;
   AddGround(scene, 8.0, 8.0);
-  auto actor = MakeActor(
+  auto actor = MakeShadedActor(
     smoke ? MakeTorus(2.4, 0.8, 1000, 500) : MakeTorus(2.4, 0.8, 2000, 1000), 0.75, 0.75, 0.80);
   actor->RotateX(35.0);
   actor->SetPosition(0.0, 0.0, 2.6);

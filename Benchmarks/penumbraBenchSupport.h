@@ -1,20 +1,28 @@
-// Header-only helpers shared by PenumbraBench and the demo (Examples/PenumbraDemo.cxx): triangle
-// counts, frame-time summaries, frame grabs and PNG output.
+// Header-only helpers shared by PenumbraBench, PenumbraLoad, the demo (Examples/PenumbraDemo.cxx)
+// and the hard-case suite: command-line parsing, triangle counts, frame-time summaries, frame
+// grabs and PNG output.
 #ifndef penumbraBenchSupport_h
 #define penumbraBenchSupport_h
 
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +37,75 @@ using Clock = std::chrono::steady_clock;
 inline double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The non-empty items of a comma-separated list.
+inline std::vector<std::string> SplitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+/// Parses a whole string as an integer in [minimum, maximum]; false (value untouched) otherwise.
+inline bool ParseInt(const char* text, int minimum, int maximum, int& value)
+{
+  char* end = nullptr;
+  const long parsed = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || parsed < minimum || parsed > maximum)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+/// Parses a whole string as a finite number >= minimum; false (value untouched) otherwise.
+inline bool ParseDouble(const char* text, double minimum, double& value)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(parsed) || parsed < minimum)
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+/// The algorithm's polydata output, detached from the pipeline (a mapper holding it keeps it
+/// alive, and later pipeline updates do not change it).
+inline vtkSmartPointer<vtkPolyData> DetachedOutput(vtkAlgorithm* source)
+{
+  source->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(vtkPolyData::SafeDownCast(source->GetOutputDataObject(0)));
+  return data;
+}
+
+/// An actor drawing `data` in one colour with the benchmarks' material (ambient 0.15, diffuse
+/// 0.85, a little specular), ignoring its scalars.
+inline vtkSmartPointer<vtkActor> MakeShadedActor(vtkPolyData* data, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(r, g, b);
+  property->SetAmbient(0.15);
+  property->SetDiffuse(0.85);
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(30.0);
+  return actor;
 }
 
 /// Triangles a polydata draws (polygons and strips fanned into triangles).

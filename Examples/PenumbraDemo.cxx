@@ -58,6 +58,7 @@
 using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
 using penumbra::bench::GrabFrame;
+using penumbra::bench::ParseInt;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteGrey;
@@ -85,18 +86,6 @@ void Usage(const char* program)
     program);
 }
 
-bool ParseInt(const char* text, int minimum, int& value)
-{
-  char* end = nullptr;
-  const long parsed = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || parsed < minimum || parsed > 16384)
-  {
-    return false;
-  }
-  value = static_cast<int>(parsed);
-  return true;
-}
-
 bool ParseArguments(int argc, char* argv[], Options& options)
 {
   for (int i = 1; i < argc; ++i)
@@ -120,19 +109,19 @@ bool ParseArguments(int argc, char* argv[], Options& options)
     }
     else if (arg == "--width")
     {
-      ok = ParseInt(value, 16, options.Width);
+      ok = ParseInt(value, 16, 16384, options.Width);
     }
     else if (arg == "--height")
     {
-      ok = ParseInt(value, 16, options.Height);
+      ok = ParseInt(value, 16, 16384, options.Height);
     }
     else if (arg == "--frames")
     {
-      ok = ParseInt(value, 1, options.Frames);
+      ok = ParseInt(value, 1, 16384, options.Frames);
     }
     else if (arg == "--truth-samples")
     {
-      ok = ParseInt(value, 1, options.TruthSamples);
+      ok = ParseInt(value, 1, 16384, options.TruthSamples);
     }
     else
     {
