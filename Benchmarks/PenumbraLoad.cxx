@@ -38,7 +38,6 @@
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -80,6 +79,7 @@ namespace
 using penumbra::bench::Clock;
 using penumbra::bench::SecondsSince;
 using penumbra::bench::CountTriangles;
+using penumbra::bench::vtkCountingOutputWindow;
 using penumbra::bench::DetachedOutput;
 using penumbra::bench::MakeShadedActor;
 using penumbra::bench::GrabFrame;
@@ -94,54 +94,6 @@ double MillisecondsSince(Clock::time_point start)
 }
 
 constexpr double MiB = 1024.0 * 1024.0;
-
-//--------------------------------------------------------------------------------------------------
-// Logged errors and warnings: an output window that counts them (and still prints them).
-//--------------------------------------------------------------------------------------------------
-class vtkCountingOutputWindow : public vtkOutputWindow
-{
-public:
-  static vtkCountingOutputWindow* New();
-  vtkTypeMacro(vtkCountingOutputWindow, vtkOutputWindow);
-
-  void DisplayErrorText(const char* text) override
-  {
-    ++this->Errors;
-    this->Keep(text);
-    this->Superclass::DisplayErrorText(text);
-  }
-  void DisplayWarningText(const char* text) override
-  {
-    ++this->Warnings;
-    this->Keep(text);
-    this->Superclass::DisplayWarningText(text);
-  }
-  void DisplayGenericWarningText(const char* text) override
-  {
-    ++this->Warnings;
-    this->Keep(text);
-    this->Superclass::DisplayGenericWarningText(text);
-  }
-
-  int Errors = 0;
-  int Warnings = 0;
-  std::string First; ///< the first message since the last Reset
-  void Reset()
-  {
-    this->Errors = this->Warnings = 0;
-    this->First.clear();
-  }
-
-private:
-  void Keep(const char* text)
-  {
-    if (this->First.empty() && text)
-    {
-      this->First = text;
-    }
-  }
-};
-vtkStandardNewMacro(vtkCountingOutputWindow);
 
 /// GL errors pending in the current context (VTK 9.1 from Debian does not check them itself).
 int DrainGLErrors(vtkRenderWindow* window)

@@ -9,6 +9,8 @@
 #include "vtkCellArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -38,6 +40,64 @@ inline double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+/**
+ * An output window that counts the errors and warnings VTK logs, and still prints them, so that a
+ * run can report them and fail on them. Install it with vtkOutputWindow::SetInstance.
+ */
+class vtkCountingOutputWindow : public vtkOutputWindow
+{
+public:
+  static vtkCountingOutputWindow* New() { VTK_STANDARD_NEW_BODY(vtkCountingOutputWindow); }
+  vtkTypeMacro(vtkCountingOutputWindow, vtkOutputWindow);
+
+  void DisplayErrorText(const char* text) override
+  {
+    ++this->Errors;
+    this->Keep(text, true);
+    this->Superclass::DisplayErrorText(text);
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    ++this->Warnings;
+    this->Keep(text, false);
+    this->Superclass::DisplayWarningText(text);
+  }
+  void DisplayGenericWarningText(const char* text) override
+  {
+    ++this->Warnings;
+    this->Keep(text, false);
+    this->Superclass::DisplayGenericWarningText(text);
+  }
+
+  int Errors = 0;
+  int Warnings = 0;
+  std::string First;      ///< the first message (error or warning) since the last Reset
+  std::string FirstError; ///< the first error since the last Reset
+  void Reset()
+  {
+    this->Errors = this->Warnings = 0;
+    this->First.clear();
+    this->FirstError.clear();
+  }
+
+private:
+  void Keep(const char* text, bool error)
+  {
+    if (!text)
+    {
+      return;
+    }
+    if (this->First.empty())
+    {
+      this->First = text;
+    }
+    if (error && this->FirstError.empty())
+    {
+      this->FirstError = text;
+    }
+  }
+};
 
 /// The non-empty items of a comma-separated list.
 inline std::vector<std::string> SplitList(const std::string& text)

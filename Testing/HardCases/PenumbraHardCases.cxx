@@ -39,7 +39,6 @@
 #include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGReader.h"
 #include "vtkPointData.h"
@@ -63,30 +62,7 @@ using namespace penumbra_hard;
 namespace
 {
 
-/// Counts the errors and warnings VTK logs, and keeps the first error.
-class vtkCountingOutputWindow : public vtkOutputWindow
-{
-public:
-  static vtkCountingOutputWindow* New();
-  vtkTypeMacro(vtkCountingOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override
-  {
-    if (this->Errors++ == 0)
-    {
-      this->FirstError = text;
-    }
-    std::fprintf(stderr, "VTK error: %s\n", text);
-  }
-  void DisplayWarningText(const char* text) override
-  {
-    ++this->Warnings;
-    std::fprintf(stderr, "VTK warning: %s\n", text);
-  }
-  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
-  int Errors = 0, Warnings = 0;
-  std::string FirstError;
-};
-vtkStandardNewMacro(vtkCountingOutputWindow);
+using penumbra::bench::vtkCountingOutputWindow;
 
 constexpr double DefaultMAE[METHOD_COUNT] = { 0.05, 0.04, 0.04, 0.04 };
 constexpr double TemporalLimit = 0.005;  ///< share of pixels popping in the worst step
