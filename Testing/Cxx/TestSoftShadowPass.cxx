@@ -31,6 +31,7 @@
 #include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <array>
 #include <limits>
 
 using namespace penumbra_test;
@@ -69,34 +70,16 @@ struct Scene
     return actor;
   }
 
-  vtkActor* Ground(double half = 5.0)
-  {
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-half, 0, -half);
-    plane->SetPoint1(half, 0, -half);
-    plane->SetPoint2(-half, 0, half);
-    plane->SetResolution(4, 4);
-    return this->Add(plane, 0.85, 0.85, 0.8);
-  }
+  vtkActor* Ground(double half = 5.0) { return this->Add(GroundSource(half), 0.85, 0.85, 0.8); }
 
   vtkActor* Sphere(double x, double y, double z, double radius)
   {
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetThetaResolution(40);
-    sphere->SetPhiResolution(20);
-    sphere->SetRadius(radius);
-    sphere->SetCenter(x, y, z);
-    return this->Add(sphere, 0.9, 0.3, 0.3);
+    return this->Add(SphereSource(x, y, z, radius, 40, 20), 0.9, 0.3, 0.3);
   }
 
   vtkActor* Box(double x, double y, double z, double sx, double sy, double sz)
   {
-    vtkNew<vtkCubeSource> cube;
-    cube->SetCenter(x, y, z);
-    cube->SetXLength(sx);
-    cube->SetYLength(sy);
-    cube->SetZLength(sz);
-    return this->Add(cube, 0.3, 0.5, 0.9);
+    return this->Add(BoxSource(x, y, z, sx, sy, sz), 0.3, 0.5, 0.9);
   }
 
   void Camera(double px, double py, double pz, double fx, double fy, double fz)
@@ -538,6 +521,17 @@ void TestWedgeCorners()
   }
 }
 
+/// The world point at pixel `p` (row-major, `width` wide) of the renderer's viewport and window
+/// depth `depth`, at the pixel's centre, where the truth traced its ray.
+std::array<double, 3> WorldAtPixel(vtkRenderer* renderer, std::size_t p, int width, double depth)
+{
+  renderer->SetDisplayPoint(
+    static_cast<double>(p % width) + 0.5, static_cast<double>(p / width) + 0.5, depth);
+  renderer->DisplayToWorld();
+  const double* w = renderer->GetWorldPoint();
+  return { w[0] / w[3], w[1] / w[3], w[2] / w[3] };
+}
+
 void TestWedgesTemporalStability()
 {
   // The light passes through the planes of two faces of a box (faces flipping between lit and
@@ -581,12 +575,8 @@ void TestWedgesTemporalStability()
         const double excess =
           std::abs(o[i] - previousOurs[i]) - std::abs(t[i] - previousTruth[i]) - 0.05;
         worstAll = std::max(worstAll, excess);
-        scene.Renderer->SetDisplayPoint(
-          static_cast<double>(i % size[0]) + 0.5, static_cast<double>(i / size[0]) + 0.5,
-      depth->GetValue(i)); // pixel centres, where the truth traced its rays
-        scene.Renderer->DisplayToWorld();
-        const double* world = scene.Renderer->GetWorldPoint();
-        const double x = world[0] / world[3], y = world[1] / world[3], z = world[2] / world[3];
+        const auto world = WorldAtPixel(scene.Renderer, i, size[0], depth->GetValue(i));
+        const double x = world[0], y = world[1], z = world[2];
         // On the ground, off the box, and more than 0.05 from the lines where the planes of
         // the flipping faces (x = 0.3, z = 0.3) meet it: there the receiver lies in the plane
         // of a silhouette edge's wedge and single pixels drop out for a frame (measured up to
@@ -666,12 +656,8 @@ void TestPlateaus()
     {
       continue;
     }
-    scene.Renderer->SetDisplayPoint(
-      static_cast<double>(i % size[0]) + 0.5, static_cast<double>(i / size[0]) + 0.5,
-      depth->GetValue(i)); // pixel centres, where the truth traced its rays
-    scene.Renderer->DisplayToWorld();
-    const double* world = scene.Renderer->GetWorldPoint();
-    const bool onGround = std::abs(world[1] / world[3]) < 1e-3;
+    const bool onGround =
+      std::abs(WorldAtPixel(scene.Renderer, i, size[0], depth->GetValue(i))[1]) < 1e-3;
     offPlaneDifferent += !onGround && std::abs(ours[i] - hard[i]) > 1e-6f;
     lighter += onGround && hard[i] < 0.5f && ours[i] > 0.01f;
     penumbra += onGround && hard[i] > 0.5f && ours[i] < 0.99f;

@@ -4,10 +4,12 @@
 #define penumbraTestHarness_h
 
 #include "vtkActor.h"
+#include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRayTracedVisibility.h"
@@ -15,6 +17,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
+#include "vtkSphereSource.h"
 
 #include <cmath>
 #include <cstdio>
@@ -60,8 +63,7 @@ inline vtkSmartPointer<vtkRenderWindow> NewRenderWindow()
   return window;
 }
 
-inline vtkSmartPointer<vtkActor> MakeActor(
-  vtkPolyDataAlgorithm* source, double r, double g, double b)
+inline vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputConnection(source->GetOutputPort());
@@ -71,6 +73,39 @@ inline vtkSmartPointer<vtkActor> MakeActor(
   actor->GetProperty()->SetAmbient(0.2);
   actor->GetProperty()->SetDiffuse(0.8);
   return actor;
+}
+
+/// A square ground of half-width `half` in the plane y = height, 4 x 4 quads.
+inline vtkSmartPointer<vtkPlaneSource> GroundSource(double half, double height = 0.0)
+{
+  auto plane = vtkSmartPointer<vtkPlaneSource>::New();
+  plane->SetOrigin(-half, height, -half);
+  plane->SetPoint1(half, height, -half);
+  plane->SetPoint2(-half, height, half);
+  plane->SetResolution(4, 4);
+  return plane;
+}
+
+inline vtkSmartPointer<vtkSphereSource> SphereSource(
+  double x, double y, double z, double radius, int thetaResolution, int phiResolution)
+{
+  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+  sphere->SetThetaResolution(thetaResolution);
+  sphere->SetPhiResolution(phiResolution);
+  sphere->SetRadius(radius);
+  sphere->SetCenter(x, y, z);
+  return sphere;
+}
+
+inline vtkSmartPointer<vtkCubeSource> BoxSource(
+  double x, double y, double z, double sx, double sy, double sz)
+{
+  auto cube = vtkSmartPointer<vtkCubeSource>::New();
+  cube->SetCenter(x, y, z);
+  cube->SetXLength(sx);
+  cube->SetYLength(sy);
+  cube->SetZLength(sz);
+  return cube;
 }
 
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.

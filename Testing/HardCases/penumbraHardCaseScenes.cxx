@@ -105,13 +105,7 @@ vtkLight* CaseScene::DirectionalLight(double x, double y, double z, double degre
 
 vtkActor* CaseScene::Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer)
 {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(r, g, b);
-  actor->GetProperty()->SetAmbient(0.2);
-  actor->GetProperty()->SetDiffuse(0.8);
+  auto actor = penumbra_test::MakeActor(source, r, g, b);
   (renderer ? renderer : this->Renderer())->AddActor(actor);
   this->Keep.push_back(source);
   return actor;
@@ -126,32 +120,18 @@ vtkActor* CaseScene::AddData(vtkPolyData* data, double r, double g, double b)
 
 vtkActor* CaseScene::Ground(double half, double height)
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-half, height, -half);
-  plane->SetPoint1(half, height, -half);
-  plane->SetPoint2(-half, height, half);
-  plane->SetResolution(4, 4);
-  return this->Add(plane, 0.85, 0.85, 0.8);
+  return this->Add(penumbra_test::GroundSource(half, height), 0.85, 0.85, 0.8);
 }
 
 vtkActor* CaseScene::Sphere(double x, double y, double z, double radius, int resolution)
 {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution / 2);
-  sphere->SetRadius(radius);
-  sphere->SetCenter(x, y, z);
-  return this->Add(sphere, 0.9, 0.35, 0.3);
+  return this->Add(
+    penumbra_test::SphereSource(x, y, z, radius, resolution, resolution / 2), 0.9, 0.35, 0.3);
 }
 
 vtkActor* CaseScene::Box(double x, double y, double z, double sx, double sy, double sz)
 {
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(x, y, z);
-  cube->SetXLength(sx);
-  cube->SetYLength(sy);
-  cube->SetZLength(sz);
-  return this->Add(cube, 0.3, 0.5, 0.9);
+  return this->Add(penumbra_test::BoxSource(x, y, z, sx, sy, sz), 0.3, 0.5, 0.9);
 }
 
 void CaseScene::Camera(
