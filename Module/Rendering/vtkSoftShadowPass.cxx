@@ -302,6 +302,10 @@ public:
     bool Bounded = false;                 ///< the plane is an actor: plane coordinates bounds
     glm::dvec2 Min{ 0.0 }, Max{ 0.0 };
     double Tolerance = 0.0;               ///< distance still counted as on the plane
+    /// The actor whose plane was last fitted, and when: refitted only when it, its mapper or its
+    /// data change.
+    vtkProp* FittedProp = nullptr;
+    vtkMTimeType FittedAt = 0;
     std::set<vtkProp*> WarnedProps;
     bool WarnedNoPlane = false;
     std::vector<penumbra::PlateauVertex> Triangles;
@@ -1323,6 +1327,15 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
       continue;
     }
     auto data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+    // The actor (matrix), its mapper (a new input) or the data itself.
+    const vtkMTimeType changed = std::max(
+      { actor->GetMTime(), actor->GetMapper()->GetMTime(), data ? data->GetMTime() : 0 });
+    if (actor == plateau.FittedProp && changed <= plateau.FittedAt)
+    {
+      plateau.HavePlane = plateau.Bounded = true; // the fit below, kept from an earlier frame
+      plateau.PlaneProp = actor;
+      return true;
+    }
     vtkPoints* points = data ? data->GetPoints() : nullptr;
     std::vector<glm::dvec3> world;
     const glm::dmat4 toWorld = ToGlm(actor->GetMatrix());
@@ -1381,7 +1394,8 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
     }
     plateau.HavePlane = plateau.Bounded = true;
     plateau.Plane = plane;
-    plateau.PlaneProp = actor;
+    plateau.PlaneProp = plateau.FittedProp = actor;
+    plateau.FittedAt = changed;
     plateau.Min = lo;
     plateau.Max = hi;
     plateau.Tolerance = std::max(1e-5 * extent, 2.0 * thickness);
@@ -1701,6 +1715,7 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Plateau.VAOProgram = nullptr;
   internals.Plateau.TextureCurrent = false;
   internals.Plateau.Signature.clear();
+  internals.Plateau.FittedProp = nullptr;
   internals.LightIntensity->ReleaseGraphicsResources(w);
   internals.FullScreenTriangle->ReleaseGraphicsResources();
   for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO })
