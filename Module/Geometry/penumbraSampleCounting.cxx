@@ -1,0 +1,116 @@
+#include "penumbraSampleCounting.h"
+
+#include <cmath>
+
+namespace penumbra
+{
+
+LightFacing FacingOverLight(
+  const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light, double radius)
+{
+  const double length = glm::length(normal);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return LightFacing::EdgeOn;
+  }
+  const glm::dvec3 unit = normal / length;
+  double height, reach;
+  if (light.w != 0.0)
+  {
+    height = glm::dot(unit, glm::dvec3(light) / light.w - point);
+    reach = radius;
+  }
+  else
+  {
+    // Directions within the cone of half-angle `radius` around the light's direction: the plane
+    // splits them when the normal is within `radius` of perpendicular to that direction.
+    height = glm::dot(unit, glm::normalize(glm::dvec3(light)));
+    reach = radius > 0.0 ? std::sin(std::min(radius, 1.5707963267948966)) : 0.0;
+  }
+  if (reach > 0.0 && std::abs(height) <= reach)
+  {
+    return LightFacing::Mixed;
+  }
+  return height > 0.0 ? LightFacing::Towards
+                      : (height < 0.0 ? LightFacing::Away : LightFacing::EdgeOn);
+}
+
+std::vector<std::uint32_t> PotentialSilhouette(const CasterTopology& topo,
+  const glm::dmat4& objectToWorld, const glm::dvec4& light, double radius, bool frontFacesOnly)
+{
+  std::vector<glm::dvec3> world(topo.Points.size());
+  for (std::size_t i = 0; i < world.size(); ++i)
+  {
+    world[i] = glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0));
+  }
+  // A mirroring matrix turns outward normals inward: "front" must follow the true orientation.
+  const bool mirrored = glm::determinant(glm::dmat3(objectToWorld)) < 0.0;
+  std::vector<LightFacing> facing(topo.Triangles.size());
+  for (std::size_t t = 0; t < facing.size(); ++t)
+  {
+    const glm::uvec3& tri = topo.Triangles[t];
+    const glm::dvec3 normal = glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
+    facing[t] = FacingOverLight(mirrored ? -normal : normal, world[tri.x], light, radius);
+  }
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t e = 0; e < topo.Edges.size(); ++e)
+  {
+    const Edge& edge = topo.Edges[e];
+    int multiplicity = 0;
+    bool mixed = false;
+    for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
+    {
+      const LightFacing f = facing[topo.Uses[u].Triangle];
+      mixed = mixed || f == LightFacing::Mixed;
+      const int weight = frontFacesOnly ? (f == LightFacing::Towards ? 1 : 0) : static_cast<int>(f);
+      multiplicity += topo.Uses[u].Sign * weight;
+    }
+    if (mixed || multiplicity != 0)
+    {
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
+int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a, const EdgeFace* faces,
+  int faceCount, bool frontFacesOnly)
+{
+  int multiplicity = 0;
+  for (int k = 0; k < faceCount; ++k)
+  {
+    const double side = glm::dot(faces[k].Normal, p - a);
+    const int weight = frontFacesOnly ? (side > 0.0 ? 1 : 0) : (side > 0.0) - (side < 0.0);
+    multiplicity += faces[k].Sign * weight;
+  }
+  return multiplicity;
+}
+
+int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+  const glm::dvec4& centre, const glm::dvec4& sample)
+{
+  const glm::dvec3 u = a - p, v = b - p;
+  const glm::dvec3 n = glm::cross(u, v);
+  const glm::dvec3 towardsCentre = glm::dvec3(centre) - centre.w * p;
+  const glm::dvec3 towardsSample = glm::dvec3(sample) - sample.w * p;
+  const double dc = glm::dot(n, towardsCentre), ds = glm::dot(n, towardsSample);
+  if (!(dc * ds < 0.0))
+  {
+    return 0; // same side of the plane (p, a, b), on it, or degenerate
+  }
+  // Where the path meets the plane, as seen from p: x = alpha u + beta v (scaled by |n|^2).
+  const double t = dc / (dc - ds);
+  const glm::dvec3 x = towardsCentre + t * (towardsSample - towardsCentre);
+  const double alpha = glm::dot(x, glm::cross(v, n)), beta = glm::dot(x, glm::cross(n, u));
+  if (!(alpha >= 0.0 && beta >= 0.0))
+  {
+    return 0; // outside the sector that the edge spans from p
+  }
+  if (centre.w != 0.0 && !(alpha + beta >= glm::dot(n, n)))
+  {
+    return 0; // the light point is nearer to p than the edge
+  }
+  return ds > 0.0 ? 1 : -1;
+}
+
+} // namespace penumbra

@@ -1,0 +1,92 @@
+/**
+ * @file penumbraSampleCounting.h
+ * @brief Exact soft shadows by per-light-sample depth complexity, without OpenGL.
+ *
+ * Seen from a receiver point p, an area light is N sample points s_i (SpreadLightSamples, the
+ * same points the averaged method uses). The depth complexity D(p, s) is the number of casting
+ * triangles that the segment p -> s crosses; s is visible exactly when D(p, s) = 0. As s moves
+ * from the light's centre c to s_i, D changes only when the segment sweeps across an edge, so
+ *
+ *   D(p, s_i) = D(p, c) + sum over edges e of  -m_e(p) * Crossing(p, e, c, s_i),
+ *
+ * where m_e(p) is the edge's multiplicity seen from p (the counting rule of silhouettes.md, with
+ * facing taken from p rather than from the light) and Crossing is +-1 when the path c -> s_i
+ * crosses the edge's projection from p (the sign says to which side of the plane (p, e) s_i
+ * lies), else 0. D(p, c) is the centre's shadow-volume count (Laine et al. 2005; Forest, Barthe
+ * and Paulin 2008). Both terms must count by the same rule: every casting triangle (weights
+ * +-1), or, for a closed oriented caster lit from outside, front faces only (weights 1/0), which
+ * halves both.
+ *
+ * Only edges that are a silhouette from some point of the light can cross: the potential
+ * silhouette, found once per light, actor matrix and data change by PotentialSilhouette.
+ */
+#ifndef penumbraSampleCounting_h
+#define penumbraSampleCounting_h
+
+#include "penumbraCasterTopology.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace penumbra
+{
+
+/// How a plane faces every point of an area light.
+enum class LightFacing : std::int8_t
+{
+  Away = -1,   ///< the whole light is behind the plane
+  EdgeOn = 0,  ///< the light is a point in the plane (radius 0)
+  Towards = 1, ///< the whole light is in front
+  Mixed = 2    ///< the plane cuts the light
+};
+
+/**
+ * Facing of the plane through `point` with normal `normal` (not necessarily unit) over a light:
+ * (centre, 1) with `radius` in world units, or (unit direction towards it, 0) with `radius` its
+ * angular radius in radians.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT LightFacing FacingOverLight(
+  const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light, double radius);
+
+/**
+ * Edges of `topo` (indices into topo.Edges) that are a silhouette, by the counting rule, for
+ * some point of the light: boundary and non-manifold edges, and edges with a face whose plane
+ * cuts the light or whose faces' facings do not cancel. `objectToWorld` places the caster; the
+ * light is in world space as for FacingOverLight. `frontFacesOnly` is the rule of the centre's
+ * shadow volume (ShadowVolume::FrontFacesSuffice).
+ */
+VTKPENUMBRAGEOMETRY_EXPORT std::vector<std::uint32_t> PotentialSilhouette(const CasterTopology& topo,
+  const glm::dmat4& objectToWorld, const glm::dvec4& light, double radius, bool frontFacesOnly);
+
+/**
+ * One triangle's use of an edge a -> b, as the per-pixel evaluation needs it: the triangle's
+ * normal as wound (any length) and +1 when it walks a -> b, -1 when b -> a.
+ */
+struct EdgeFace
+{
+  glm::dvec3 Normal;
+  int Sign;
+};
+
+/**
+ * Multiplicity of edge a -> b seen from p: the sum over its faces of Sign x weight, weight the
+ * face's facing from p (+1, -1, 0 on its plane) or, front faces only, 1 when it faces p.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a,
+  const EdgeFace* faces, int faceCount, bool frontFacesOnly);
+
+/**
+ * Whether the path on the light from `centre` to `sample` crosses the projection from p of the
+ * edge a -> b: +1 or -1 (the side of the plane (p, a, b) that the sample lies on, sign of
+ * cross(a - p, b - p) . (sample - p)) when it does, 0 otherwise. Light points are (x, y, z, 1),
+ * or directions (x, y, z, 0) at infinity; for a point the edge must lie between p and the light.
+ * Degenerate input (p on the edge's line, the path in the plane) gives 0, never NaN.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a,
+  const glm::dvec3& b, const glm::dvec4& centre, const glm::dvec4& sample);
+
+} // namespace penumbra
+
+#endif

@@ -1,0 +1,304 @@
+// Unit tests of per-light-sample counting (penumbraSampleCounting.h), without a window.
+//
+// For random receiver points p and the light samples of SpreadLightSamples, the depth complexity
+// predicted from the centre, D(p, c) + sum over the potential silhouette of -m_e(p) x crossing,
+// must equal the brute-force count of casting triangles on the segment p -> s, for closed,
+// open, non-manifold, non-orientable and mirrored casters, positional and directional lights.
+// A sign mutation of the edge term must make the check fail.
+#include "penumbraCasterTopology.h"
+#include "penumbraLightSamples.h"
+#include "penumbraSampleCounting.h"
+#include "penumbraShadowVolume.h"
+
+#include "vtkNew.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricMobius.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyData.h"
+#include "vtkSphereSource.h"
+#include "vtkTriangleFilter.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+using namespace penumbra;
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::printf("FAIL: %s\n", what.c_str());
+    ++Failures;
+  }
+}
+
+/// Whether segment origin -> origin + dir (t in (0, 1)) crosses triangle abc; `nearEdge` is set
+/// when the hit is too close to the triangle's edges or the segment's ends to count robustly.
+bool SegmentCrosses(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& a,
+  const glm::dvec3& b, const glm::dvec3& c, bool& nearEdge)
+{
+  const glm::dvec3 e1 = b - a, e2 = c - a, h = glm::cross(dir, e2);
+  const double det = glm::dot(e1, h);
+  if (std::abs(det) < 1e-300)
+  {
+    return false;
+  }
+  const glm::dvec3 s = origin - a;
+  const double u = glm::dot(s, h) / det;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(dir, q) / det, t = glm::dot(e2, q) / det;
+  const double eps = 1e-7;
+  if (u < -eps || v < -eps || u + v > 1 + eps || t < -eps || t > 1 + eps)
+  {
+    return false;
+  }
+  if (u < eps || v < eps || u + v > 1 - eps || t < eps || t > 1 - eps)
+  {
+    nearEdge = true;
+  }
+  return true;
+}
+
+struct Caster
+{
+  std::string Name;
+  CasterTopology Topology;
+  glm::dmat4 ObjectToWorld{ 1.0 };
+};
+
+/// Casting triangles (world space) crossed by the segment from p to the light point s, by the
+/// rule of the centre's volume: all triangles, or those facing s when front faces suffice.
+int DepthComplexity(const Caster& caster, const std::vector<glm::dvec3>& world, bool frontOnly,
+  bool mirrored, const glm::dvec3& p, const glm::dvec4& s, bool& nearEdge)
+{
+  const glm::dvec3 dir = s.w != 0.0 ? glm::dvec3(s) - p : 1e3 * glm::dvec3(s);
+  int count = 0;
+  for (const glm::uvec3& tri : caster.Topology.Triangles)
+  {
+    const glm::dvec3 &a = world[tri.x], &b = world[tri.y], &c = world[tri.z];
+    const glm::dvec3 normal = glm::cross(b - a, c - a) * (mirrored ? -1.0 : 1.0);
+    const double facing = glm::dot(normal, glm::dvec3(s) - s.w * a);
+    if (frontOnly && !(facing > 0.0))
+    {
+      continue;
+    }
+    count += SegmentCrosses(p, dir, a, b, c, nearEdge) ? 1 : 0;
+  }
+  return count;
+}
+
+/// Random points around the caster's world bounds, grown by half their size.
+glm::dvec3 RandomPoint(const std::vector<glm::dvec3>& world, std::mt19937& rng)
+{
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : world)
+  {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::dvec3 grow = 0.5 * (hi - lo) + 0.1;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  return lo - grow + glm::dvec3(unit(rng), unit(rng), unit(rng)) * (hi - lo + 2.0 * grow);
+}
+
+/// Mismatches between predicted and brute-force depth complexity; `edgeSign` is +1 for the
+/// rule as documented, -1 for the mutation that must fail.
+int CountMismatches(const Caster& caster, const glm::dvec4& light, double radius, int edgeSign,
+  int trials, std::mt19937& rng, int& compared, int& nonZero)
+{
+  const CasterTopology& topo = caster.Topology;
+  std::vector<glm::dvec3> world(topo.Points.size());
+  for (std::size_t i = 0; i < world.size(); ++i)
+  {
+    world[i] = glm::dvec3(caster.ObjectToWorld * glm::dvec4(topo.Points[i], 1.0));
+  }
+  const bool mirrored = glm::determinant(glm::dmat3(caster.ObjectToWorld)) < 0.0;
+  const glm::dvec4 lightObject = glm::inverse(caster.ObjectToWorld) * light;
+  const bool frontOnly = ShadowVolume::FrontFacesSuffice(topo, lightObject);
+  const std::vector<std::uint32_t> potential =
+    PotentialSilhouette(topo, caster.ObjectToWorld, light, radius, frontOnly);
+  glm::dvec3 target(0.0);
+  for (const glm::dvec3& p : world)
+  {
+    target += p / static_cast<double>(world.size());
+  }
+  const std::vector<glm::dvec4> samples =
+    SpreadLightSamples(light, light.w != 0.0 ? radius : glm::degrees(radius), 16, target);
+
+  int mismatches = 0;
+  for (int trial = 0; trial < trials; ++trial)
+  {
+    const glm::dvec3 p = RandomPoint(world, rng);
+    bool nearEdge = false;
+    const int centreCount = DepthComplexity(caster, world, frontOnly, mirrored, p, light, nearEdge);
+    for (const glm::dvec4& s : samples)
+    {
+      const int truth = DepthComplexity(caster, world, frontOnly, mirrored, p, s, nearEdge);
+      if (nearEdge)
+      {
+        break;
+      }
+      int predicted = centreCount;
+      for (std::uint32_t e : potential)
+      {
+        const Edge& edge = topo.Edges[e];
+        const glm::dvec3 &a = world[edge.A], &b = world[edge.B];
+        std::vector<EdgeFace> faces;
+        for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
+        {
+          const glm::uvec3& tri = topo.Triangles[topo.Uses[u].Triangle];
+          const glm::dvec3 normal =
+            glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
+          const double flip = mirrored ? -1.0 : 1.0;
+          faces.push_back({ flip * normal, static_cast<int>(flip) * topo.Uses[u].Sign });
+        }
+        const int m =
+          MultiplicityFrom(p, a, faces.data(), static_cast<int>(faces.size()), frontOnly);
+        predicted -= edgeSign * m * SampleCrossing(p, a, b, light, s);
+      }
+      ++compared;
+      nonZero += truth != 0;
+      mismatches += predicted != truth;
+    }
+  }
+  return mismatches;
+}
+
+CasterTopology FromSource(vtkPolyDataAlgorithm* source)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  triangles->Update();
+  return CasterTopology::Build(triangles->GetOutput());
+}
+
+std::vector<Caster> MakeCasters(std::mt19937& rng)
+{
+  std::vector<Caster> casters;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(12);
+  sphere->SetPhiResolution(8);
+  casters.push_back({ "closed sphere", FromSource(sphere) });
+  casters.push_back({ "mirrored, scaled sphere", FromSource(sphere),
+    glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, -0.1, 0.3)),
+      glm::dvec3(-1.0, 0.7, 1.3)) });
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(3, 2);
+  casters.push_back({ "open sheet", FromSource(plane) });
+  vtkNew<vtkParametricMobius> mobius;
+  vtkNew<vtkParametricFunctionSource> mobiusSource;
+  mobiusSource->SetParametricFunction(mobius);
+  mobiusSource->SetUResolution(12);
+  mobiusSource->SetVResolution(3);
+  casters.push_back({ "Moebius strip", FromSource(mobiusSource) });
+  // Three fins on one edge and a flipped triangle: non-manifold and inconsistently wound.
+  casters.push_back({ "non-manifold fins",
+    CasterTopology::Build({ { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.8, 0.1 }, { 0.5, -0.7, 0.2 },
+                            { 0.4, 0.1, 0.9 }, { 1.4, 0.6, 0.3 } },
+      { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 5, 2 } }) });
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::vector<glm::dvec3> points;
+  std::vector<glm::uvec3> soup;
+  for (unsigned int t = 0; t < 12; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+    }
+    soup.emplace_back(3 * t, 3 * t + 1, 3 * t + 2);
+  }
+  casters.push_back({ "random soup", CasterTopology::Build(points, soup) });
+  return casters;
+}
+
+void TestFacingOverLight()
+{
+  const glm::dvec4 point(0, 0, 2, 1), direction(0, 0, 1, 0);
+  Check(FacingOverLight({ 0, 0, 1 }, { 0, 0, 0 }, point, 0.5) == LightFacing::Towards, "towards");
+  Check(FacingOverLight({ 0, 0, -1 }, { 0, 0, 0 }, point, 0.5) == LightFacing::Away, "away");
+  Check(FacingOverLight({ 1, 0, 0 }, { 0, 0, 0 }, point, 0.5) == LightFacing::Mixed, "mixed");
+  Check(FacingOverLight({ 1, 0, 0 }, { 0, 0, 0 }, point, 0.0) == LightFacing::EdgeOn, "edge-on");
+  Check(FacingOverLight({ 0, 1, 0.1 }, { 0, 0, 0 }, direction, 0.2) == LightFacing::Mixed,
+    "directional mixed");
+  Check(FacingOverLight({ 0, 1, 0.5 }, { 0, 0, 0 }, direction, 0.2) == LightFacing::Towards,
+    "directional towards");
+  Check(FacingOverLight({ 0, 0, 0 }, { 0, 0, 0 }, point, 0.5) == LightFacing::EdgeOn,
+    "zero normal");
+}
+
+void TestDegenerate()
+{
+  // p on the edge's line, the path in the plane, NaN input: 0, never a crash or NaN.
+  const glm::dvec3 a(0, 0, 0), b(1, 0, 0);
+  Check(SampleCrossing({ 2, 0, 0 }, a, b, { 0, 0, 3, 1 }, { 0.1, 0, 3, 1 }) == 0, "p on line");
+  Check(SampleCrossing({ 0.5, -1, 0 }, a, b, { 0, 1, 0, 1 }, { 1, 2, 0, 1 }) == 0, "path in plane");
+  const double nan = std::nan("");
+  Check(SampleCrossing({ nan, 0, 0 }, a, b, { 0, 0, 3, 1 }, { 0.1, 0, 3, 1 }) == 0, "NaN p");
+  const EdgeFace face{ { nan, 0, 0 }, 1 };
+  Check(MultiplicityFrom({ 0, 0, 1 }, a, &face, 1, false) == 0, "NaN normal");
+}
+
+void TestPotentialSilhouetteIsSmall()
+{
+  // A far small light sees few potential silhouette edges on a fine closed sphere, and the
+  // centre silhouette is among them.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  const CasterTopology topo = FromSource(sphere);
+  const glm::dvec4 light(0, 0, 20, 1);
+  const std::vector<std::uint32_t> potential =
+    PotentialSilhouette(topo, glm::dmat4(1.0), light, 0.5, true);
+  const ShadowVolume centre = ShadowVolume::Build(topo, light, false, false);
+  Check(potential.size() >= centre.Silhouette.size(), "contains the centre silhouette");
+  Check(potential.size() < topo.Edges.size() / 8,
+    "potential silhouette " + std::to_string(potential.size()) + " of " +
+      std::to_string(topo.Edges.size()) + " edges");
+  const std::vector<std::uint32_t> none =
+    PotentialSilhouette(topo, glm::dmat4(1.0), light, 0.0, true);
+  Check(none.size() == centre.Silhouette.size(), "radius 0: the centre silhouette exactly");
+}
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(7);
+  TestFacingOverLight();
+  TestDegenerate();
+  TestPotentialSilhouetteIsSmall();
+  const std::vector<Caster> casters = MakeCasters(rng);
+  const std::vector<std::pair<glm::dvec4, double>> lights = { { { 0.4, 0.3, 3.0, 1.0 }, 0.6 },
+    { { 0.2, 2.5, 1.0, 1.0 }, 0.9 }, { glm::dvec4(glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), 0.0), 0.3 } };
+  int total = 0, totalNonZero = 0;
+  for (const Caster& caster : casters)
+  {
+    for (const auto& light : lights)
+    {
+      int compared = 0, nonZero = 0;
+      const int mismatches =
+        CountMismatches(caster, light.first, light.second, 1, 150, rng, compared, nonZero);
+      std::printf("%-24s light w=%g: %d samples compared (%d occluded), %d mismatches\n",
+        caster.Name.c_str(), light.first.w, compared, nonZero, mismatches);
+      Check(mismatches == 0, caster.Name + ": predicted depth complexity equals brute force");
+      Check(compared > 1000, caster.Name + ": enough samples compared");
+      total += compared;
+      totalNonZero += nonZero;
+    }
+  }
+  Check(totalNonZero > total / 20, "enough occluded samples to test the edge terms");
+  // The mutation: the edge term with the wrong sign must be caught.
+  int compared = 0, nonZero = 0;
+  const int mutated =
+    CountMismatches(casters[0], lights[0].first, lights[0].second, -1, 150, rng, compared, nonZero);
+  Check(mutated > 0, "a flipped edge term is detected (" + std::to_string(mutated) + " mismatches)");
+  std::printf("%s (%d failures)\n", Failures ? "FAILED" : "passed", Failures);
+  return Failures ? 1 : 0;
+}
