@@ -39,7 +39,11 @@
 
 #include "penumbraLightSamples.h"
 #include "penumbraPlateaus.h"
+#include "penumbraShadowVolume.h"
 
+#include "penumbraCountingResolveFS.h"
+#include "penumbraCountingWedgeFS.h"
+#include "penumbraCountingWedgeVS.h"
 #include "penumbraHorizonFS.h"
 #include "penumbraPlateauFS.h"
 #include "penumbraPlateauResolveFS.h"
@@ -242,20 +246,22 @@ public:
     /// or radians for a directional light).
     bool Wedges;
     double WedgeRadius;
-    /// Automatic chose wedges: falls back to averaging if a caster's layers share an outline.
-    bool AutomaticWedges;
     glm::dvec3 SampleTarget;
     double SampleRadius; ///< as SpreadLightSamples takes it: world units, or clamped degrees
     /// Haines' plateaus on the receiver plane, with the light's radius (world units, or
     /// radians for a directional light); the hard shadow of the centre elsewhere.
     bool Plateaus = false;
     double PlateauRadius = 0.0;
+    /// Soft shadow volumes: the centre's volume count plus the potential silhouette's changes of
+    /// each of these samples' counts; the light's radius as for wedges.
+    bool Counting = false;
+    std::vector<glm::dvec4> CountingSamples;
 
     /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
     /// centre silhouette (wedges, Automatic's check) and averaged samples never evict each other.
     std::pair<vtkLight*, int> VolumeKey(std::size_t k) const
     {
-      return { this->Light, this->Wedges ? CentreVolume : static_cast<int>(k) };
+      return { this->Light, this->Wedges || this->Counting ? CentreVolume : static_cast<int>(k) };
     }
   };
   static constexpr int CentreVolume = -1;
@@ -288,8 +294,11 @@ public:
     const std::size_t plateauBuffer = this->Plateau.Vertices->GetHandle()
       ? this->Plateau.Triangles.size() * sizeof(penumbra::PlateauVertex)
       : 0;
-    return (texturePixels + plateauTexels + pixels * this->Layers) * 4 + plateauBuffer +
-      this->Caches.GraphicsBufferBytes();
+    const std::size_t countingTexels = this->CentreCount->GetHandle()
+      ? pixels * (1 + this->SampleCounters->GetDepth())
+      : 0;
+    return (texturePixels + plateauTexels + pixels * this->Layers + countingTexels) * 4 +
+      plateauBuffer + this->Caches.GraphicsBufferBytes();
   }
   vtkNew<vtkTextureObject> LightIntensity;
 
@@ -350,10 +359,6 @@ public:
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
 
-  /// Whether some caster's silhouette from the light's centre has an edge of multiplicity above
-  /// 1 (layers sharing an outline), building those silhouettes as it goes.
-  bool LayeredOutline(const ShadowLight& light, vtkIdType& silhouetteUpdates);
-
   /// The camera's world-to-clip matrix and near-plane corners, as VTK's mappers use them.
   void UpdateCamera(vtkRenderer* renderer)
   {
@@ -381,6 +386,20 @@ public:
   /// Fills the light's samples (the light itself, or LightSamples points on it when the method
   /// averages) and its wedge settings, from the pass's method and the light's radius.
   void ChooseMethod(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
+  /// Soft shadow volumes' buffers: the centre's count (R32F) and the per-sample counters (R32UI,
+  /// four 8-bit counts per texel, one slice per four samples).
+  vtkNew<vtkTextureObject> CentreCount;
+  vtkNew<vtkTextureObject> SampleCounters;
+  /// Whether the context has image atomics and texture clears (checked once per window).
+  int CountingSupport = -1;
+  bool CountingSupported(vtkSoftShadowPass* self);
+  bool WarnedCountingSamples = false;
+  /// Counts `light`'s samples (its centre volume already counted into CentreCount) and writes
+  /// its visibility into its LI layer; returns false when a shader failed to build.
+  bool DrawSampleCounting(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window,
+    const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport);
+  FullScreenVAO CountingResolveVAO;
+
   /// Adds every caster's penumbra wedges for `light` into its LI layer; returns the count of
   /// wedges and of full-viewport ones.
   void DrawWedges(vtkOpenGLRenderWindow* window, const ShadowLight& light, vtkIdType& wedges,
@@ -460,6 +479,8 @@ const char* vtkSoftShadowPass::GetMethodAsString()
       return "PenumbraWedges";
     case METHOD_PLATEAUS:
       return "Plateaus";
+    case METHOD_SOFT_SHADOW_VOLUMES:
+      return "SoftShadowVolumes";
     default:
       return "Automatic";
   }
@@ -601,7 +622,9 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
   // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-        [](const vtkInternals::ShadowLight& light) { return light.Wedges || light.Plateaus; }))
+        [](const vtkInternals::ShadowLight& light) {
+          return light.Wedges || light.Plateaus || light.Counting;
+        }))
   {
     internals.CopyDepth(window->GetState());
   }
@@ -680,7 +703,7 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     }
     vtkInternals::ShadowLight shadowLight{ light, collectionIndex, index,
       static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, false, glm::dvec3(0.0), 0.0 };
+      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, glm::dvec3(0.0), 0.0 };
     internals.ChooseMethod(this, renderer, shadowLight);
     internals.Lights.push_back(shadowLight);
   }
@@ -693,8 +716,9 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   const glm::dvec4& world = shadowLight.World;
   double radius = GetLightRadius(light);
   shadowLight.Samples = { world };
-  shadowLight.Wedges = shadowLight.AutomaticWedges = shadowLight.Plateaus = false;
+  shadowLight.Wedges = shadowLight.Plateaus = shadowLight.Counting = false;
   shadowLight.WedgeRadius = 0.0;
+  shadowLight.CountingSamples.clear();
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
   {
     return;
@@ -722,11 +746,28 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
     shadowLight.PlateauRadius = world.w != 0.0 ? radius : glm::radians(radius);
     return;
   }
-  if (self->Method == METHOD_PENUMBRA_WEDGES || self->Method == METHOD_AUTOMATIC)
+  const double wedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
+  if (self->Method == METHOD_PENUMBRA_WEDGES)
   {
     shadowLight.Wedges = true;
-    shadowLight.AutomaticWedges = self->Method == METHOD_AUTOMATIC;
-    shadowLight.WedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
+    shadowLight.WedgeRadius = wedgeRadius;
+    return;
+  }
+  if ((self->Method == METHOD_AUTOMATIC || self->Method == METHOD_SOFT_SHADOW_VOLUMES) &&
+    this->CountingSupported(self))
+  {
+    constexpr int maximumSamples = 256; // the shader's uniform array
+    if (self->LightSamples > maximumSamples && !this->WarnedCountingSamples)
+    {
+      vtkWarningWithObjectMacro(self, "Soft shadow volumes count at most " << maximumSamples
+                                  << " light samples; LightSamples " << self->LightSamples
+                                  << " is clamped for them.");
+      this->WarnedCountingSamples = true;
+    }
+    shadowLight.Counting = true;
+    shadowLight.WedgeRadius = wedgeRadius;
+    shadowLight.CountingSamples = penumbra::SpreadLightSamples(
+      world, radius, std::min(self->LightSamples, maximumSamples), target);
     return;
   }
   shadowLight.Samples = penumbra::SpreadLightSamples(world, radius, self->LightSamples, target);
@@ -788,6 +829,8 @@ void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
     internals.LightIntensity->SetContext(window);
     internals.DepthCopy->SetContext(window);
     internals.DepthCopyFramebuffer->SetContext(window);
+    internals.CentreCount->SetContext(window);
+    internals.SampleCounters->SetContext(window);
   }
   if (static_cast<int>(internals.DepthStencil->GetWidth()) != width ||
     static_cast<int>(internals.DepthStencil->GetHeight()) != height)
@@ -802,6 +845,28 @@ void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
     internals.LightIntensity->SetMagnificationFilter(vtkTextureObject::Nearest);
     internals.LightIntensity->Allocate3D(width, height, layers, 1, VTK_FLOAT);
     internals.Layers = layers;
+  }
+  std::size_t samples = 0;
+  for (const auto& light : internals.Lights)
+  {
+    samples = std::max(samples, light.CountingSamples.size());
+  }
+  const unsigned int words = static_cast<unsigned int>((samples + 3) / 4);
+  if (words > 0 &&
+    (static_cast<int>(internals.CentreCount->GetWidth()) != width ||
+      static_cast<int>(internals.CentreCount->GetHeight()) != height ||
+      internals.SampleCounters->GetDepth() != words))
+  {
+    for (vtkTextureObject* texture : { internals.CentreCount.Get(), internals.SampleCounters.Get() })
+    {
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    }
+    internals.CentreCount->Allocate2D(width, height, 1, VTK_FLOAT);
+    internals.SampleCounters->SetInternalFormat(GL_R32UI);
+    internals.SampleCounters->SetFormat(GL_RED_INTEGER);
+    internals.SampleCounters->SetDataType(GL_UNSIGNED_INT);
+    internals.SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
   }
   internals.VisibilityImages.clear();
 }
@@ -918,23 +983,15 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     const double lightRadius = GetLightRadius(light.Light);
     for (penumbra::CasterCache* caster : internals.Casters)
     {
-      const double radius = light.Wedges ? light.WedgeRadius
-        : light.World.w != 0.0           ? lightRadius
-                                         : glm::radians(lightRadius);
+      const double radius = light.Wedges || light.Counting ? light.WedgeRadius
+        : light.World.w != 0.0                           ? lightRadius
+                                                         : glm::radians(lightRadius);
       if (!ShadowMayReachView(
             caster->WorldMin, caster->WorldMax, light.World, radius, internals.WorldToClip))
       {
         caster->Culled.insert(light.Light);
         ++this->NumberOfCulledShadows;
       }
-    }
-    if (light.AutomaticWedges && internals.LayeredOutline(light, this->NumberOfSilhouetteUpdates))
-    {
-      // Layers of one caster share its outline (a clipped isosurface's walls): the wedges would
-      // count them twice. Averaged hard shadows are right for any mesh.
-      light.Wedges = false;
-      light.Samples = penumbra::SpreadLightSamples(
-        light.World, light.SampleRadius, this->LightSamples, light.SampleTarget);
     }
     for (penumbra::CasterCache* caster : internals.Casters)
     {
@@ -957,32 +1014,31 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
         caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
           caster->ObjectToWorld, light.World, light.WedgeRadius);
       }
+      if (light.Counting &&
+        caster->CountingWedges[light.Light].Update(*caster->Mesh, caster->ObjectToWorld,
+          light.World, light.WedgeRadius,
+          penumbra::ShadowVolume::FrontFacesSuffice(caster->Mesh->Topology, worldToObject * light.World)))
+      {
+        ++this->NumberOfSilhouetteUpdates;
+      }
     }
   }
 }
 
-bool vtkSoftShadowPass::vtkInternals::LayeredOutline(
-  const ShadowLight& light, vtkIdType& silhouetteUpdates)
+bool vtkSoftShadowPass::vtkInternals::CountingSupported(vtkSoftShadowPass* self)
 {
-  for (penumbra::CasterCache* caster : this->Casters)
+  if (this->CountingSupport < 0)
   {
-    if (caster->Culled.count(light.Light))
+    this->CountingSupport = GLEW_VERSION_4_4 ||
+      (GLEW_ARB_shader_image_load_store && GLEW_ARB_clear_texture);
+    if (!this->CountingSupport)
     {
-      continue;
-    }
-    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    penumbra::VolumeCache& centre = caster->Volumes[{ light.Light, CentreVolume }];
-    if (centre.Update(*caster->Mesh, worldToObject * light.World,
-          glm::determinant(caster->ObjectToWorld) < 0.0))
-    {
-      ++silhouetteUpdates;
-    }
-    if (centre.MaxMultiplicity > 1)
-    {
-      return true;
+      vtkWarningWithObjectMacro(self, "This OpenGL context has no image atomics or texture "
+                                      "clears (OpenGL 4.4): soft shadows average "
+                                      "LightSamples hard shadows instead of counting them.");
     }
   }
-  return false;
+  return this->CountingSupport != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -1030,12 +1086,24 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     internals.Framebuffer->ActivateDrawBuffer(0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    // Wedges and soft shadow volumes count the centre's volumes in colour (additive float).
+    const bool countInColour = light.Wedges || light.Counting;
+    if (light.Counting)
+    {
+      // The centre's count goes to a texture of its own, for the resolve to read.
+      internals.Framebuffer->RemoveColorAttachment(0);
+      internals.Framebuffer->AddColorAttachment(0, internals.CentreCount);
+      internals.Framebuffer->ActivateDrawBuffer(0);
+      ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+      ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    }
     const float sampleWeight = 1.0f / static_cast<float>(light.Samples.size());
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       ostate->vtkglStencilMask(0xFF);
       ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
-      if (light.Wedges)
+      if (countInColour)
       {
         ostate->vtkglEnable(GL_BLEND);
         ostate->vtkglDisable(GL_STENCIL_TEST);
@@ -1056,7 +1124,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         }
         this->NumberOfShadowVolumeTriangles +=
           DrawShadowVolume(ostate, volumeProgram, *caster, light.VolumeKey(k),
-            light.Samples[k], internals.WorldToClip, internals.NearCorners, light.Wedges,
+            light.Samples[k], internals.WorldToClip, internals.NearCorners, countInColour,
             this->NumberOfZFailVolumes);
       }
 
@@ -1069,7 +1137,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         ostate->vtkglDepthFunc(GL_LEQUAL);
         this->DrawResolve(window, 1.0f);
       }
-      else
+      else if (!light.Counting)
       {
         // Resolve: every geometry pixel with a non-zero count is in this sample's shadow.
         ostate->vtkglEnable(GL_BLEND);
@@ -1089,6 +1157,11 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     {
       this->NumberOfPlateauTriangles += internals.DrawPlateaus(this, window, light);
     }
+    if (light.Counting)
+    {
+      internals.DrawSampleCounting(
+        this, window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
+    }
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -1100,6 +1173,11 @@ namespace
 /// NDC depth by which light caps are pushed back: well above float rounding of the two
 /// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
 constexpr float CapDepthBias = 5e-5f;
+/// NDC depth by which soft shadow volumes move a pixel's point towards the eye, so that it lies
+/// on the side of its own surface that it is seen from: four steps of a 24-bit depth buffer.
+/// Much more moves it measurably off the surface where the depth range is wide (a near plane at
+/// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
+constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 
 /// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
@@ -1263,6 +1341,140 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   this->DepthCopy->Deactivate();
 }
 
+namespace
+{
+/// A shader source with its sample count compiled in (the loops' bounds and the samples' array).
+std::string WithSampleCount(const char* source, std::size_t samples)
+{
+  std::string text = source;
+  vtkShaderProgram::Substitute(text, "//PENUMBRA::SampleCount",
+    "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n", false);
+  return text;
+}
+} // namespace
+
+bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self,
+  vtkOpenGLRenderWindow* window, const ShadowLight& light, vtkIdType& wedges,
+  vtkIdType& fullViewport)
+{
+  const std::size_t sampleCount = light.CountingSamples.size();
+  const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
+  const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS, sampleCount);
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    penumbraCountingWedgeVS, wedgeFS.c_str(), "");
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume wedge shader.");
+    return false;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  const GLuint zero = 0;
+  glClearTexImage(this->SampleCounters->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+
+  // Wedge fragments that pass the depth test mark their pixel in the stencil, so that the
+  // resolve reads counters only there; counts go to the image, not to colour.
+  ostate->vtkglStencilMask(0xFF);
+  ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  ostate->vtkglEnable(GL_STENCIL_TEST);
+  ostate->vtkglStencilFunc(GL_ALWAYS, 1, 0xFF);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_CULL_FACE);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
+  glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  this->DepthCopy->Activate();
+
+  const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
+  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
+  program->SetUniformi("counters", 0);
+  program->SetUniform2f("viewportSize", viewport);
+  program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    penumbra::CountingWedgeCache& cache = caster->CountingWedges[light.Light];
+    if (cache.VertexCount() == 0)
+    {
+      continue;
+    }
+    // Samples in this caster's wedge coordinates (relative to the light's centre, or directions).
+    std::vector<float> samples;
+    samples.reserve(4 * sampleCount);
+    for (const glm::dvec4& sample : light.CountingSamples)
+    {
+      const glm::dvec3 position = glm::dvec3(sample) - sample.w * cache.Origin;
+      samples.insert(samples.end(), { static_cast<float>(position.x),
+        static_cast<float>(position.y), static_cast<float>(position.z),
+        static_cast<float>(sample.w) });
+    }
+    program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
+    program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
+    // As for penumbra wedges: front faces against the scene depth when neither the eye nor the
+    // near plane can be inside this caster's wedges, back faces otherwise.
+    const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
+    const bool frontFaces = light.World.w != 0.0 && cache.Fallbacks == 0 &&
+      !VolumeMayReachNearPlane(
+        caster->WorldMin - grow, caster->WorldMax + grow, light.World, this->NearCorners);
+    ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
+    ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
+    const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), cache.Origin));
+    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -cache.Origin) * clipToWorld);
+    const glm::vec4 lightWedge(cache.LightInWedgeSpace());
+    program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
+    program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+    program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    cache.Bind(program);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
+    cache.VAO->Release();
+    wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
+    fullViewport += static_cast<vtkIdType>(cache.Fallbacks);
+  }
+  ostate->vtkglCullFace(GL_BACK);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  this->DepthCopy->Deactivate();
+
+  // Resolve into the light's layer at every geometry pixel (the far-plane triangle passes
+  // GL_GREATER exactly there): counters where a wedge reached, the centre's count elsewhere.
+  vtkShaderProgram* resolve = window->GetShaderCache()->ReadyShaderProgram(
+    penumbraResolveVS, resolveFS.c_str(), "");
+  if (!resolve)
+  {
+    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume resolve shader.");
+    return false;
+  }
+  this->Framebuffer->RemoveColorAttachment(0);
+  this->Framebuffer->AddColorAttachment(
+    0, this->LightIntensity, static_cast<unsigned int>(light.Layer));
+  this->Framebuffer->ActivateDrawBuffer(0);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  this->CentreCount->Activate();
+  this->SampleCounters->Activate();
+  resolve->SetUniformi("centreCount", this->CentreCount->GetTextureUnit());
+  resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
+  for (int reached : { 1, 0 })
+  {
+    ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
+    resolve->SetUniformi("useCounters", reached);
+    this->DrawFullScreen(resolve, this->CountingResolveVAO);
+  }
+  this->SampleCounters->Deactivate();
+  this->CentreCount->Deactivate();
+  ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  return true;
+}
+
 void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity)
 {
   vtkShaderProgram* program =
@@ -1283,7 +1495,11 @@ void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
   {
     const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
     this->FullScreenTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
-    this->ResolveVAO.Program = this->HorizonVAO.Program = this->PlateauResolveVAO.Program = nullptr;
+    for (FullScreenVAO* vao : { &this->ResolveVAO, &this->HorizonVAO, &this->PlateauResolveVAO,
+           &this->CountingResolveVAO })
+    {
+      vao->Program = nullptr;
+    }
   }
   if (vao.Program != program)
   {
@@ -1717,8 +1933,12 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Plateau.Signature.clear();
   internals.Plateau.FittedProp = nullptr;
   internals.LightIntensity->ReleaseGraphicsResources(w);
+  internals.CentreCount->ReleaseGraphicsResources(w);
+  internals.SampleCounters->ReleaseGraphicsResources(w);
+  internals.CountingSupport = -1;
   internals.FullScreenTriangle->ReleaseGraphicsResources();
-  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO })
+  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO,
+         &internals.CountingResolveVAO })
   {
     vao->VAO->ReleaseGraphicsResources();
     vao->Program = nullptr;

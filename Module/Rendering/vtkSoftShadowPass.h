@@ -17,10 +17,12 @@
  *    depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
  *    otherwise) into the stencil and resolves it into that light's layer of the light-intensity
  *    (LI) buffer, a float texture array (1 lit, 0 shadowed);
- *    For a light with a radius (SetLightRadius) the layer becomes soft: penumbra wedges add
- *    each silhouette edge's exact share of the light at every pixel (METHOD_PENUMBRA_WEDGES), or
- *    the hard shadows of LightSamples points on the light are averaged
- *    (METHOD_AVERAGED_HARD_SHADOWS); METHOD_AUTOMATIC picks per light;
+ *    For a light with a radius (SetLightRadius) the layer becomes soft: by default
+ *    (METHOD_SOFT_SHADOW_VOLUMES) the depth complexity of LightSamples points on the light is
+ *    counted exactly from the centre's volume count and one wedge per potential silhouette
+ *    edge, which equals averaging those samples' hard shadows (METHOD_AVERAGED_HARD_SHADOWS)
+ *    for any mesh at the cost of one wedge pass; penumbra wedges of the centre silhouette
+ *    (METHOD_PENUMBRA_WEDGES) and plateaus (METHOD_PLATEAUS) are cheaper approximations;
  * 4. renders the scene through its delegate (by default VTK's own render steps) with the
  *    mappers' fragment shaders edited so that each light's diffuse and specular terms are scaled
  *    by 1 - ShadowAttenuation * (1 - LI), ambient untouched (Phong and PBR).
@@ -78,9 +80,8 @@ public:
   /// How shadows are computed for each shadowing light.
   enum Method
   {
-    /// The cheapest method that is right for the light: hard volumes for a light of radius 0,
-    /// penumbra wedges for an area light, or averaged hard shadows (LightSamples) when layers
-    /// of a caster share an outline seen from the light (wedges would count them twice).
+    /// Hard volumes for a light of radius 0, soft shadow volumes for an area light (averaged
+    /// hard shadows where the OpenGL context lacks image atomics).
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
@@ -97,27 +98,36 @@ public:
     /// outline, rendered straight down the plane's normal into a texture where the darkest
     /// primitive wins. Fast and smooth, with an umbra too large (no inner penumbra). Pixels
     /// off the plane get the hard shadow of the light's centre.
-    METHOD_PLATEAUS = 4
+    METHOD_PLATEAUS = 4,
+    /// Per-light-sample counting (Laine et al. 2005, Forest et al. 2008): the shadow-volume count
+    /// of the light's centre plus, in one wedge per potential silhouette edge, each edge's change
+    /// of the count of every one of LightSamples points on the light, as seen from the pixel.
+    /// The same answer as averaging those samples' hard shadows, for any mesh, in one volume
+    /// pass and one wedge pass. Needs OpenGL 4.4 (or image load/store and clear_texture); at most
+    /// 256 samples; a sample's count is kept in 8 bits (256 layers overflow).
+    METHOD_SOFT_SHADOW_VOLUMES = 5
   };
 
   ///@{
   /**
    * The method (default METHOD_AUTOMATIC).
    */
-  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_PLATEAUS);
+  vtkSetClampMacro(Method, int, METHOD_AUTOMATIC, METHOD_SOFT_SHADOW_VOLUMES);
   vtkGetMacro(Method, int);
   void SetMethodToAutomatic() { this->SetMethod(METHOD_AUTOMATIC); }
   void SetMethodToHardVolumes() { this->SetMethod(METHOD_HARD_VOLUMES); }
   void SetMethodToAveragedHardShadows() { this->SetMethod(METHOD_AVERAGED_HARD_SHADOWS); }
   void SetMethodToPenumbraWedges() { this->SetMethod(METHOD_PENUMBRA_WEDGES); }
   void SetMethodToPlateaus() { this->SetMethod(METHOD_PLATEAUS); }
+  void SetMethodToSoftShadowVolumes() { this->SetMethod(METHOD_SOFT_SHADOW_VOLUMES); }
   const char* GetMethodAsString();
   ///@}
 
   ///@{
   /**
-   * Light samples per area light for METHOD_AVERAGED_HARD_SHADOWS (and METHOD_AUTOMATIC's
-   * fallback), default 16.
+   * Light samples per area light for METHOD_SOFT_SHADOW_VOLUMES (at most 256 there) and
+   * METHOD_AVERAGED_HARD_SHADOWS: the same N gives the same points, and the same answer, in
+   * both. Default 16.
    */
   vtkSetClampMacro(LightSamples, int, 1, 4096);
   vtkGetMacro(LightSamples, int);
@@ -209,8 +219,9 @@ public:
    */
   vtkGetMacro(NumberOfShadowingLights, int);
   vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
-  /// Penumbra wedges drawn in the last frame, and those drawn over the whole viewport because
-  /// their edge nearly points at the light (no wedge planes exist).
+  /// Wedges drawn in the last frame (centre-silhouette penumbra wedges and soft shadow volumes'
+  /// potential-silhouette wedges), and those drawn over the whole viewport because their edge
+  /// nearly points at the light (no wedge planes exist).
   vtkGetMacro(NumberOfPenumbraWedges, vtkIdType);
   vtkGetMacro(NumberOfFullViewportWedges, vtkIdType);
   /// (caster, light) pairs skipped in the last frame because that shadow cannot reach the view.
@@ -222,8 +233,9 @@ public:
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
-  /// and stencil, depth copy, one light-intensity layer per light) and the casters' vertex,
-  /// index and wedge buffers.
+  /// and stencil, depth copy, one light-intensity layer per light, and for soft shadow volumes
+  /// the centre count and one byte per pixel and light sample) and the casters' vertex, index
+  /// and wedge buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
   void Render(const vtkRenderState* s) override;

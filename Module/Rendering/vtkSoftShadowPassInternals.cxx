@@ -6,6 +6,8 @@
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
+#include "penumbraSampleCounting.h"
+#include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
 
 #include <algorithm>
@@ -157,6 +159,50 @@ void VolumeCache::Upload()
   this->Uploaded = true;
 }
 
+namespace
+{
+/// Appends the wedge of edge from -> to (wedge coordinates) as 8 outward triangles, or, when no
+/// planes bound the edge's support (it nearly points at the light), a clockwise full-viewport
+/// triangle (w = 2, clip space) that back-face culling keeps: exact but costly. Every vertex
+/// carries `attributes`. Returns whether the wedge was valid.
+bool AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+  double radius, const float* attributes, int attributeCount, std::vector<float>& vertices)
+{
+  auto emit = [&](const glm::dvec4& position) {
+    const float xyzw[4] = { static_cast<float>(position.x), static_cast<float>(position.y),
+      static_cast<float>(position.z), static_cast<float>(position.w) };
+    vertices.insert(vertices.end(), xyzw, xyzw + 4);
+    vertices.insert(vertices.end(), attributes, attributes + attributeCount);
+  };
+  const Wedge wedge = Wedge::Build(from, to, light, radius);
+  if (wedge.Valid)
+  {
+    for (unsigned int index : Wedge::Triangles())
+    {
+      emit(wedge.Vertices[index]);
+    }
+    return true;
+  }
+  for (const glm::dvec2 corner : { glm::dvec2(-1, -1), glm::dvec2(-1, 3), glm::dvec2(3, -1) })
+  {
+    emit(glm::dvec4(corner, 0.0, 2.0));
+  }
+  return false;
+}
+
+/// The wedge origin: the light's centre, or the caster's for a directional light.
+glm::dvec3 WedgeOrigin(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld)
+{
+  return lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
+                             : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+}
+
+glm::dvec4 LightInWedgeCoordinates(const glm::dvec4& lightWorld)
+{
+  return lightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : lightWorld;
+}
+} // namespace
+
 bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
 {
@@ -170,42 +216,21 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   this->ObjectToWorld = objectToWorld;
   this->LightWorld = lightWorld;
   this->Radius = radius;
-  this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
-                                     : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  this->Origin = WedgeOrigin(objectToWorld, lightWorld);
   const glm::dvec4 light = this->LightInWedgeSpace();
   this->Vertices.clear();
   this->Wedges = this->Fallbacks = 0;
-  auto emit = [this](const glm::dvec4& position, const glm::dvec3& from, const glm::dvec3& to,
-                double weight) {
-    const double values[11] = { position.x, position.y, position.z, position.w, from.x, from.y,
-      from.z, to.x, to.y, to.z, weight };
-    this->Vertices.insert(this->Vertices.end(), values, values + 11);
-  };
   for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
   {
     const glm::dvec3 from =
       glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
     const glm::dvec3 to =
       glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
-    const Wedge wedge = Wedge::Build(from, to, light, radius);
-    if (wedge.Valid)
-    {
-      ++this->Wedges;
-      for (unsigned int index : Wedge::Triangles())
-      {
-        emit(wedge.Vertices[index], from, to, edge.Multiplicity);
-      }
-    }
-    else
-    {
-      // No planes bound this edge's support (it nearly points at the light): evaluate it over
-      // the whole viewport, exact but costly; clockwise, so back-face culling keeps it.
-      ++this->Fallbacks;
-      for (const glm::dvec2 corner : { glm::dvec2(-1, -1), glm::dvec2(-1, 3), glm::dvec2(3, -1) })
-      {
-        emit(glm::dvec4(corner, 0.0, 2.0), from, to, edge.Multiplicity);
-      }
-    }
+    const float attributes[7] = { static_cast<float>(from.x), static_cast<float>(from.y),
+      static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
+      static_cast<float>(to.z), static_cast<float>(edge.Multiplicity) };
+    const bool valid = AppendWedge(from, to, light, radius, attributes, 7, this->Vertices);
+    ++(valid ? this->Wedges : this->Fallbacks);
   }
   this->Uploaded = false;
   return true;
@@ -213,7 +238,7 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
 
 glm::dvec4 WedgeCache::LightInWedgeSpace() const
 {
-  return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
+  return LightInWedgeCoordinates(this->LightWorld);
 }
 
 void WedgeCache::Bind(vtkShaderProgram* program)
@@ -240,6 +265,108 @@ void WedgeCache::Bind(vtkShaderProgram* program)
     this->VAOProgram = program;
   }
   this->VAO->Bind();
+}
+
+bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectToWorld,
+  const glm::dvec4& lightWorld, double radius, bool frontFacesOnly)
+{
+  this->Used = true;
+  if (this->MeshGeneration == mesh.Generation && this->ObjectToWorld == objectToWorld &&
+    this->LightWorld == lightWorld && this->Radius == radius &&
+    this->FrontFacesOnly == frontFacesOnly)
+  {
+    return false;
+  }
+  this->MeshGeneration = mesh.Generation;
+  this->ObjectToWorld = objectToWorld;
+  this->LightWorld = lightWorld;
+  this->Radius = radius;
+  this->FrontFacesOnly = frontFacesOnly;
+  this->Origin = WedgeOrigin(objectToWorld, lightWorld);
+  const glm::dvec4 light = this->LightInWedgeSpace();
+  const CasterTopology& topo = mesh.Topology;
+  this->Vertices.clear();
+  this->Wedges = this->Fallbacks = 0;
+
+  std::vector<glm::dvec3> world(topo.Points.size());
+  for (std::size_t i = 0; i < world.size(); ++i)
+  {
+    world[i] = glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0)) - this->Origin;
+  }
+  // With a mirroring matrix the stored winding faces inward: flip normal and walk together, which
+  // leaves the general rule's products unchanged and keeps "front" outward for the closed rule.
+  const double flip = glm::determinant(glm::dmat3(objectToWorld)) < 0.0 ? -1.0 : 1.0;
+  for (std::uint32_t e :
+    PotentialSilhouette(topo, objectToWorld, lightWorld, radius, frontFacesOnly))
+  {
+    const Edge& edge = topo.Edges[e];
+    const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
+    for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
+    {
+      float attributes[14] = { static_cast<float>(from.x), static_cast<float>(from.y),
+        static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
+        static_cast<float>(to.z), 0, 0, 0, 0, 0, 0, 0, 0 };
+      for (std::uint32_t k = 0; k < 2 && first + k < edge.UseCount; ++k)
+      {
+        const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
+        const glm::uvec3& tri = topo.Triangles[use.Triangle];
+        const glm::dvec3 normal =
+          flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
+        for (int c = 0; c < 3; ++c)
+        {
+          attributes[6 + 3 * k + c] = static_cast<float>(normal[c]);
+        }
+        attributes[12 + k] = static_cast<float>(flip * use.Sign);
+      }
+      const bool valid = AppendWedge(from, to, light, radius, attributes, 14, this->Vertices);
+      ++(valid ? this->Wedges : this->Fallbacks);
+    }
+  }
+  this->Uploaded = false;
+  return true;
+}
+
+glm::dvec4 CountingWedgeCache::LightInWedgeSpace() const
+{
+  return LightInWedgeCoordinates(this->LightWorld);
+}
+
+void CountingWedgeCache::Bind(vtkShaderProgram* program)
+{
+  if (!this->Uploaded)
+  {
+    this->Buffer->Upload(this->Vertices, vtkOpenGLBufferObject::ArrayBuffer);
+    this->Uploaded = true;
+    this->VAOProgram = nullptr;
+  }
+  if (this->VAOProgram != program)
+  {
+    // Releases the old VAO: must come before Bind.
+    this->VAO->ShaderProgramChanged();
+    this->VAO->Bind();
+    const size_t stride = FloatsPerVertex * sizeof(float);
+    const struct
+    {
+      const char* Name;
+      int Offset, Components;
+    } attributes[] = { { "vertexMC", 0, 4 }, { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 },
+      { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 }, { "faceSigns", 16, 2 } };
+    for (const auto& attribute : attributes)
+    {
+      this->VAO->AddAttributeArray(program, this->Buffer, attribute.Name,
+        attribute.Offset * sizeof(float), stride, VTK_FLOAT, attribute.Components, false);
+    }
+    this->VAOProgram = program;
+  }
+  this->VAO->Bind();
+}
+
+void CountingWedgeCache::ReleaseGraphicsResources()
+{
+  this->Buffer->ReleaseGraphicsResources();
+  this->VAO->ReleaseGraphicsResources();
+  this->VAOProgram = nullptr;
+  this->Uploaded = false;
 }
 
 MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner)
@@ -282,6 +409,10 @@ void ShadowCaches::BeginFrame()
     {
       wedges.second.Used = false;
     }
+    for (auto& wedges : caster.second->CountingWedges)
+    {
+      wedges.second.Used = false;
+    }
   }
 }
 
@@ -303,6 +434,11 @@ void ShadowCaches::PurgeUnused()
     for (auto w = wedges.begin(); w != wedges.end();)
     {
       w = w->second.Used ? std::next(w) : wedges.erase(w);
+    }
+    auto& counting = it->second->CountingWedges;
+    for (auto w = counting.begin(); w != counting.end();)
+    {
+      w = w->second.Used ? std::next(w) : counting.erase(w);
     }
     ++it;
   }
@@ -332,6 +468,10 @@ void ShadowCaches::ReleaseGraphicsResources()
       wedges.second.VAOProgram = nullptr;
       wedges.second.Uploaded = false;
     }
+    for (auto& wedges : caster.second->CountingWedges)
+    {
+      wedges.second.ReleaseGraphicsResources();
+    }
   }
 }
 
@@ -351,6 +491,10 @@ std::size_t ShadowCaches::GraphicsBufferBytes() const
       bytes += v.Uploaded ? (v.SideCount() + v.CapCount() + v.DarkCapCount()) * sizeof(std::uint32_t) : 0;
     }
     for (const auto& wedges : caster.second->Wedges)
+    {
+      bytes += wedges.second.Uploaded ? wedges.second.Vertices.size() * sizeof(float) : 0;
+    }
+    for (const auto& wedges : caster.second->CountingWedges)
     {
       bytes += wedges.second.Uploaded ? wedges.second.Vertices.size() * sizeof(float) : 0;
     }

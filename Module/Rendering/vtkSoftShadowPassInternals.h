@@ -109,6 +109,39 @@ struct WedgeCache
   std::size_t VertexCount() const { return this->Vertices.size() / 11; }
 };
 
+/// Potential-silhouette wedges of one caster for one light, for per-light-sample counting
+/// (penumbraSampleCounting.h): one wedge per (edge, up to two of its faces), each vertex carrying
+/// the edge and its faces' normals and walk signs so that the fragment shader can take the
+/// edge's multiplicity from the pixel's point. Coordinates as in WedgeCache.
+struct CountingWedgeCache
+{
+  glm::dvec3 Origin{ 0.0 };
+  glm::dmat4 ObjectToWorld{ 0.0 };
+  glm::dvec4 LightWorld{ 0.0 };
+  double Radius = -1.0;
+  bool FrontFacesOnly = false;
+  std::size_t MeshGeneration = ~std::size_t(0);
+  std::size_t Wedges = 0;
+  std::size_t Fallbacks = 0;
+  /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2)
+  std::vector<float> Vertices;
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* VAOProgram = nullptr;
+  bool Uploaded = false;
+  bool Used = false;
+
+  static constexpr int FloatsPerVertex = 18;
+  /// Rebuilds when the mesh, the actor's matrix, the light, its radius or the counting rule
+  /// changed; returns true when it did.
+  bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
+    double radius, bool frontFacesOnly);
+  glm::dvec4 LightInWedgeSpace() const;
+  void Bind(vtkShaderProgram* program);
+  void ReleaseGraphicsResources();
+  std::size_t VertexCount() const { return this->Vertices.size() / FloatsPerVertex; }
+};
+
 /// An actor that casts shadows this frame.
 struct CasterCache
 {
@@ -119,6 +152,7 @@ struct CasterCache
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;
+  std::map<vtkLight*, CountingWedgeCache> CountingWedges;
   /// Lights whose shadow of this caster cannot reach the view this frame: nothing is done.
   std::set<vtkLight*> Culled;
   bool Used = false;

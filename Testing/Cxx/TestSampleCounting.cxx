@@ -10,6 +10,7 @@
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 
+#include "vtkConeSource.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricMobius.h"
@@ -190,6 +191,11 @@ std::vector<Caster> MakeCasters(std::mt19937& rng)
   casters.push_back({ "mirrored, scaled sphere", FromSource(sphere),
     glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, -0.1, 0.3)),
       glm::dvec3(-1.0, 0.7, 1.3)) });
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(24);
+  cone->SetHeight(1.6);
+  cone->SetDirection(0, 1, 0);
+  casters.push_back({ "capped cone", FromSource(cone) });
   vtkNew<vtkPlaneSource> plane;
   plane->SetResolution(3, 2);
   casters.push_back({ "open sheet", FromSource(plane) });

@@ -1,0 +1,31 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//PENUMBRA::SampleCount
+// Turns the per-sample counters into the light's visibility: sample i is visible where its depth
+// complexity, the centre's count plus the edges' changes (penumbraCountingWedgeFS.glsl), is 0.
+// Pixels that no wedge reached (useCounters 0) see every sample as the centre sees it.
+uniform sampler2D centreCount; // minus the centre's shadow-volume count
+uniform usampler3D counters;
+uniform int useCounters;
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  int centre = int(round(-texelFetch(centreCount, pixel, 0).r));
+  if (useCounters == 0)
+  {
+    gl_FragData[0] = vec4(centre == 0 ? 1.0 : 0.0);
+    return;
+  }
+  uint offset = uint(centre) * 0x01010101u;
+  int visible = 0;
+  for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
+  {
+    uint counts = texelFetch(counters, ivec3(pixel, word), 0).r + offset;
+    for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
+    {
+      visible += ((counts >> uint(8 * field)) & 0xFFu) == 0u ? 1 : 0;
+    }
+  }
+  gl_FragData[0] = vec4(float(visible) / float(PENUMBRA_SAMPLE_COUNT));
+}

@@ -1,0 +1,97 @@
+//VTK::System::Dec
+#extension GL_ARB_shader_image_load_store : require
+//VTK::Output::Dec
+//PENUMBRA::SampleCount
+// Per-light-sample counting (penumbraSampleCounting.cxx is the reference implementation and its
+// tests): at the visible point p of this pixel, the edge changes the depth complexity of light
+// sample i by -m(p) when the path on the light from its centre to the sample crosses the edge's
+// projection from p, with the sign of the side the sample lies on. The changes of four samples
+// are packed into one 32-bit word, 8 bits each, and added with one atomic; modular arithmetic
+// keeps every field exact while the final count stays in [0, 255].
+//
+// The depth test must run before this shader: a fragment it rejects must not count.
+layout(early_fragment_tests) in;
+
+uniform sampler2D depthTexture;
+uniform mat4 clipToWedge;   // NDC of this viewport to wedge coordinates
+uniform vec2 viewportSize;
+uniform vec4 lightWedge;    // (centre, 1) or (direction towards the light, 0), wedge coordinates
+uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT]; // wedge coordinates, same w as lightWedge
+uniform int frontFacesOnly; // the counting rule of this caster's centre volume
+uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
+layout(r32ui) uniform uimage3D counters;
+
+flat in vec3 edgeFromVS;
+flat in vec3 edgeToVS;
+flat in vec3 faceNormal0VS;
+flat in vec3 faceNormal1VS;
+flat in vec2 faceSignsVS;
+
+float faceWeight(vec3 normal, vec3 fromEdge)
+{
+  float side = dot(normal, fromEdge);
+  return frontFacesOnly != 0 ? (side > 0.0 ? 1.0 : 0.0) : sign(side);
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(depthTexture, pixel, 0).r;
+  if (depth >= 1.0)
+  {
+    discard; // background
+  }
+  // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
+  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0,
+    depth * 2.0 - 1.0 - eyeDepthBias, 1.0);
+  vec4 point = clipToWedge * ndc;
+  vec3 p = point.xyz / point.w;
+
+  vec3 u = edgeFromVS - p;
+  vec3 v = edgeToVS - p;
+  int multiplicity = int(faceSignsVS.x * faceWeight(faceNormal0VS, -u) +
+    faceSignsVS.y * faceWeight(faceNormal1VS, -u));
+  if (multiplicity == 0)
+  {
+    discard; // not a silhouette seen from p
+  }
+  vec3 n = cross(u, v);
+  vec3 towardsCentre = lightWedge.xyz - lightWedge.w * p;
+  float dc = dot(n, towardsCentre);
+  // Where the path meets the plane (p, edge): alpha u + beta v, scaled by |n|^2.
+  vec3 alphaAxis = cross(v, n);
+  vec3 betaAxis = cross(n, u);
+  float alphaCentre = dot(towardsCentre, alphaAxis);
+  float betaCentre = dot(towardsCentre, betaAxis);
+  float beyond = lightWedge.w != 0.0 ? dot(n, n) : -1.0;
+
+  for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
+  {
+    uint changes = 0u;
+    for (int field = 0; field < 4; ++field)
+    {
+      int i = word * 4 + field;
+      if (i >= PENUMBRA_SAMPLE_COUNT)
+      {
+        break;
+      }
+      vec3 towardsSample = lightSamples[i].xyz - lightSamples[i].w * p;
+      float ds = dot(n, towardsSample);
+      if (dc * ds < 0.0)
+      {
+        float t = dc / (dc - ds);
+        float alpha = alphaCentre + t * (dot(towardsSample, alphaAxis) - alphaCentre);
+        float beta = betaCentre + t * (dot(towardsSample, betaAxis) - betaCentre);
+        if (alpha >= 0.0 && beta >= 0.0 && alpha + beta >= beyond)
+        {
+          int change = ds > 0.0 ? -multiplicity : multiplicity;
+          changes += uint(change) << uint(8 * field);
+        }
+      }
+    }
+    if (changes != 0u)
+    {
+      imageAtomicAdd(counters, ivec3(pixel, word), changes);
+    }
+  }
+}
