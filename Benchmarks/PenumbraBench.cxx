@@ -672,6 +672,13 @@ std::vector<MethodSpec> AllMethods()
   // Penumbra wedges: the hard shadow of the light's centre plus one wedge per silhouette edge.
   methods.push_back({ "wedges",
     []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES, 1); } });
+  // Soft shadow volumes: per-sample counting, the averaged method's answer for the same samples.
+  for (int samples : { 16, 64 })
+  {
+    methods.push_back({ "soft_volumes_" + std::to_string(samples), [samples]() {
+                         return MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples);
+                       } });
+  }
   // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
   methods.push_back({ "plateaus",
     []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });

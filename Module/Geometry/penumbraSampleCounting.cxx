@@ -94,7 +94,7 @@ int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b
   const glm::dvec3 towardsCentre = glm::dvec3(centre) - centre.w * p;
   const glm::dvec3 towardsSample = glm::dvec3(sample) - sample.w * p;
   const double dc = glm::dot(n, towardsCentre), ds = glm::dot(n, towardsSample);
-  if (!(dc * ds < 0.0))
+  if (!((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0)))
   {
     return 0; // same side of the plane (p, a, b), on it, or degenerate
   }

@@ -257,7 +257,7 @@ void TestAveragedHardShadows()
   Check(hard > 2 * errors[1], "hard shadows ignore the radius (larger error)");
   scene.Pass->SetMethodToAutomatic();
   SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
-  Check(scene.Pass->GetNumberOfPenumbraWedges() > 0, "automatic uses penumbra wedges for an area light");
+  Check(scene.Pass->GetNumberOfPenumbraWedges() > 0, "automatic counts an area light with wedges");
 }
 
 /// Soft visibility of light `lightIndex` against a 256-sample truth: mean absolute error and
@@ -690,7 +690,8 @@ void TestPlateaus()
 void TestAutomaticOnLayeredOutlines()
 {
   // An isosurface clipped open by its extent: its walls share outlines (silhouette edges of
-  // multiplicity 2), which wedges would count twice. Automatic must average hard shadows instead.
+  // multiplicity 2), which centre-silhouette wedges count twice. Automatic's soft shadow volumes
+  // count every light sample exactly, layers and all.
   Scene scene;
   scene.Window->SetMultiSamples(0);
   scene.Ground(6);
@@ -708,8 +709,8 @@ void TestAutomaticOnLayeredOutlines()
   scene.Camera(2.5, 5, 6, 0, 0.6, 0);
   scene.Pass->SetMethodToAutomatic();
   const SoftComparison automatic = CompareSoft(scene);
-  Check(scene.Pass->GetNumberOfPenumbraWedges() == 0,
-    "automatic averages hard shadows when a caster's layers share an outline");
+  Check(scene.Pass->GetNumberOfPenumbraWedges() > 0,
+    "automatic counts light samples with potential-silhouette wedges on layered outlines");
   CheckSoft("automatic on a clipped isosurface", automatic, 0.02, 0.03);
   const vtkIdType updates = scene.Pass->GetNumberOfSilhouetteUpdates();
   scene.Renderer->GetActiveCamera()->Azimuth(5);
@@ -717,12 +718,12 @@ void TestAutomaticOnLayeredOutlines()
   scene.Renderer->GetActiveCamera()->Azimuth(5);
   scene.Window->Render();
   Check(scene.Pass->GetNumberOfSilhouetteUpdates() == updates,
-    "camera orbit does no silhouette work with Automatic's averaged fallback");
+    "camera orbit does no silhouette work with Automatic's soft shadow volumes");
   scene.Pass->SetMethodToPenumbraWedges();
   const SoftComparison wedges = CompareSoft(scene);
   std::printf("     forced wedges on it: MAE %.4f, >0.1: %.2f%%\n", wedges.MeanError,
     100.0 * wedges.FractionAbove01);
-  Check(wedges.MeanError > automatic.MeanError, "the fallback is the better choice there");
+  Check(wedges.MeanError > automatic.MeanError, "counting is the better choice there");
 }
 
 void TestCachingAndHeadlights()

@@ -941,7 +941,8 @@ std::vector<HardCase> BuildCases()
   // default limit.
   const std::string layered = "forced wedges count outlines that layers of an open or "
                               "self-intersecting caster share (silhouette edges of multiplicity "
-                              "> 1) twice; Automatic averages hard shadows here instead";
+                              "> 1) twice; Automatic's soft shadow volumes count each light sample "
+                              "exactly here instead";
   const std::string speck = "single-pixel numerical specks that move or vanish when the camera "
                             "moves by 0.001 to 0.01 (--camera-offset)";
   const std::string faces = "wedges use one silhouette, from the light's centre; while the light "
@@ -957,6 +958,11 @@ std::vector<HardCase> BuildCases()
     }
   };
   known("saddle", { HARD, 1, -1, 0, speck });
+  // Soft shadow volumes start from the centre's hard volume and inherit its speck.
+  known("saddle", { AUTOMATIC, 1, -1, 0, speck });
+  known("klein_bottle", { AUTOMATIC, 1, -1, 0,
+    "one pixel where soft shadow volumes and averaging disagree by more than 0.5; not yet "
+    "explained (Documentation/wedges.md)" });
   known("crumpled_sheet", { HARD, 1, -1, 0, speck });
   known("crumpled_sheet", { WEDGES, 2, -1, 0, speck });
   known("clipped_isosurface", { WEDGES, 1, 0.07, 0, layered });

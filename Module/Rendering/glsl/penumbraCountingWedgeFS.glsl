@@ -55,8 +55,14 @@ void main()
   {
     discard; // not a silhouette seen from p
   }
+  // Every test below is a sign or homogeneous of degree 4 in lengths: scaling by 1/|u| keeps
+  // scenes of size 1e-6 or 1e6 inside float range.
+  float scale = 1.0 / max(length(u), 1e-30);
+  u *= scale;
+  v *= scale;
   vec3 n = cross(u, v);
-  vec3 towardsCentre = lightWedge.xyz - lightWedge.w * p;
+  float lightScale = lightWedge.w != 0.0 ? scale : 1.0;
+  vec3 towardsCentre = (lightWedge.xyz - lightWedge.w * p) * lightScale;
   float dc = dot(n, towardsCentre);
   // Where the path meets the plane (p, edge): alpha u + beta v, scaled by |n|^2.
   vec3 alphaAxis = cross(v, n);
@@ -75,9 +81,9 @@ void main()
       {
         break;
       }
-      vec3 towardsSample = lightSamples[i].xyz - lightSamples[i].w * p;
+      vec3 towardsSample = (lightSamples[i].xyz - lightSamples[i].w * p) * lightScale;
       float ds = dot(n, towardsSample);
-      if (dc * ds < 0.0)
+      if ((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0))
       {
         float t = dc / (dc - ds);
         float alpha = alphaCentre + t * (dot(towardsSample, alphaAxis) - alphaCentre);
