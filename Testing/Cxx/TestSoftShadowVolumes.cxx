@@ -3,10 +3,10 @@
 // wrong: open, non-orientable, non-manifold, mirrored and overlapping casters, a directional
 // light, the eye inside a penumbra and a light inside a caster's bounds.
 //
-// Tolerances (measured, see Documentation/wedges.md): of the pixels that either method shadows,
-// at most 1.5% differ by more than 1/N (pixel-boundary and self-shadowing differences at the
-// casters' terminators), at most 0.5% by more than 0.5; against the truth the counting method's
-// MAE is at most the averaged method's plus 0.01.
+// Tolerances (see Documentation/wedges.md): of the pixels that either method shadows, at most 1%
+// differ by more than 1/N (pixel-boundary and self-shadowing differences at the casters'
+// terminators; measured 0.00% to 0.60%), at most 0.1% by more than 0.5 (measured 0.02% at most);
+// against the truth the counting method's MAE is at most the averaged method's plus 0.01.
 #include "penumbraTestHarness.h"
 
 #include "vtkCamera.h"
@@ -112,8 +112,8 @@ void RunScene(const Scene& scene)
               "averaged %.4f, counted %.4f\n",
     scene.Name.c_str(), shadowed, 100.0 * step, 100.0 * half, maeAveraged, maeCounted);
   Check(shadowed > Width * Height / 100, scene.Name + ": shadow in view");
-  Check(step <= 0.015, scene.Name + ": counting equals averaging within 1/N");
-  Check(half <= 0.005, scene.Name + ": no counting pixel off by half");
+  Check(step <= 0.01, scene.Name + ": counting equals averaging within 1/N");
+  Check(half <= 0.001, scene.Name + ": no counting pixel off by half");
   Check(maeCounted <= maeAveraged + 0.01, scene.Name + ": as accurate as averaging");
 }
 
