@@ -481,6 +481,7 @@ struct MethodInstance
   vtkSmartPointer<vtkRenderPass> Pass;              ///< installed with renderer->SetPass
   std::function<vtkImageData*()> Visibility;       ///< empty: scored on luminance
   std::function<long long()> ShadowTriangles;      ///< empty: not applicable
+  std::function<long long()> Wedges;               ///< empty: not applicable
   /// Scene changes the method makes (a decal actor) and takes back; empty: none.
   std::function<void(vtkRenderer*)> Attach, Detach;
 };
@@ -523,6 +524,7 @@ MethodInstance MakeSoftShadow(int method, int samples)
   instance.ShadowTriangles = [raw]() {
     return static_cast<long long>(raw->GetNumberOfShadowVolumeTriangles());
   };
+  instance.Wedges = [raw]() { return static_cast<long long>(raw->GetNumberOfPenumbraWedges()); };
   return instance;
 }
 
@@ -749,6 +751,7 @@ struct Row
   ErrorStats Ground;         ///< visibility on the ground's pixels only (results_ground.csv)
   bool VisibilityMetric = false;
   long long ShadowTriangles = -1;
+  long long Wedges = -1;
 };
 
 const char* CsvHeader =
@@ -765,9 +768,9 @@ void WriteCsvRow(std::FILE* file, const Row& row, const ErrorStats& e)
 
 void PrintTableHeader()
 {
-  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s\n", "method",
+  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s %8s\n", "method",
     "frames", "median ms", "min ms", "x none", "MAE", "RMSE", "p99", "max", ">0.1", ">0.5",
-    "err", "pixels", "sv tris", "gnd MAE");
+    "err", "pixels", "sv tris", "gnd MAE", "wedges");
 }
 
 void PrintTableRow(const Row& row, double noneMedian)
@@ -783,16 +786,21 @@ void PrintTableRow(const Row& row, double noneMedian)
   {
     std::snprintf(shadowTriangles, sizeof(shadowTriangles), "%lld", row.ShadowTriangles);
   }
+  char wedges[32] = "-";
+  if (row.Wedges >= 0)
+  {
+    std::snprintf(wedges, sizeof(wedges), "%lld", row.Wedges);
+  }
   char ground[32] = "-";
   if (row.VisibilityMetric)
   {
     std::snprintf(ground, sizeof(ground), "%.4f", row.Ground.MAE);
   }
   std::printf("  %-15s %6d %10.2f %10.2f %8s %8.4f %8.4f %7.3f %7.3f %6.2f%% %6.2f%%  %-4s %8zu "
-              "%10s %8s\n",
+              "%10s %8s %8s\n",
     row.Method.c_str(), row.Time.Frames, row.Time.Median, row.Time.Min, ratio, e.MAE, e.RMSE,
     e.P99, e.Max, 100.0 * e.FracGt01, 100.0 * e.FracGt05, row.VisibilityMetric ? "vis" : "lum",
-    e.Pixels, shadowTriangles, ground);
+    e.Pixels, shadowTriangles, ground, wedges);
   std::fflush(stdout);
 }
 
@@ -1199,6 +1207,10 @@ int main(int argc, char* argv[])
         if (method.ShadowTriangles)
         {
           row.ShadowTriangles = method.ShadowTriangles();
+        }
+        if (method.Wedges)
+        {
+          row.Wedges = method.Wedges();
         }
         if (images)
         {

@@ -244,4 +244,82 @@ const std::array<unsigned int, 24>& Wedge::Triangles()
   return triangles;
 }
 
+LightPyramid LightPyramid::Build(
+  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+{
+  LightPyramid pyramid;
+  if (light.w == 0.0 || !(radius >= 0.0))
+  {
+    return pyramid;
+  }
+  const glm::dvec3 centre(light);
+  const glm::dvec3 toA = a - centre, toB = b - centre;
+  // The nearest point of the edge to the centre bounds the widening angle.
+  const glm::dvec3 edge = b - a;
+  const double edgeLength2 = glm::dot(edge, edge);
+  const double t = edgeLength2 > 0.0 ? glm::clamp(-glm::dot(toA, edge) / edgeLength2, 0.0, 1.0) : 0.0;
+  const double nearest = glm::length(toA + t * edge);
+  if (!(nearest > radius) || !(glm::length(toA) > 0.0) || !(glm::length(toB) > 0.0))
+  {
+    return pyramid;
+  }
+  const glm::dvec3 dirA = glm::normalize(toA), dirB = glm::normalize(toB);
+  const glm::dvec3 sum = dirA + dirB;
+  if (!(glm::length(sum) > 1e-12))
+  {
+    return pyramid; // the edge spans the centre: no cone holds it
+  }
+  const glm::dvec3 axis = glm::normalize(sum);
+  const double spread = std::acos(glm::clamp(glm::dot(axis, dirA), -1.0, 1.0));
+  const double widening = std::atan(radius / (nearest - radius));
+  const double halfAngle = spread + widening;
+  constexpr double MaximumHalfAngle = Pi / 3.0;
+  if (!(halfAngle < MaximumHalfAngle))
+  {
+    return pyramid;
+  }
+  glm::dvec3 e1, e2;
+  PlaneBasis(axis, e1, e2);
+  const double reach = std::tan(halfAngle);
+  const glm::dvec3 corners[4] = { axis + reach * (e1 + e2), axis + reach * (-e1 + e2),
+    axis + reach * (-e1 - e2), axis + reach * (e1 - e2) };
+  pyramid.Vertices[0] = glm::dvec4(centre, 1.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    pyramid.Vertices[k + 1] = glm::dvec4(glm::normalize(corners[k]), 0.0);
+    // The corners turn counter-clockwise about the axis: the cross product points outwards.
+    pyramid.Normals[k] = glm::normalize(glm::cross(corners[(k + 1) % 4], corners[k]));
+  }
+  for (const glm::dvec3& n : pyramid.Normals)
+  {
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+    {
+      return pyramid;
+    }
+  }
+  pyramid.Valid = true;
+  return pyramid;
+}
+
+bool LightPyramid::Contains(const glm::dvec3& x, double tolerance) const
+{
+  const glm::dvec3 relative = x - glm::dvec3(this->Vertices[0]);
+  for (const glm::dvec3& n : this->Normals)
+  {
+    if (glm::dot(n, relative) > tolerance)
+    {
+      return false;
+    }
+  }
+  return this->Valid;
+}
+
+const std::array<unsigned int, 18>& LightPyramid::Triangles()
+{
+  // Vertices: 0 apex, 1..4 directions counter-clockwise about the axis.
+  static const std::array<unsigned int, 18> triangles = { 0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 4,
+    1, 2, 3, 1, 3, 4 };
+  return triangles;
+}
+
 } // namespace penumbra

@@ -62,6 +62,31 @@ struct VTKPENUMBRAGEOMETRY_EXPORT Wedge
   static const std::array<unsigned int, 24>& Triangles();
 };
 
+/**
+ * A convex bound for an edge that has no Wedge because its line passes through a positional
+ * light's sphere (the edge points at the light): every point from which the edge can be seen
+ * crossing the light lies in this square pyramid, apex at the light's centre, open to infinity
+ * away from it. A point p that sees edge point E in front of light point X lies on the ray from X
+ * through E, and the angle at the centre between p and E is below atan(r / (|E - c| - r)); the
+ * pyramid circumscribes the cone of the edge's directions from the centre widened by that angle.
+ * Valid is false for a directional light, an edge reaching into the light, or a bound wider than
+ * 60 degrees: then the whole viewport is the only bound.
+ */
+struct VTKPENUMBRAGEOMETRY_EXPORT LightPyramid
+{
+  bool Valid = false;
+  /// The apex (the light's centre, w = 1), then the four edge directions (w = 0).
+  std::array<glm::dvec4, 5> Vertices;
+  /// Outward unit normals of the four side planes, all through the apex.
+  std::array<glm::dvec3, 4> Normals;
+
+  static LightPyramid Build(
+    const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius);
+  bool Contains(const glm::dvec3& x, double tolerance = 0.0) const;
+  /// Six outward triangles (indices into Vertices): four sides and the far end at infinity.
+  static const std::array<unsigned int, 18>& Triangles();
+};
+
 } // namespace penumbra
 
 #endif

@@ -1313,7 +1313,7 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
     cache.VAO->Release();
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
-    fullViewport += static_cast<vtkIdType>(cache.Fallbacks);
+    fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }
   ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);
@@ -1433,7 +1433,7 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
     cache.VAO->Release();
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
-    fullViewport += static_cast<vtkIdType>(cache.Fallbacks);
+    fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }
   ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);

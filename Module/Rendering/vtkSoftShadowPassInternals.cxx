@@ -161,11 +161,11 @@ void VolumeCache::Upload()
 
 namespace
 {
-/// Appends the wedge of edge from -> to (wedge coordinates) as 8 outward triangles, or, when no
-/// planes bound the edge's support (it nearly points at the light), a clockwise full-viewport
-/// triangle (w = 2, clip space) that back-face culling keeps: exact but costly. Every vertex
-/// carries `attributes`. Returns whether the wedge was valid.
-bool AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+/// Appends the wedge of edge from -> to (wedge coordinates) as 8 outward triangles. An edge with
+/// no wedge planes (its line passes through the light) gets its LightPyramid, or, where none
+/// exists, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
+/// back-face culling keeps: exact but costly. Every vertex carries `attributes`.
+WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
   double radius, const float* attributes, int attributeCount, std::vector<float>& vertices)
 {
   auto emit = [&](const glm::dvec4& position) {
@@ -181,13 +181,30 @@ bool AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4&
     {
       emit(wedge.Vertices[index]);
     }
-    return true;
+    return WedgeShape::Planes;
+  }
+  const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
+  if (pyramid.Valid)
+  {
+    for (unsigned int index : LightPyramid::Triangles())
+    {
+      emit(pyramid.Vertices[index]);
+    }
+    return WedgeShape::Pyramid;
   }
   for (const glm::dvec2 corner : { glm::dvec2(-1, -1), glm::dvec2(-1, 3), glm::dvec2(3, -1) })
   {
     emit(glm::dvec4(corner, 0.0, 2.0));
   }
-  return false;
+  return WedgeShape::FullViewport;
+}
+
+/// Counts an appended shape: pyramids and full-viewport triangles are both fallbacks (their
+/// caster's wedges are drawn by back faces), full-viewport ones are also counted apart.
+void CountShape(WedgeShape shape, std::size_t& wedges, std::size_t& fallbacks, std::size_t& fullViewport)
+{
+  ++(shape == WedgeShape::Planes ? wedges : fallbacks);
+  fullViewport += shape == WedgeShape::FullViewport;
 }
 
 /// The wedge origin: the light's centre, or the caster's for a directional light.
@@ -219,7 +236,7 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   this->Origin = WedgeOrigin(objectToWorld, lightWorld);
   const glm::dvec4 light = this->LightInWedgeSpace();
   this->Vertices.clear();
-  this->Wedges = this->Fallbacks = 0;
+  this->Wedges = this->Fallbacks = this->FullViewport = 0;
   for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
   {
     const glm::dvec3 from =
@@ -229,8 +246,8 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
     const float attributes[7] = { static_cast<float>(from.x), static_cast<float>(from.y),
       static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
       static_cast<float>(to.z), static_cast<float>(edge.Multiplicity) };
-    const bool valid = AppendWedge(from, to, light, radius, attributes, 7, this->Vertices);
-    ++(valid ? this->Wedges : this->Fallbacks);
+    CountShape(AppendWedge(from, to, light, radius, attributes, 7, this->Vertices), this->Wedges,
+      this->Fallbacks, this->FullViewport);
   }
   this->Uploaded = false;
   return true;
@@ -286,7 +303,7 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
   const glm::dvec4 light = this->LightInWedgeSpace();
   const CasterTopology& topo = mesh.Topology;
   this->Vertices.clear();
-  this->Wedges = this->Fallbacks = 0;
+  this->Wedges = this->Fallbacks = this->FullViewport = 0;
 
   std::vector<glm::dvec3> world(topo.Points.size());
   for (std::size_t i = 0; i < world.size(); ++i)
@@ -318,8 +335,8 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
         }
         attributes[12 + k] = static_cast<float>(flip * use.Sign);
       }
-      const bool valid = AppendWedge(from, to, light, radius, attributes, 14, this->Vertices);
-      ++(valid ? this->Wedges : this->Fallbacks);
+      CountShape(AppendWedge(from, to, light, radius, attributes, 14, this->Vertices),
+        this->Wedges, this->Fallbacks, this->FullViewport);
     }
   }
   this->Uploaded = false;

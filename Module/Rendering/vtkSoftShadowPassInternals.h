@@ -34,6 +34,14 @@ class vtkShaderProgram;
 namespace penumbra
 {
 
+/// What bounds one edge's wedge fragments (see AppendWedge).
+enum class WedgeShape
+{
+  Planes,      ///< a Wedge: four planes around the edge
+  Pyramid,     ///< a LightPyramid: the edge points at a positional light
+  FullViewport ///< no bound: a triangle over the viewport
+};
+
 /// Topology and vertex buffer of one data object, shared by every actor that shows it.
 struct MeshCache
 {
@@ -92,7 +100,8 @@ struct WedgeCache
   double Radius = -1.0;
   std::size_t VolumeGeneration = ~std::size_t(0);
   std::size_t Wedges = 0;    ///< silhouette edges with a proper wedge
-  std::size_t Fallbacks = 0; ///< edges drawn over the whole viewport (no wedge planes)
+  std::size_t Fallbacks = 0; ///< edges with no wedge planes: a light pyramid or the viewport
+  std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
   std::vector<float> Vertices; ///< position (4), edge from (3), edge to (3), weight (1)
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
@@ -122,7 +131,8 @@ struct CountingWedgeCache
   bool FrontFacesOnly = false;
   std::size_t MeshGeneration = ~std::size_t(0);
   std::size_t Wedges = 0;
-  std::size_t Fallbacks = 0;
+  std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
+  std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
   /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2)
   std::vector<float> Vertices;
   vtkNew<vtkOpenGLBufferObject> Buffer;

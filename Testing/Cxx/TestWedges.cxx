@@ -302,6 +302,71 @@ void TestLightSamples()
   Check(inCone, "directional light samples lie within the light's cone");
 }
 
+void TestLightPyramid()
+{
+  // Edges whose line passes through the light: every point that sees the edge in front of some
+  // light point lies in the pyramid, whose triangles face outwards.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const glm::dvec3 centre(0.5, 6.0, -1.0);
+  const double radius = 0.8;
+  int built = 0, inside = 0, tried = 0;
+  bool outward = true;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    // An edge on a line through a random point of the light's sphere.
+    const glm::dvec3 through = centre + radius * 0.9 *
+      glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+    const glm::dvec3 direction =
+      glm::normalize(glm::dvec3(unit(rng) - 0.5, -1.0 - unit(rng), unit(rng) - 0.5));
+    const glm::dvec3 a = through + (2.0 + 3.0 * unit(rng)) * direction;
+    const glm::dvec3 b = a + (0.05 + 0.5 * unit(rng)) * direction;
+    const LightPyramid pyramid = LightPyramid::Build(a, b, glm::dvec4(centre, 1.0), radius);
+    Check(!Wedge::Build(a, b, glm::dvec4(centre, 1.0), radius).Valid, "no wedge for such an edge");
+    if (!pyramid.Valid)
+    {
+      continue;
+    }
+    ++built;
+    for (int k = 0; k < 50; ++k)
+    {
+      const glm::dvec3 x = centre + radius * std::cbrt(unit(rng)) *
+        glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+      const glm::dvec3 e = a + unit(rng) * (b - a);
+      const glm::dvec3 p = x + (1.0 + 20.0 * unit(rng)) * (e - x);
+      ++tried;
+      inside += pyramid.Contains(p, 1e-9 * glm::length(p - centre));
+    }
+    // Outward: every triangle's normal points away from a point inside (apex + axis).
+    glm::dvec3 axis(0.0);
+    for (int v = 1; v < 5; ++v)
+    {
+      axis += glm::dvec3(pyramid.Vertices[v]);
+    }
+    const glm::dvec3 interior = centre + glm::normalize(axis);
+    const auto& triangles = LightPyramid::Triangles();
+    for (std::size_t t = 0; t < triangles.size(); t += 3)
+    {
+      glm::dvec3 v[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const glm::dvec4& q = pyramid.Vertices[triangles[t + k]];
+        v[k] = q.w != 0.0 ? glm::dvec3(q) : centre + 10.0 * glm::dvec3(q);
+      }
+      const glm::dvec3 normal = glm::cross(v[1] - v[0], v[2] - v[0]);
+      outward = outward && glm::dot(normal, (v[0] + v[1] + v[2]) / 3.0 - interior) > 0.0;
+    }
+  }
+  std::printf("light pyramids: %d built of 200, %d of %d points inside\n", built, inside, tried);
+  Check(built > 100, "pyramids are built for edges pointing at the light");
+  Check(inside == tried, "every point that can see such an edge cross the light is inside");
+  Check(outward, "pyramid triangles face outwards");
+  Check(!LightPyramid::Build({ 0, 0, 0 }, { 0, 1, 0 }, glm::dvec4(0, 0.5, 0, 1), 0.6).Valid,
+    "no pyramid for an edge reaching into the light");
+  Check(!LightPyramid::Build({ 0, 0, 0 }, { 0, 1, 0 }, glm::dvec4(0, 1, 0, 0), 0.1).Valid,
+    "no pyramid for a directional light");
+}
+
 } // namespace
 
 int main()
@@ -311,6 +376,7 @@ int main()
   TestWedgeContainsItsSupport();
   TestDegenerateEdges();
   TestLightSamples();
+  TestLightPyramid();
   std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
   return Failures ? 1 : 0;
 }

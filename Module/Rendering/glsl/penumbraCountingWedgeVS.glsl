@@ -1,7 +1,8 @@
 //VTK::System::Dec
 // One potential-silhouette wedge per (edge, up to two of its faces), as penumbraWedgeVS.glsl:
 // positions relative to the wedge origin (w = 1), far edges as directions (w = 0), and w = 2 for
-// a clip-space full-viewport triangle. The edge and its faces pass through unchanged.
+// a clip-space full-viewport triangle on the far plane (see penumbraWedgeVS.glsl). The edge and
+// its faces pass through unchanged.
 in vec4 vertexMC;
 in vec3 edgeFrom;
 in vec3 edgeTo;

@@ -1,7 +1,8 @@
 //VTK::System::Dec
 // One penumbra wedge per silhouette edge: its boundary triangles, positions relative to the
 // wedge origin (w = 1), far edges as directions (w = 0). A vertex with w = 2 is a clip-space
-// full-viewport triangle for an edge whose wedge has no planes (nearly parallel to the light).
+// full-viewport triangle for an edge that has neither wedge planes nor a light pyramid, on the
+// far plane so that the back-face test (GL_GEQUAL) passes at every pixel.
 in vec4 vertexMC;
 in vec3 edgeFrom;
 in vec3 edgeTo;
@@ -18,5 +19,5 @@ void main()
   edgeFromVS = edgeFrom;
   edgeToVS = edgeTo;
   edgeWeightVS = edgeWeight;
-  gl_Position = vertexMC.w > 1.5 ? vec4(vertexMC.xy, 0.0, 1.0) : MCDCMatrix * vertexMC;
+  gl_Position = vertexMC.w > 1.5 ? vec4(vertexMC.xy, 1.0, 1.0) : MCDCMatrix * vertexMC;
 }
