@@ -681,6 +681,9 @@ std::vector<MethodSpec> AllMethods()
                          return MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples);
                        } });
   }
+  // The default: counting or averaging 64 samples, whichever the cost model expects faster.
+  methods.push_back({ "automatic_64",
+    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AUTOMATIC, 64); } });
   // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
   methods.push_back({ "plateaus",
     []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });

@@ -1,5 +1,6 @@
 #include "penumbraSampleCounting.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace penumbra
@@ -111,6 +112,23 @@ int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b
     return 0; // the light point is nearer to p than the edge
   }
   return ds > 0.0 ? 1 : -1;
+}
+
+bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
+{
+  double wedges = 0.0, silhouettes = 0.0;
+  for (const CountingCost& caster : casters)
+  {
+    const double spread = std::pow(std::max(caster.AngularRadius, 0.0) / 0.016, 0.75);
+    wedges += static_cast<double>(caster.PotentialEdges) * (std::isfinite(spread) ? spread : 1e300);
+    silhouettes += static_cast<double>(caster.SilhouetteEdges);
+  }
+  if (wedges == 0.0)
+  {
+    return true; // nothing to draw beyond the centre's volume
+  }
+  const double perSample = 9.6 / std::max(samples, 1) + 0.4;
+  return wedges * perSample < std::max(silhouettes, 1.0);
 }
 
 } // namespace penumbra

@@ -87,6 +87,28 @@ VTKPENUMBRAGEOMETRY_EXPORT int MultiplicityFrom(const glm::dvec3& p, const glm::
 VTKPENUMBRAGEOMETRY_EXPORT int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a,
   const glm::dvec3& b, const glm::dvec4& centre, const glm::dvec4& sample);
 
+/// What the choice between counting and averaging the same light samples needs of one caster.
+struct CountingCost
+{
+  std::size_t PotentialEdges = 0;  ///< potential silhouette edges: counting draws one wedge each
+  std::size_t SilhouetteEdges = 0; ///< the centre silhouette's edges: averaging sweeps about as
+                                   ///< many for every sample
+  double AngularRadius = 0.0;      ///< the light's radius over its distance, or a sun's radius
+};
+
+/**
+ * Whether counting `samples` light samples (one volume pass and the potential silhouette's
+ * wedges) should take less time than averaging as many hard shadows (one volume pass each). Both
+ * give the same image, so a wrong guess costs time, never accuracy. The model is fitted to the
+ * benchmark on llvmpipe at 1024x768 (Documentation/results.md): a wedge's fill grows with the
+ * penumbra, about as the angular radius to the power 0.75, and counting's per-pixel loop with
+ * the samples, while averaging's cost is proportional to the samples:
+ *
+ *   counting / averaging = sum P (rho / 0.016)^0.75 / sum S  x  (9.6 / N + 0.4).
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool CountingIsCheaper(
+  const std::vector<CountingCost>& casters, int samples);
+
 } // namespace penumbra
 
 #endif

@@ -39,6 +39,7 @@
 
 #include "penumbraLightSamples.h"
 #include "penumbraPlateaus.h"
+#include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 
 #include "penumbraCountingResolveFS.h"
@@ -255,6 +256,8 @@ public:
     /// Soft shadow volumes: the centre's volume count plus the potential silhouette's changes of
     /// each of these samples' counts; the light's radius as for wedges.
     bool Counting = false;
+    /// Automatic picked counting: it may still average the same samples where that is cheaper.
+    bool CountingChosenAutomatically = false;
     std::vector<glm::dvec4> CountingSamples;
 
     /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
@@ -393,6 +396,11 @@ public:
   /// Whether the context has image atomics and texture clears (checked once per window).
   int CountingSupport = -1;
   bool CountingSupported(vtkSoftShadowPass* self);
+  /// Brings every caster's volumes and wedges for `light` up to date; returns the silhouette
+  /// updates it made.
+  vtkIdType UpdateLightCasters(const ShadowLight& light);
+  /// Per caster, what the choice between counting and averaging `light`'s samples weighs.
+  std::vector<penumbra::CountingCost> CountingCosts(const ShadowLight& light);
   bool WarnedCountingSamples = false;
   /// Counts `light`'s samples (its centre volume already counted into CentreCount) and writes
   /// its visibility into its LI layer; returns false when a shader failed to build.
@@ -717,6 +725,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   double radius = GetLightRadius(light);
   shadowLight.Samples = { world };
   shadowLight.Wedges = shadowLight.Plateaus = shadowLight.Counting = false;
+  shadowLight.CountingChosenAutomatically = false;
   shadowLight.WedgeRadius = 0.0;
   shadowLight.CountingSamples.clear();
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
@@ -765,6 +774,7 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
       this->WarnedCountingSamples = true;
     }
     shadowLight.Counting = true;
+    shadowLight.CountingChosenAutomatically = self->Method == METHOD_AUTOMATIC;
     shadowLight.WedgeRadius = wedgeRadius;
     shadowLight.CountingSamples = penumbra::SpreadLightSamples(
       world, radius, std::min(self->LightSamples, maximumSamples), target);
@@ -993,36 +1003,90 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
         ++this->NumberOfCulledShadows;
       }
     }
+    this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
+    if (light.Counting && light.CountingChosenAutomatically &&
+      !penumbra::CountingIsCheaper(internals.CountingCosts(light), light.CountingSamples.size()))
+    {
+      // Averaging the same samples gives the same image and is expected to be cheaper here.
+      light.Counting = false;
+      light.Samples = penumbra::SpreadLightSamples(
+        light.World, light.SampleRadius, this->LightSamples, light.SampleTarget);
+      this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
+    }
     for (penumbra::CasterCache* caster : internals.Casters)
     {
-      if (caster->Culled.count(light.Light))
+      if (light.Counting && !caster->Culled.count(light.Light))
       {
-        continue;
-      }
-      const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-      const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
-      for (std::size_t k = 0; k < light.Samples.size(); ++k)
-      {
-        penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
-        if (volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored))
-        {
-          ++this->NumberOfSilhouetteUpdates;
-        }
-      }
-      if (light.Wedges)
-      {
-        caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
-          caster->ObjectToWorld, light.World, light.WedgeRadius);
-      }
-      if (light.Counting &&
-        caster->CountingWedges[light.Light].Update(*caster->Mesh, caster->ObjectToWorld,
-          light.World, light.WedgeRadius,
-          penumbra::ShadowVolume::FrontFacesSuffice(caster->Mesh->Topology, worldToObject * light.World)))
-      {
-        ++this->NumberOfSilhouetteUpdates;
+        caster->CountingWedges[light.Light].BuildVertices(*caster->Mesh);
       }
     }
   }
+}
+
+vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight& light)
+{
+  vtkIdType updates = 0;
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
+    for (std::size_t k = 0; k < light.Samples.size(); ++k)
+    {
+      penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
+      updates += volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored) ? 1 : 0;
+    }
+    if (light.Wedges)
+    {
+      caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
+        caster->ObjectToWorld, light.World, light.WedgeRadius);
+    }
+    if (light.Counting)
+    {
+      const bool frontFacesOnly = penumbra::ShadowVolume::FrontFacesSuffice(
+        caster->Mesh->Topology, worldToObject * light.World);
+      updates += caster->CountingWedges[light.Light].Update(*caster->Mesh, caster->ObjectToWorld,
+                   light.World, light.WedgeRadius, frontFacesOnly)
+        ? 1
+        : 0;
+    }
+  }
+  return updates;
+}
+
+std::vector<penumbra::CountingCost> vtkSoftShadowPass::vtkInternals::CountingCosts(
+  const ShadowLight& light)
+{
+  std::vector<penumbra::CountingCost> costs;
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    penumbra::CountingCost cost;
+    cost.PotentialEdges = caster->CountingWedges[light.Light].Potential.size();
+    for (const penumbra::SilhouetteEdge& edge :
+      caster->Volumes[light.VolumeKey(0)].Volume.Silhouette)
+    {
+      cost.SilhouetteEdges += edge.Multiplicity;
+    }
+    if (light.World.w != 0.0)
+    {
+      const double distance = glm::length(0.5 * (caster->WorldMin + caster->WorldMax) -
+        glm::dvec3(light.World));
+      cost.AngularRadius = distance > light.WedgeRadius ? light.WedgeRadius / distance : 1e300;
+    }
+    else
+    {
+      cost.AngularRadius = light.WedgeRadius;
+    }
+    costs.push_back(cost);
+  }
+  return costs;
 }
 
 bool vtkSoftShadowPass::vtkInternals::CountingSupported(vtkSoftShadowPass* self)

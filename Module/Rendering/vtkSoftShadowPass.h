@@ -80,8 +80,11 @@ public:
   /// How shadows are computed for each shadowing light.
   enum Method
   {
-    /// Hard volumes for a light of radius 0, soft shadow volumes for an area light (averaged
-    /// hard shadows where the OpenGL context lacks image atomics).
+    /// Hard volumes for a light of radius 0. For an area light, soft shadow volumes or averaged
+    /// hard shadows of the same LightSamples, which give the same image, whichever a cost model
+    /// fitted to the benchmark expects to be faster (penumbra::CountingIsCheaper: counting for
+    /// small lights and coarse casters, averaging for large lights over finely tessellated
+    /// ones); averaging where the OpenGL context lacks image atomics.
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,

@@ -300,21 +300,32 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
   this->Radius = radius;
   this->FrontFacesOnly = frontFacesOnly;
   this->Origin = WedgeOrigin(objectToWorld, lightWorld);
-  const glm::dvec4 light = this->LightInWedgeSpace();
-  const CasterTopology& topo = mesh.Topology;
+  this->Potential =
+    PotentialSilhouette(mesh.Topology, objectToWorld, lightWorld, radius, frontFacesOnly);
   this->Vertices.clear();
   this->Wedges = this->Fallbacks = this->FullViewport = 0;
+  this->VerticesBuilt = false;
+  this->Uploaded = false;
+  return true;
+}
 
+void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
+{
+  if (this->VerticesBuilt)
+  {
+    return;
+  }
+  const glm::dvec4 light = this->LightInWedgeSpace();
+  const CasterTopology& topo = mesh.Topology;
   std::vector<glm::dvec3> world(topo.Points.size());
   for (std::size_t i = 0; i < world.size(); ++i)
   {
-    world[i] = glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0)) - this->Origin;
+    world[i] = glm::dvec3(this->ObjectToWorld * glm::dvec4(topo.Points[i], 1.0)) - this->Origin;
   }
   // With a mirroring matrix the stored winding faces inward: flip normal and walk together, which
   // leaves the general rule's products unchanged and keeps "front" outward for the closed rule.
-  const double flip = glm::determinant(glm::dmat3(objectToWorld)) < 0.0 ? -1.0 : 1.0;
-  for (std::uint32_t e :
-    PotentialSilhouette(topo, objectToWorld, lightWorld, radius, frontFacesOnly))
+  const double flip = glm::determinant(glm::dmat3(this->ObjectToWorld)) < 0.0 ? -1.0 : 1.0;
+  for (std::uint32_t e : this->Potential)
   {
     const Edge& edge = topo.Edges[e];
     const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
@@ -335,12 +346,12 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
         }
         attributes[12 + k] = static_cast<float>(flip * use.Sign);
       }
-      CountShape(AppendWedge(from, to, light, radius, attributes, 14, this->Vertices),
+      CountShape(AppendWedge(from, to, light, this->Radius, attributes, 14, this->Vertices),
         this->Wedges, this->Fallbacks, this->FullViewport);
     }
   }
+  this->VerticesBuilt = true;
   this->Uploaded = false;
-  return true;
 }
 
 glm::dvec4 CountingWedgeCache::LightInWedgeSpace() const

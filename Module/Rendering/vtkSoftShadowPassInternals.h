@@ -141,11 +141,17 @@ struct CountingWedgeCache
   bool Uploaded = false;
   bool Used = false;
 
+  /// Edges of the mesh that are a silhouette from some point of the light.
+  std::vector<std::uint32_t> Potential;
+  bool VerticesBuilt = false;
+
   static constexpr int FloatsPerVertex = 18;
-  /// Rebuilds when the mesh, the actor's matrix, the light, its radius or the counting rule
-  /// changed; returns true when it did.
+  /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
+  /// radius or the counting rule changed; returns true when it did. The wedges themselves wait
+  /// for BuildVertices, so that a light that ends up averaging never builds them.
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
     double radius, bool frontFacesOnly);
+  void BuildVertices(const MeshCache& mesh);
   glm::dvec4 LightInWedgeSpace() const;
   void Bind(vtkShaderProgram* program);
   void ReleaseGraphicsResources();

@@ -272,6 +272,18 @@ void TestPotentialSilhouetteIsSmall()
     PotentialSilhouette(topo, glm::dmat4(1.0), light, 0.0, true);
   Check(none.size() == centre.Silhouette.size(), "radius 0: the centre silhouette exactly");
 }
+void TestCostModel()
+{
+  // The benchmark's rows (results.md): the classic scene (P 504, S 296 at r = 0.2, angular
+  // radius 0.016; P 1418 at r = 1) and the isosurface (P 4391 and 7893, S 6472).
+  Check(CountingIsCheaper({ { 504, 296, 0.016 } }, 64), "classic, r 0.2, 64 samples: counting");
+  Check(!CountingIsCheaper({ { 1418, 296, 0.08 } }, 64), "classic, r 1: averaging");
+  Check(CountingIsCheaper({ { 4391, 6472, 0.016 } }, 64), "isosurface, r 0.2: counting");
+  Check(!CountingIsCheaper({ { 7893, 6472, 0.08 } }, 64), "isosurface, r 1: averaging");
+  Check(!CountingIsCheaper({ { 4391, 6472, 0.016 } }, 4), "few samples favour averaging");
+  Check(CountingIsCheaper({ { 0, 0, 0.5 } }, 16), "no wedges: counting");
+  Check(!CountingIsCheaper({ { 10, 0, 1e300 } }, 16), "huge angular radius: averaging");
+}
 } // namespace
 
 int main()
@@ -280,6 +292,7 @@ int main()
   TestFacingOverLight();
   TestDegenerate();
   TestPotentialSilhouetteIsSmall();
+  TestCostModel();
   const std::vector<Caster> casters = MakeCasters(rng);
   const std::vector<std::pair<glm::dvec4, double>> lights = { { { 0.4, 0.3, 3.0, 1.0 }, 0.6 },
     { { 0.2, 2.5, 1.0, 1.0 }, 0.9 }, { glm::dvec4(glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), 0.0), 0.3 } };

@@ -69,10 +69,10 @@ void RunScene(const Scene& scene)
   pass->SetMethodToAveragedHardShadows();
   window->Render();
   const std::vector<float> averaged = Visibility(pass);
-  pass->SetMethodToAutomatic(); // soft shadow volumes for an area light
+  pass->SetMethodToSoftShadowVolumes();
   window->Render();
   const std::vector<float> counted = Visibility(pass);
-  Check(pass->GetNumberOfPenumbraWedges() > 0, scene.Name + ": Automatic counts with wedges");
+  Check(pass->GetNumberOfPenumbraWedges() > 0, scene.Name + ": counted with wedges");
   Check(pass->GetGraphicsMemoryBytes() >= vtkIdType(Width) * Height * (4 + Samples),
     scene.Name + ": counters are reported in GPU memory");
 
@@ -115,6 +115,50 @@ void RunScene(const Scene& scene)
   Check(step <= 0.01, scene.Name + ": counting equals averaging within 1/N");
   Check(half <= 0.001, scene.Name + ": no counting pixel off by half");
   Check(maeCounted <= maeAveraged + 0.01, scene.Name + ": as accurate as averaging");
+}
+
+/// Automatic counts a small light and averages a large one (penumbra::CountingIsCheaper), and
+/// its image is the chosen method's, bit for bit.
+void TestAutomaticChoice(const Scene& base)
+{
+  vtkNew<vtkRenderer> renderer;
+  base.Build(renderer);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetConeAngle(180);
+  light->SetPosition(base.LightPosition);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->SetPosition(base.Camera);
+  renderer->GetActiveCamera()->SetFocalPoint(base.Focal);
+  renderer->ResetCameraClippingRange();
+  auto window = NewRenderWindow();
+  window->SetSize(Width, Height);
+  window->AddRenderer(renderer);
+  vtkNew<vtkSoftShadowPass> pass;
+  pass->SetLightSamples(Samples);
+  renderer->SetPass(pass);
+  for (const double radius : { 0.05, 1.5 })
+  {
+    vtkSoftShadowPass::SetLightRadius(light, radius);
+    pass->SetMethodToAutomatic();
+    window->Render();
+    const std::vector<float> automatic = Visibility(pass);
+    const bool counted = pass->GetNumberOfPenumbraWedges() > 0;
+    Check(counted == (radius < 1.0),
+      "Automatic " + std::string(counted ? "counts" : "averages") + " a light of radius " +
+        std::to_string(radius));
+    if (counted)
+    {
+      pass->SetMethodToSoftShadowVolumes();
+    }
+    else
+    {
+      pass->SetMethodToAveragedHardShadows();
+    }
+    window->Render();
+    Check(Visibility(pass) == automatic, "Automatic's image is its chosen method's");
+  }
 }
 
 vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)
@@ -200,6 +244,7 @@ int main()
   {
     RunScene(scene);
   }
+  TestAutomaticChoice(scenes[0]);
   std::printf("%s (%d failures)\n", Failures() ? "FAILED" : "passed", Failures());
   return Failures() ? 1 : 0;
 }

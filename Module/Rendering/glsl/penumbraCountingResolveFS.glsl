@@ -4,6 +4,10 @@
 // Turns the per-sample counters into the light's visibility: sample i is visible where its depth
 // complexity, the centre's count plus the edges' changes (penumbraCountingWedgeFS.glsl), is 0.
 // Pixels that no wedge reached (useCounters 0) see every sample as the centre sees it.
+//
+// A depth complexity cannot be negative. Where one is (8-bit fields read as signed, so counts
+// of 128 and more overflow), the rasterized centre count missed a crossing that the edge terms,
+// taken at the pixel's centre, assume: the counts are shifted up until the smallest is 0.
 uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler3D counters;
 uniform int useCounters;
@@ -18,13 +22,21 @@ void main()
     return;
   }
   uint offset = uint(centre) * 0x01010101u;
-  int visible = 0;
+  int lowest = 0;  // min(0, smallest count)
+  int visible = 0; // samples whose count equals it
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
   {
     uint counts = texelFetch(counters, ivec3(pixel, word), 0).r + offset;
     for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
     {
-      visible += ((counts >> uint(8 * field)) & 0xFFu) == 0u ? 1 : 0;
+      int count = int((counts >> uint(8 * field)) & 0xFFu);
+      count = count > 127 ? count - 256 : count;
+      if (count < lowest)
+      {
+        lowest = count;
+        visible = 0;
+      }
+      visible += count == lowest ? 1 : 0;
     }
   }
   gl_FragData[0] = vec4(float(visible) / float(PENUMBRA_SAMPLE_COUNT));
