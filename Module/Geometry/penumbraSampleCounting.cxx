@@ -87,29 +87,47 @@ int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a, const EdgeFace* f
   return multiplicity;
 }
 
+double SideOfEdgePlane(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& throughLight)
+{
+  return glm::dot(a - p, throughLight);
+}
+
+glm::dvec3 EdgeLightNormal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light)
+{
+  return glm::cross(b - a, glm::dvec3(light) - light.w * a);
+}
+
 int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
   const glm::dvec4& centre, const glm::dvec4& sample)
 {
-  const glm::dvec3 u = a - p, v = b - p;
-  const glm::dvec3 n = glm::cross(u, v);
-  const glm::dvec3 towardsCentre = glm::dvec3(centre) - centre.w * p;
-  const glm::dvec3 towardsSample = glm::dvec3(sample) - sample.w * p;
-  const double dc = glm::dot(n, towardsCentre), ds = glm::dot(n, towardsSample);
+  // Sides of the plane (p, edge), as p's side of the planes through the edge and each light
+  // point: the centre's is the side plane of its shadow volume, so the sign agrees with the
+  // rasterized count wherever p is not within rounding of that plane.
+  const double dc = SideOfEdgePlane(p, a, EdgeLightNormal(a, b, centre));
+  const double ds = SideOfEdgePlane(p, a, EdgeLightNormal(a, b, sample));
   if (!((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0)))
   {
     return 0; // same side of the plane (p, a, b), on it, or degenerate
   }
-  // Where the path meets the plane, as seen from p: x = alpha u + beta v (scaled by |n|^2).
+  // The edge's ends on opposite sides of the plane through p and the path: a predicate of p, the
+  // path and one end alone, so that edges meeting at a vertex decide it alike.
+  const glm::dvec3 towardsCentre = glm::dvec3(centre) - centre.w * p;
+  const glm::dvec3 towardsSample = glm::dvec3(sample) - sample.w * p;
+  const glm::dvec3 pathNormal = glm::cross(towardsCentre, towardsSample);
+  const double sa = glm::dot(a - p, pathNormal), sb = glm::dot(b - p, pathNormal);
+  if (!((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)))
+  {
+    return 0;
+  }
+  // The crossing x seen from p is alpha (a - p) + beta (b - p); alpha + beta (times |n|^2) must
+  // be positive (in front of p) and, for a light point, at least 1 (the edge nearer than it).
+  const glm::dvec3 u = a - p, e = b - a, n = glm::cross(u, e);
   const double t = dc / (dc - ds);
   const glm::dvec3 x = towardsCentre + t * (towardsSample - towardsCentre);
-  const double alpha = glm::dot(x, glm::cross(v, n)), beta = glm::dot(x, glm::cross(n, u));
-  if (!(alpha >= 0.0 && beta >= 0.0))
+  const double along = glm::dot(x, glm::cross(e, n));
+  if (!(centre.w != 0.0 ? along >= glm::dot(n, n) : along > 0.0))
   {
-    return 0; // outside the sector that the edge spans from p
-  }
-  if (centre.w != 0.0 && !(alpha + beta >= glm::dot(n, n)))
-  {
-    return 0; // the light point is nearer to p than the edge
+    return 0;
   }
   return ds > 0.0 ? 1 : -1;
 }

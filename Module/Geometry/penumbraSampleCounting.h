@@ -78,6 +78,22 @@ VTKPENUMBRAGEOMETRY_EXPORT int MultiplicityFrom(const glm::dvec3& p, const glm::
   const EdgeFace* faces, int faceCount, bool frontFacesOnly);
 
 /**
+ * The normal of the plane through edge a -> b and a light point (x, y, z, 1), or parallel to a
+ * light direction (x, y, z, 0): cross(b - a, light - a). For the light's centre it is the side
+ * plane of the edge's shadow volume.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec3 EdgeLightNormal(
+  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light);
+
+/**
+ * p's side of the plane through edge point a with normal `throughLight` (EdgeLightNormal). It
+ * equals the light point's side of the plane (p, edge), computed without p's large component
+ * along the ray towards the light.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT double SideOfEdgePlane(
+  const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& throughLight);
+
+/**
  * Whether the path on the light from `centre` to `sample` crosses the projection from p of the
  * edge a -> b: +1 or -1 (the side of the plane (p, a, b) that the sample lies on, sign of
  * cross(a - p, b - p) . (sample - p)) when it does, 0 otherwise. Light points are (x, y, z, 1),

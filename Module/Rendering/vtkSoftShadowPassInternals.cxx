@@ -331,9 +331,11 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
     const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
     for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
     {
-      float attributes[14] = { static_cast<float>(from.x), static_cast<float>(from.y),
+      const glm::dvec3 centreNormal = EdgeLightNormal(from, to, light);
+      float attributes[17] = { static_cast<float>(from.x), static_cast<float>(from.y),
         static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
-        static_cast<float>(to.z), 0, 0, 0, 0, 0, 0, 0, 0 };
+        static_cast<float>(to.z), 0, 0, 0, 0, 0, 0, 0, 0, static_cast<float>(centreNormal.x),
+        static_cast<float>(centreNormal.y), static_cast<float>(centreNormal.z) };
       for (std::uint32_t k = 0; k < 2 && first + k < edge.UseCount; ++k)
       {
         const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
@@ -346,7 +348,7 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
         }
         attributes[12 + k] = static_cast<float>(flip * use.Sign);
       }
-      CountShape(AppendWedge(from, to, light, this->Radius, attributes, 14, this->Vertices),
+      CountShape(AppendWedge(from, to, light, this->Radius, attributes, 17, this->Vertices),
         this->Wedges, this->Fallbacks, this->FullViewport);
     }
   }
@@ -378,7 +380,8 @@ void CountingWedgeCache::Bind(vtkShaderProgram* program)
       const char* Name;
       int Offset, Components;
     } attributes[] = { { "vertexMC", 0, 4 }, { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 },
-      { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 }, { "faceSigns", 16, 2 } };
+      { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 }, { "faceSigns", 16, 2 },
+      { "centreNormal", 18, 3 } };
     for (const auto& attribute : attributes)
     {
       this->VAO->AddAttributeArray(program, this->Buffer, attribute.Name,

@@ -133,7 +133,8 @@ struct CountingWedgeCache
   std::size_t Wedges = 0;
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
-  /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2)
+  /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2), the
+  /// normal of the plane through the edge and the light's centre (3)
   std::vector<float> Vertices;
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
@@ -145,7 +146,7 @@ struct CountingWedgeCache
   std::vector<std::uint32_t> Potential;
   bool VerticesBuilt = false;
 
-  static constexpr int FloatsPerVertex = 18;
+  static constexpr int FloatsPerVertex = 21;
   /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
   /// radius or the counting rule changed; returns true when it did. The wedges themselves wait
   /// for BuildVertices, so that a light that ends up averaging never builds them.

@@ -26,6 +26,7 @@ flat in vec3 edgeToVS;
 flat in vec3 faceNormal0VS;
 flat in vec3 faceNormal1VS;
 flat in vec2 faceSignsVS;
+flat in vec3 centreNormalVS;
 
 float faceWeight(vec3 normal, vec3 fromEdge)
 {
@@ -47,29 +48,29 @@ void main()
   vec4 point = clipToWedge * ndc;
   vec3 p = point.xyz / point.w;
 
-  vec3 u = edgeFromVS - p;
-  vec3 v = edgeToVS - p;
-  int multiplicity = int(faceSignsVS.x * faceWeight(faceNormal0VS, -u) +
-    faceSignsVS.y * faceWeight(faceNormal1VS, -u));
+  vec3 fromP = edgeFromVS - p;
+  int multiplicity = int(faceSignsVS.x * faceWeight(faceNormal0VS, -fromP) +
+    faceSignsVS.y * faceWeight(faceNormal1VS, -fromP));
   if (multiplicity == 0)
   {
     discard; // not a silhouette seen from p
   }
-  // Every test below is a sign or homogeneous of degree 4 in lengths: scaling by 1/|u| keeps
-  // scenes of size 1e-6 or 1e6 inside float range.
-  float scale = 1.0 / max(length(u), 1e-30);
-  u *= scale;
-  v *= scale;
-  vec3 n = cross(u, v);
+  // Sides of the plane (p, edge) as p's side of the planes through the edge and each light point
+  // (penumbraSampleCounting.cxx, SampleCrossing): the centre's plane, from the CPU in double, is
+  // its shadow volume's side, so the sign agrees with the rasterized centre count.
+  vec3 edge = edgeToVS - edgeFromVS;
+  float dc = dot(fromP, centreNormalVS);
+  vec3 towardsCentre = lightWedge.xyz - lightWedge.w * p;
+  // The "in front and beyond the edge" test is homogeneous of degree 4 in lengths: scaled by
+  // 1/|a - p| it stays inside float range for scenes of size 1e-6 or 1e6.
+  float scale = 1.0 / max(length(fromP), 1e-30);
   float lightScale = lightWedge.w != 0.0 ? scale : 1.0;
-  vec3 towardsCentre = (lightWedge.xyz - lightWedge.w * p) * lightScale;
-  float dc = dot(n, towardsCentre);
-  // Where the path meets the plane (p, edge): alpha u + beta v, scaled by |n|^2.
-  vec3 alphaAxis = cross(v, n);
-  vec3 betaAxis = cross(n, u);
-  float alphaCentre = dot(towardsCentre, alphaAxis);
-  float betaCentre = dot(towardsCentre, betaAxis);
-  float beyond = lightWedge.w != 0.0 ? dot(n, n) : -1.0;
+  vec3 u = fromP * scale;
+  vec3 e = edge * scale;
+  vec3 n = cross(u, e);
+  vec3 alongAxis = cross(e, n);
+  float alongCentre = dot(towardsCentre * lightScale, alongAxis);
+  float beyond = lightWedge.w != 0.0 ? dot(n, n) : 0.0;
 
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
   {
@@ -81,18 +82,27 @@ void main()
       {
         break;
       }
-      vec3 towardsSample = (lightSamples[i].xyz - lightSamples[i].w * p) * lightScale;
-      float ds = dot(n, towardsSample);
-      if ((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0))
+      vec3 towardsSample = lightSamples[i].xyz - lightSamples[i].w * p;
+      float ds = dot(fromP, cross(edge, lightSamples[i].xyz - lightSamples[i].w * edgeFromVS));
+      if (!((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0)))
       {
-        float t = dc / (dc - ds);
-        float alpha = alphaCentre + t * (dot(towardsSample, alphaAxis) - alphaCentre);
-        float beta = betaCentre + t * (dot(towardsSample, betaAxis) - betaCentre);
-        if (alpha >= 0.0 && beta >= 0.0 && alpha + beta >= beyond)
-        {
-          int change = ds > 0.0 ? -multiplicity : multiplicity;
-          changes += uint(change) << uint(8 * field);
-        }
+        continue;
+      }
+      // The edge's ends on opposite sides of the plane (p, path): the same expression for every
+      // edge that shares an end, so edges meeting at a vertex decide it alike.
+      vec3 pathNormal = cross(towardsCentre, towardsSample);
+      float sa = dot(edgeFromVS - p, pathNormal);
+      float sb = dot(edgeToVS - p, pathNormal);
+      if (!((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)))
+      {
+        continue;
+      }
+      float t = dc / (dc - ds);
+      float along = alongCentre + t * (dot(towardsSample * lightScale, alongAxis) - alongCentre);
+      if (lightWedge.w != 0.0 ? along >= beyond : along > 0.0)
+      {
+        int change = ds > 0.0 ? -multiplicity : multiplicity;
+        changes += uint(change) << uint(8 * field);
       }
     }
     if (changes != 0u)

@@ -9,6 +9,7 @@ in vec3 edgeTo;
 in vec3 faceNormal0;
 in vec3 faceNormal1;
 in vec2 faceSigns;
+in vec3 centreNormal;
 
 uniform mat4 MCDCMatrix;
 
@@ -17,6 +18,7 @@ flat out vec3 edgeToVS;
 flat out vec3 faceNormal0VS;
 flat out vec3 faceNormal1VS;
 flat out vec2 faceSignsVS;
+flat out vec3 centreNormalVS;
 
 void main()
 {
@@ -25,5 +27,6 @@ void main()
   faceNormal0VS = faceNormal0;
   faceNormal1VS = faceNormal1;
   faceSignsVS = faceSigns;
+  centreNormalVS = centreNormal;
   gl_Position = vertexMC.w > 1.5 ? vec4(vertexMC.xy, 1.0, 1.0) : MCDCMatrix * vertexMC;
 }
