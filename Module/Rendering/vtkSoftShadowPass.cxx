@@ -408,6 +408,12 @@ public:
     const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport);
   FullScreenVAO CountingResolveVAO;
 
+  /// Draws one caster's wedge buffer (either kind) with the program bound: front or back faces
+  /// as the eye and near plane allow, in wedge coordinates.
+  void DrawWedgeBuffer(vtkShaderProgram* program, const penumbra::CasterCache& caster,
+    penumbra::WedgeBuffer& buffer, const std::vector<penumbra::WedgeAttribute>& attributes,
+    std::size_t vertexCount, const ShadowLight& light, const glm::dmat4& clipToWorld);
+
   /// Adds every caster's penumbra wedges for `light` into its LI layer; returns the count of
   /// wedges and of full-viewport ones.
   void DrawWedges(vtkOpenGLRenderWindow* window, const ShadowLight& light, vtkIdType& wedges,
@@ -1321,6 +1327,34 @@ void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
   ostate->PopFramebufferBindings();
 }
 
+void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
+  const penumbra::CasterCache& caster, penumbra::WedgeBuffer& buffer,
+  const std::vector<penumbra::WedgeAttribute>& attributes, std::size_t vertexCount,
+  const ShadowLight& light, const glm::dmat4& clipToWorld)
+{
+  vtkOpenGLState* ostate = this->Window->GetState();
+  // A point inside a wedge lies behind its front faces and in front of its back faces. When
+  // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
+  // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
+  // tested against the scene depth skip every point in front of the wedge. Otherwise back
+  // faces, which every ray meeting the wedge crosses once, skip points behind it.
+  const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
+  const bool frontFaces = light.World.w != 0.0 && buffer.Fallbacks == 0 &&
+    !VolumeMayReachNearPlane(
+      caster.WorldMin - grow, caster.WorldMax + grow, light.World, this->NearCorners);
+  ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
+  ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
+  const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), buffer.Origin));
+  const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -buffer.Origin) * clipToWorld);
+  const glm::vec4 lightWedge(buffer.LightInWedgeSpace());
+  program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
+  program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+  program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+  buffer.Bind(program, attributes);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertexCount));
+  buffer.VAO->Release();
+}
+
 void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport)
 {
@@ -1356,26 +1390,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     {
       continue;
     }
-    // A point inside a wedge lies behind its front faces and in front of its back faces. When
-    // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
-    // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
-    // tested against the scene depth skip every point in front of the wedge. Otherwise back
-    // faces, which every ray meeting the wedge crosses once, skip points behind it.
-    const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
-    const bool frontFaces = light.World.w != 0.0 && cache.Fallbacks == 0 &&
-      !VolumeMayReachNearPlane(
-        caster->WorldMin - grow, caster->WorldMax + grow, light.World, this->NearCorners);
-    ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
-    ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
-    const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), cache.Origin));
-    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -cache.Origin) * clipToWorld);
-    const glm::vec4 lightWedge(cache.LightInWedgeSpace());
-    program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
-    program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
-    program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
-    cache.Bind(program);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
-    cache.VAO->Release();
+    this->DrawWedgeBuffer(program, *caster, cache, penumbra::WedgeCache::Attributes(),
+      cache.VertexCount(), light, clipToWorld);
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
     fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }
@@ -1479,23 +1495,8 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     }
     program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
-    // As for penumbra wedges: front faces against the scene depth when neither the eye nor the
-    // near plane can be inside this caster's wedges, back faces otherwise.
-    const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
-    const bool frontFaces = light.World.w != 0.0 && cache.Fallbacks == 0 &&
-      !VolumeMayReachNearPlane(
-        caster->WorldMin - grow, caster->WorldMax + grow, light.World, this->NearCorners);
-    ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
-    ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
-    const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), cache.Origin));
-    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -cache.Origin) * clipToWorld);
-    const glm::vec4 lightWedge(cache.LightInWedgeSpace());
-    program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
-    program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
-    program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
-    cache.Bind(program);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cache.VertexCount()));
-    cache.VAO->Release();
+    this->DrawWedgeBuffer(program, *caster, cache, penumbra::CountingWedgeCache::Attributes(),
+      cache.VertexCount(), light, clipToWorld);
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
     fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }

@@ -199,66 +199,41 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
   return WedgeShape::FullViewport;
 }
 
-/// Counts an appended shape: pyramids and full-viewport triangles are both fallbacks (their
-/// caster's wedges are drawn by back faces), full-viewport ones are also counted apart.
-void CountShape(WedgeShape shape, std::size_t& wedges, std::size_t& fallbacks, std::size_t& fullViewport)
+glm::vec3 ToFloat(const glm::dvec3& v)
 {
-  ++(shape == WedgeShape::Planes ? wedges : fallbacks);
-  fullViewport += shape == WedgeShape::FullViewport;
-}
-
-/// The wedge origin: the light's centre, or the caster's for a directional light.
-glm::dvec3 WedgeOrigin(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld)
-{
-  return lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
-                             : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-}
-
-glm::dvec4 LightInWedgeCoordinates(const glm::dvec4& lightWorld)
-{
-  return lightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : lightWorld;
+  return glm::vec3(v);
 }
 } // namespace
 
-bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
-  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
 {
-  this->Used = true;
-  if (this->VolumeGeneration == centre.Generation && this->ObjectToWorld == objectToWorld &&
-    this->LightWorld == lightWorld && this->Radius == radius)
-  {
-    return false;
-  }
-  this->VolumeGeneration = centre.Generation;
+  return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
+}
+
+void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+{
   this->ObjectToWorld = objectToWorld;
   this->LightWorld = lightWorld;
   this->Radius = radius;
-  this->Origin = WedgeOrigin(objectToWorld, lightWorld);
-  const glm::dvec4 light = this->LightInWedgeSpace();
+  this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
+                                     : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   this->Vertices.clear();
   this->Wedges = this->Fallbacks = this->FullViewport = 0;
-  for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
-  {
-    const glm::dvec3 from =
-      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
-    const glm::dvec3 to =
-      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
-    const float attributes[7] = { static_cast<float>(from.x), static_cast<float>(from.y),
-      static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
-      static_cast<float>(to.z), static_cast<float>(edge.Multiplicity) };
-    CountShape(AppendWedge(from, to, light, radius, attributes, 7, this->Vertices), this->Wedges,
-      this->Fallbacks, this->FullViewport);
-  }
   this->Uploaded = false;
-  return true;
 }
 
-glm::dvec4 WedgeCache::LightInWedgeSpace() const
+void WedgeBuffer::AppendEdge(
+  const glm::dvec3& from, const glm::dvec3& to, const float* attributes, int attributeCount)
 {
-  return LightInWedgeCoordinates(this->LightWorld);
+  const WedgeShape shape = AppendWedge(
+    from, to, this->LightInWedgeSpace(), this->Radius, attributes, attributeCount, this->Vertices);
+  // Pyramids and full-viewport triangles are both fallbacks: their caster's wedges are drawn by
+  // back faces.
+  ++(shape == WedgeShape::Planes ? this->Wedges : this->Fallbacks);
+  this->FullViewport += shape == WedgeShape::FullViewport;
 }
 
-void WedgeCache::Bind(vtkShaderProgram* program)
+void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<WedgeAttribute>& attributes)
 {
   if (!this->Uploaded)
   {
@@ -271,17 +246,64 @@ void WedgeCache::Bind(vtkShaderProgram* program)
     // Releases the old VAO: must come before Bind.
     this->VAO->ShaderProgramChanged();
     this->VAO->Bind();
-    const size_t stride = 11 * sizeof(float);
-    this->VAO->AddAttributeArray(program, this->Buffer, "vertexMC", 0, stride, VTK_FLOAT, 4, false);
-    this->VAO->AddAttributeArray(
-      program, this->Buffer, "edgeFrom", 4 * sizeof(float), stride, VTK_FLOAT, 3, false);
-    this->VAO->AddAttributeArray(
-      program, this->Buffer, "edgeTo", 7 * sizeof(float), stride, VTK_FLOAT, 3, false);
-    this->VAO->AddAttributeArray(
-      program, this->Buffer, "edgeWeight", 10 * sizeof(float), stride, VTK_FLOAT, 1, false);
+    const WedgeAttribute& last = attributes.back();
+    const size_t stride = (last.Offset + last.Components) * sizeof(float);
+    for (const WedgeAttribute& attribute : attributes)
+    {
+      this->VAO->AddAttributeArray(program, this->Buffer, attribute.Name,
+        attribute.Offset * sizeof(float), stride, VTK_FLOAT, attribute.Components, false);
+    }
     this->VAOProgram = program;
   }
   this->VAO->Bind();
+}
+
+void WedgeBuffer::ReleaseGraphicsResources()
+{
+  this->Buffer->ReleaseGraphicsResources();
+  this->VAO->ReleaseGraphicsResources();
+  this->VAOProgram = nullptr;
+  this->Uploaded = false;
+}
+
+const std::vector<WedgeAttribute>& WedgeCache::Attributes()
+{
+  static const std::vector<WedgeAttribute> attributes = { { "vertexMC", 0, 4 },
+    { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 }, { "edgeWeight", 10, 1 } };
+  return attributes;
+}
+
+bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
+  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+{
+  this->Used = true;
+  if (this->VolumeGeneration == centre.Generation && this->ObjectToWorld == objectToWorld &&
+    this->LightWorld == lightWorld && this->Radius == radius)
+  {
+    return false;
+  }
+  this->VolumeGeneration = centre.Generation;
+  this->Reset(objectToWorld, lightWorld, radius);
+  for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
+  {
+    const glm::dvec3 from =
+      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
+    const glm::dvec3 to =
+      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
+    const glm::vec3 fromF = ToFloat(from), toF = ToFloat(to);
+    const float attributes[7] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z,
+      static_cast<float>(edge.Multiplicity) };
+    this->AppendEdge(from, to, attributes, 7);
+  }
+  return true;
+}
+
+const std::vector<WedgeAttribute>& CountingWedgeCache::Attributes()
+{
+  static const std::vector<WedgeAttribute> attributes = { { "vertexMC", 0, 4 },
+    { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 }, { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 },
+    { "faceSigns", 16, 2 }, { "centreNormal", 18, 3 } };
+  return attributes;
 }
 
 bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectToWorld,
@@ -295,17 +317,11 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
     return false;
   }
   this->MeshGeneration = mesh.Generation;
-  this->ObjectToWorld = objectToWorld;
-  this->LightWorld = lightWorld;
-  this->Radius = radius;
   this->FrontFacesOnly = frontFacesOnly;
-  this->Origin = WedgeOrigin(objectToWorld, lightWorld);
+  this->Reset(objectToWorld, lightWorld, radius);
   this->Potential =
     PotentialSilhouette(mesh.Topology, objectToWorld, lightWorld, radius, frontFacesOnly);
-  this->Vertices.clear();
-  this->Wedges = this->Fallbacks = this->FullViewport = 0;
   this->VerticesBuilt = false;
-  this->Uploaded = false;
   return true;
 }
 
@@ -329,74 +345,28 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   {
     const Edge& edge = topo.Edges[e];
     const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
+    const glm::vec3 fromF = ToFloat(from), toF = ToFloat(to);
+    const glm::vec3 centreNormal = ToFloat(EdgeLightNormal(from, to, light));
     for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
     {
-      const glm::dvec3 centreNormal = EdgeLightNormal(from, to, light);
-      float attributes[17] = { static_cast<float>(from.x), static_cast<float>(from.y),
-        static_cast<float>(from.z), static_cast<float>(to.x), static_cast<float>(to.y),
-        static_cast<float>(to.z), 0, 0, 0, 0, 0, 0, 0, 0, static_cast<float>(centreNormal.x),
-        static_cast<float>(centreNormal.y), static_cast<float>(centreNormal.z) };
+      float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0,
+        0, 0, centreNormal.x, centreNormal.y, centreNormal.z };
       for (std::uint32_t k = 0; k < 2 && first + k < edge.UseCount; ++k)
       {
         const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
         const glm::uvec3& tri = topo.Triangles[use.Triangle];
-        const glm::dvec3 normal =
-          flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
+        const glm::vec3 normal =
+          ToFloat(flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]));
         for (int c = 0; c < 3; ++c)
         {
-          attributes[6 + 3 * k + c] = static_cast<float>(normal[c]);
+          attributes[6 + 3 * k + c] = normal[c];
         }
         attributes[12 + k] = static_cast<float>(flip * use.Sign);
       }
-      CountShape(AppendWedge(from, to, light, this->Radius, attributes, 17, this->Vertices),
-        this->Wedges, this->Fallbacks, this->FullViewport);
+      this->AppendEdge(from, to, attributes, 17);
     }
   }
   this->VerticesBuilt = true;
-  this->Uploaded = false;
-}
-
-glm::dvec4 CountingWedgeCache::LightInWedgeSpace() const
-{
-  return LightInWedgeCoordinates(this->LightWorld);
-}
-
-void CountingWedgeCache::Bind(vtkShaderProgram* program)
-{
-  if (!this->Uploaded)
-  {
-    this->Buffer->Upload(this->Vertices, vtkOpenGLBufferObject::ArrayBuffer);
-    this->Uploaded = true;
-    this->VAOProgram = nullptr;
-  }
-  if (this->VAOProgram != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    this->VAO->ShaderProgramChanged();
-    this->VAO->Bind();
-    const size_t stride = FloatsPerVertex * sizeof(float);
-    const struct
-    {
-      const char* Name;
-      int Offset, Components;
-    } attributes[] = { { "vertexMC", 0, 4 }, { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 },
-      { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 }, { "faceSigns", 16, 2 },
-      { "centreNormal", 18, 3 } };
-    for (const auto& attribute : attributes)
-    {
-      this->VAO->AddAttributeArray(program, this->Buffer, attribute.Name,
-        attribute.Offset * sizeof(float), stride, VTK_FLOAT, attribute.Components, false);
-    }
-    this->VAOProgram = program;
-  }
-  this->VAO->Bind();
-}
-
-void CountingWedgeCache::ReleaseGraphicsResources()
-{
-  this->Buffer->ReleaseGraphicsResources();
-  this->VAO->ReleaseGraphicsResources();
-  this->VAOProgram = nullptr;
   this->Uploaded = false;
 }
 
@@ -494,10 +464,7 @@ void ShadowCaches::ReleaseGraphicsResources()
     }
     for (auto& wedges : caster.second->Wedges)
     {
-      wedges.second.Buffer->ReleaseGraphicsResources();
-      wedges.second.VAO->ReleaseGraphicsResources();
-      wedges.second.VAOProgram = nullptr;
-      wedges.second.Uploaded = false;
+      wedges.second.ReleaseGraphicsResources();
     }
     for (auto& wedges : caster.second->CountingWedges)
     {

@@ -89,52 +89,27 @@ struct VolumeCache
   std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }
 };
 
-/// Penumbra wedges of one caster's centre silhouette for one light. Vertices are in wedge
-/// coordinates: world space relative to Origin (the light's centre, or the caster's for a
-/// directional light), so float precision follows the light, not the world origin.
-struct WedgeCache
+/// A vertex attribute of a wedge buffer: its name in the shader, offset and size in floats.
+struct WedgeAttribute
 {
-  glm::dvec3 Origin{ 0.0 };
-  glm::dmat4 ObjectToWorld{ 0.0 };
-  glm::dvec4 LightWorld{ 0.0 };
-  double Radius = -1.0;
-  std::size_t VolumeGeneration = ~std::size_t(0);
-  std::size_t Wedges = 0;    ///< silhouette edges with a proper wedge
-  std::size_t Fallbacks = 0; ///< edges with no wedge planes: a light pyramid or the viewport
-  std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
-  std::vector<float> Vertices; ///< position (4), edge from (3), edge to (3), weight (1)
-  vtkNew<vtkOpenGLBufferObject> Buffer;
-  vtkNew<vtkOpenGLVertexArrayObject> VAO;
-  vtkShaderProgram* VAOProgram = nullptr;
-  bool Uploaded = false;
-  bool Used = false;
-
-  /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
-  bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
-    const glm::dvec4& lightWorld, double radius);
-  /// The light in wedge coordinates, as the wedge shader wants it.
-  glm::dvec4 LightInWedgeSpace() const;
-  void Bind(vtkShaderProgram* program);
-  std::size_t VertexCount() const { return this->Vertices.size() / 11; }
+  const char* Name;
+  int Offset;
+  int Components;
 };
 
-/// Potential-silhouette wedges of one caster for one light, for per-light-sample counting
-/// (penumbraSampleCounting.h): one wedge per (edge, up to two of its faces), each vertex carrying
-/// the edge and its faces' normals and walk signs so that the fragment shader can take the
-/// edge's multiplicity from the pixel's point. Coordinates as in WedgeCache.
-struct CountingWedgeCache
+/// Wedges of one caster for one light, as drawn: 8 outward triangles per edge (a light pyramid's
+/// 6, or a full-viewport triangle) whose vertices carry the edge's data for the fragment shader.
+/// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
+/// caster's for a directional light), so float precision follows the light, not the world origin.
+struct WedgeBuffer
 {
   glm::dvec3 Origin{ 0.0 };
   glm::dmat4 ObjectToWorld{ 0.0 };
   glm::dvec4 LightWorld{ 0.0 };
   double Radius = -1.0;
-  bool FrontFacesOnly = false;
-  std::size_t MeshGeneration = ~std::size_t(0);
-  std::size_t Wedges = 0;
+  std::size_t Wedges = 0;       ///< edges with a proper wedge
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
-  /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2), the
-  /// normal of the plane through the edge and the light's centre (3)
   std::vector<float> Vertices;
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
@@ -142,20 +117,54 @@ struct CountingWedgeCache
   bool Uploaded = false;
   bool Used = false;
 
+  /// The light in wedge coordinates, as the wedge shaders want it.
+  glm::dvec4 LightInWedgeSpace() const;
+  /// Uploads the vertices if needed and binds the VAO for `program`.
+  void Bind(vtkShaderProgram* program, const std::vector<WedgeAttribute>& attributes);
+  void ReleaseGraphicsResources();
+  /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
+  void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius);
+  /// Appends the wedge of edge from -> to (wedge coordinates), each vertex carrying `attributes`.
+  void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
+    int attributeCount);
+};
+
+/// Penumbra wedges of one caster's centre silhouette for one light.
+struct WedgeCache : WedgeBuffer
+{
+  std::size_t VolumeGeneration = ~std::size_t(0);
+  /// position (4), edge from (3), edge to (3), weight (1)
+  static constexpr int FloatsPerVertex = 11;
+  static const std::vector<WedgeAttribute>& Attributes();
+
+  /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
+  bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
+    const glm::dvec4& lightWorld, double radius);
+  std::size_t VertexCount() const { return this->Vertices.size() / FloatsPerVertex; }
+};
+
+/// Potential-silhouette wedges of one caster for one light, for per-light-sample counting
+/// (penumbraSampleCounting.h): one wedge per (edge, up to two of its faces), each vertex carrying
+/// the edge and its faces' normals and walk signs so that the fragment shader can take the
+/// edge's multiplicity from the pixel's point.
+struct CountingWedgeCache : WedgeBuffer
+{
+  bool FrontFacesOnly = false;
+  std::size_t MeshGeneration = ~std::size_t(0);
   /// Edges of the mesh that are a silhouette from some point of the light.
   std::vector<std::uint32_t> Potential;
   bool VerticesBuilt = false;
 
+  /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2), the
+  /// normal of the plane through the edge and the light's centre (3)
   static constexpr int FloatsPerVertex = 21;
+  static const std::vector<WedgeAttribute>& Attributes();
   /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
   /// radius or the counting rule changed; returns true when it did. The wedges themselves wait
   /// for BuildVertices, so that a light that ends up averaging never builds them.
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
     double radius, bool frontFacesOnly);
   void BuildVertices(const MeshCache& mesh);
-  glm::dvec4 LightInWedgeSpace() const;
-  void Bind(vtkShaderProgram* program);
-  void ReleaseGraphicsResources();
   std::size_t VertexCount() const { return this->Vertices.size() / FloatsPerVertex; }
 };
 

@@ -42,29 +42,41 @@ std::vector<float> Visibility(vtkSoftShadowPass* pass)
   return std::vector<float>(values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
 }
 
+/// A scene in its window, with its light and a pass of `Samples` light samples.
+struct SceneWindow
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
+  vtkNew<vtkSoftShadowPass> Pass;
+
+  explicit SceneWindow(const Scene& scene)
+  {
+    this->Renderer->SetBackground(0.2, 0.2, 0.25);
+    scene.Build(this->Renderer);
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPositional(!scene.Directional);
+    this->Light->SetConeAngle(180);
+    this->Light->SetPosition(scene.LightPosition);
+    this->Light->SetFocalPoint(0, 0, 0);
+    this->Renderer->AddLight(this->Light);
+    vtkSoftShadowPass::SetLightRadius(this->Light, scene.Radius);
+    this->Renderer->GetActiveCamera()->SetPosition(scene.Camera);
+    this->Renderer->GetActiveCamera()->SetFocalPoint(scene.Focal);
+    this->Renderer->ResetCameraClippingRange();
+    this->Window->SetSize(Width, Height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Pass->SetLightSamples(Samples);
+    this->Renderer->SetPass(this->Pass);
+  }
+};
+
 void RunScene(const Scene& scene)
 {
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.2, 0.2, 0.25);
-  scene.Build(renderer);
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(!scene.Directional);
-  light->SetConeAngle(180);
-  light->SetPosition(scene.LightPosition);
-  light->SetFocalPoint(0, 0, 0);
-  renderer->AddLight(light);
-  vtkSoftShadowPass::SetLightRadius(light, scene.Radius);
-  renderer->GetActiveCamera()->SetPosition(scene.Camera);
-  renderer->GetActiveCamera()->SetFocalPoint(scene.Focal);
-  renderer->ResetCameraClippingRange();
-
-  auto window = NewRenderWindow();
-  window->SetSize(Width, Height);
-  window->AddRenderer(renderer);
-  vtkNew<vtkSoftShadowPass> pass;
-  pass->SetLightSamples(Samples);
-  renderer->SetPass(pass);
+  SceneWindow view(scene);
+  vtkRenderer* renderer = view.Renderer;
+  vtkRenderWindow* window = view.Window;
+  vtkSoftShadowPass* pass = view.Pass;
 
   pass->SetMethodToAveragedHardShadows();
   window->Render();
@@ -121,28 +133,13 @@ void RunScene(const Scene& scene)
 /// its image is the chosen method's, bit for bit.
 void TestAutomaticChoice(const Scene& base)
 {
-  vtkNew<vtkRenderer> renderer;
-  base.Build(renderer);
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetConeAngle(180);
-  light->SetPosition(base.LightPosition);
-  renderer->AddLight(light);
-  renderer->GetActiveCamera()->SetPosition(base.Camera);
-  renderer->GetActiveCamera()->SetFocalPoint(base.Focal);
-  renderer->ResetCameraClippingRange();
-  auto window = NewRenderWindow();
-  window->SetSize(Width, Height);
-  window->AddRenderer(renderer);
-  vtkNew<vtkSoftShadowPass> pass;
-  pass->SetLightSamples(Samples);
-  renderer->SetPass(pass);
+  SceneWindow view(base);
+  vtkSoftShadowPass* pass = view.Pass;
   for (const double radius : { 0.05, 1.5 })
   {
-    vtkSoftShadowPass::SetLightRadius(light, radius);
+    vtkSoftShadowPass::SetLightRadius(view.Light, radius);
     pass->SetMethodToAutomatic();
-    window->Render();
+    view.Window->Render();
     const std::vector<float> automatic = Visibility(pass);
     const bool counted = pass->GetNumberOfPenumbraWedges() > 0;
     Check(counted == (radius < 1.0),
@@ -156,7 +153,7 @@ void TestAutomaticChoice(const Scene& base)
     {
       pass->SetMethodToAveragedHardShadows();
     }
-    window->Render();
+    view.Window->Render();
     Check(Visibility(pass) == automatic, "Automatic's image is its chosen method's");
   }
 }
