@@ -9,31 +9,29 @@ namespace penumbra
 LightFacing FacingOverLight(
   const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light, double radius)
 {
-  const double length = glm::length(normal);
-  if (!(length > 0.0) || !std::isfinite(length))
+  // The sign is ShadowVolume::Facing's, computed the same way, so that a radius of 0 gives
+  // exactly the centre's silhouette and any radius a superset of it.
+  const glm::dvec3 towards = glm::dvec3(light) - light.w * point;
+  const double d = glm::dot(normal, towards);
+  const LightFacing sign =
+    d > 0.0 ? LightFacing::Towards : (d < 0.0 ? LightFacing::Away : LightFacing::EdgeOn);
+  if (!(radius > 0.0))
   {
-    return LightFacing::EdgeOn;
+    return sign;
   }
-  const glm::dvec3 unit = normal / length;
-  double height, reach;
-  if (light.w != 0.0)
-  {
-    height = glm::dot(unit, glm::dvec3(light) / light.w - point);
-    reach = radius;
-  }
-  else
-  {
-    // Directions within the cone of half-angle `radius` around the light's direction: the plane
-    // splits them when the normal is within `radius` of perpendicular to that direction.
-    height = glm::dot(unit, glm::normalize(glm::dvec3(light)));
-    reach = radius > 0.0 ? std::sin(std::min(radius, 1.5707963267948966)) : 0.0;
-  }
-  if (reach > 0.0 && std::abs(height) <= reach)
+  // Within the light's reach of the plane: |d| <= r |n| for a sphere of radius r, and
+  // |d| <= sin(r) |n| |l| for a cone of half-angle r around direction l. Undecidable lengths
+  // (overflow, underflow, NaN) count as mixed: a potential silhouette too many costs a wedge.
+  const double normalLength = glm::length(normal);
+  const double reach = light.w != 0.0
+    ? radius
+    : std::sin(std::min(radius, 1.5707963267948966)) * glm::length(glm::dvec3(light));
+  const double bound = reach * normalLength;
+  if (!(normalLength > 0.0) || !std::isfinite(bound) || !std::isfinite(d) || !(bound > 0.0))
   {
     return LightFacing::Mixed;
   }
-  return height > 0.0 ? LightFacing::Towards
-                      : (height < 0.0 ? LightFacing::Away : LightFacing::EdgeOn);
+  return std::abs(d) <= bound ? LightFacing::Mixed : sign;
 }
 
 std::vector<std::uint32_t> PotentialSilhouette(const CasterTopology& topo,

@@ -44,8 +44,9 @@ enum class LightFacing : std::int8_t
 
 /**
  * Facing of the plane through `point` with normal `normal` (not necessarily unit) over a light:
- * (centre, 1) with `radius` in world units, or (unit direction towards it, 0) with `radius` its
- * angular radius in radians.
+ * (centre, 1) with `radius` in world units, or (direction towards it, 0) with `radius` its
+ * angular radius in radians. With radius 0 it is ShadowVolume::Facing's sign; where the lengths
+ * involved overflow, underflow or are NaN it says Mixed (a potential silhouette too many).
  */
 VTKPENUMBRAGEOMETRY_EXPORT LightFacing FacingOverLight(
   const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light, double radius);

@@ -236,8 +236,10 @@ void TestFacingOverLight()
     "directional mixed");
   Check(FacingOverLight({ 0, 1, 0.5 }, { 0, 0, 0 }, direction, 0.2) == LightFacing::Towards,
     "directional towards");
-  Check(FacingOverLight({ 0, 0, 0 }, { 0, 0, 0 }, point, 0.5) == LightFacing::EdgeOn,
-    "zero normal");
+  Check(FacingOverLight({ 0, 0, 0 }, { 0, 0, 0 }, point, 0.0) == LightFacing::EdgeOn,
+    "zero normal, point light: edge-on");
+  Check(FacingOverLight({ 0, 0, 0 }, { 0, 0, 0 }, point, 0.5) == LightFacing::Mixed,
+    "zero normal, area light: undecidable counts as mixed");
 }
 
 void TestDegenerate()

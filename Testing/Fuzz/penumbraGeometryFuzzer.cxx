@@ -5,6 +5,7 @@
 #include "penumbraCasterTopology.h"
 #include "penumbraFuzzInput.h"
 #include "penumbraLightSamples.h"
+#include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
 
@@ -376,6 +377,63 @@ void CheckWedgeAndOcclusion(const glm::dvec3& a, const glm::dvec3& b, const glm:
   }
 }
 
+/// Per-light-sample counting on the same mesh, light and receivers: indices in range, the centre
+/// silhouette among the potential one, crossings in {-1, 0, 1}, multiplicities bounded by the
+/// faces, pyramids finite; no NaN and no crash whatever the input.
+void CheckCounting(const CasterTopology& topo, const glm::dvec4& light, double radius,
+  bool frontOnly, const ShadowVolume& centre, const std::vector<glm::dvec4>& samples,
+  const std::vector<glm::dvec3>& receivers)
+{
+  const std::vector<std::uint32_t> potential =
+    PotentialSilhouette(topo, glm::dmat4(1.0), light, radius, frontOnly);
+  for (std::uint32_t e : potential)
+  {
+    Require(e < topo.Edges.size(), "potential silhouette edges exist");
+  }
+  if (radius >= 0.0 && IsFinite(light) && std::isfinite(radius))
+  {
+    Require(potential.size() >= centre.Silhouette.size(),
+      "the centre silhouette is among the potential one");
+  }
+  std::size_t checked = 0;
+  for (std::uint32_t e : potential)
+  {
+    if (++checked > 64)
+    {
+      break; // bounded work per input
+    }
+    const Edge& edge = topo.Edges[e];
+    const glm::dvec3 a = topo.Points[edge.A], b = topo.Points[edge.B];
+    std::vector<EdgeFace> faces;
+    for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
+    {
+      const glm::uvec3& tri = topo.Triangles[topo.Uses[u].Triangle];
+      faces.push_back({ glm::cross(topo.Points[tri.y] - topo.Points[tri.x],
+                          topo.Points[tri.z] - topo.Points[tri.x]),
+        topo.Uses[u].Sign });
+    }
+    const LightPyramid pyramid = LightPyramid::Build(a, b, light, radius);
+    if (pyramid.Valid)
+    {
+      for (const glm::dvec3& n : pyramid.Normals)
+      {
+        Require(IsFinite(n), "valid pyramids have finite normals");
+      }
+    }
+    for (const glm::dvec3& p : receivers)
+    {
+      const int m = MultiplicityFrom(p, a, faces.data(), static_cast<int>(faces.size()), frontOnly);
+      Require(std::abs(m) <= static_cast<int>(faces.size()), "multiplicity bounded by the faces");
+      for (const glm::dvec4& s : samples)
+      {
+        const int crossing = SampleCrossing(p, a, b, light, s);
+        Require(crossing >= -1 && crossing <= 1, "a crossing is -1, 0 or 1");
+      }
+    }
+  }
+  (void)CountingIsCheaper({ { potential.size(), centre.Silhouette.size(), radius } }, 16);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -469,5 +527,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     Require(!sane || (IsFinite(s) && s.w == sampled.w), "light samples finite for a finite light");
   }
+  // In the caster's frame, as the centre: positional samples relative to its origin.
+  std::vector<glm::dvec4> localSamples;
+  for (const glm::dvec4& sample : samples)
+  {
+    localSamples.push_back(
+      sample.w != 0.0 ? glm::dvec4(glm::dvec3(sample) - topo.Origin, 1.0) : sample);
+  }
+  CheckCounting(topo, local, radius, frontOnly, sides, localSamples, points);
   return 0;
 }
