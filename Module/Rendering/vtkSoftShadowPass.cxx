@@ -233,38 +233,49 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 class vtkSoftShadowPass::vtkInternals
 {
 public:
+  /// What a light's layer is made of.
+  enum class Technique
+  {
+    HardSamples,    ///< hard shadows of its Samples, averaged (one: hard volumes)
+    PenumbraWedges, ///< the centre's count plus centre-silhouette wedges
+    Plateaus,       ///< the centre's hard shadow plus plateaus on the receiver plane
+    SampleCounting  ///< the centre's count plus each sample's changes (soft shadow volumes)
+  };
   struct ShadowLight
   {
-    vtkLight* Light;
-    int CollectionIndex; ///< index in the renderer's light collection
-    int ShaderIndex;     ///< index among switched-on lights: the N of lightColorN in VTK's shaders
-    int Layer;           ///< layer of the LI buffer
-    glm::dvec4 World;    ///< (position, 1) or (direction towards the light, 0)
-    float Attenuation;
-    /// Points (or directions) on the light whose hard shadows are averaged; one for hard shadows.
+    vtkLight* Light = nullptr;
+    int CollectionIndex = 0; ///< index in the renderer's light collection
+    int ShaderIndex = 0;     ///< index among switched-on lights: the N of lightColorN in VTK's shaders
+    int Layer = 0;           ///< layer of the LI buffer
+    glm::dvec4 World{ 0.0 }; ///< (position, 1) or (direction towards the light, 0)
+    float Attenuation = 1.0f;
+    /// How this light's layer is drawn; set by ChooseMethod, and by the cost model for
+    /// Automatic's soft lights (UpdateCasters).
+    Technique Method = Technique::HardSamples;
+    /// Points (or directions) on the light whose hard shadows are averaged (HardSamples: one for
+    /// hard shadows), or the light itself for the other techniques.
     std::vector<glm::dvec4> Samples;
-    /// Penumbra wedges around the centre's hard shadow, with the light's radius (world units,
-    /// or radians for a directional light).
-    bool Wedges;
-    double WedgeRadius;
-    glm::dvec3 SampleTarget;
-    double SampleRadius; ///< as SpreadLightSamples takes it: world units, or clamped degrees
-    /// Haines' plateaus on the receiver plane, with the light's radius (world units, or
-    /// radians for a directional light); the hard shadow of the centre elsewhere.
-    bool Plateaus = false;
-    double PlateauRadius = 0.0;
-    /// Soft shadow volumes: the centre's volume count plus the potential silhouette's changes of
-    /// each of these samples' counts; the light's radius as for wedges.
-    bool Counting = false;
+    /// The light's radius for wedges, plateaus and counting: world units, or radians for a
+    /// directional light.
+    double SoftRadius = 0.0;
+    glm::dvec3 SampleTarget{ 0.0 };
+    double SampleRadius = 0.0; ///< as SpreadLightSamples takes it: world units, or clamped degrees
+    /// SampleCounting: the samples whose counts the potential silhouette changes.
+    std::vector<glm::dvec4> CountingSamples;
     /// Automatic picked counting: it may still average the same samples where that is cheaper.
     bool CountingChosenAutomatically = false;
-    std::vector<glm::dvec4> CountingSamples;
 
+    bool Is(Technique technique) const { return this->Method == technique; }
+    /// Wedges and counting count the centre's volumes in colour, not in the stencil.
+    bool CountsCentreInColour() const
+    {
+      return this->Is(Technique::PenumbraWedges) || this->Is(Technique::SampleCounting);
+    }
     /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
-    /// centre silhouette (wedges, Automatic's check) and averaged samples never evict each other.
+    /// centre silhouette (wedges, counting) and averaged samples never evict each other.
     std::pair<vtkLight*, int> VolumeKey(std::size_t k) const
     {
-      return { this->Light, this->Wedges || this->Counting ? CentreVolume : static_cast<int>(k) };
+      return { this->Light, this->CountsCentreInColour() ? CentreVolume : static_cast<int>(k) };
     }
   };
   static constexpr int CentreVolume = -1;
@@ -637,7 +648,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
         [](const vtkInternals::ShadowLight& light) {
-          return light.Wedges || light.Plateaus || light.Counting;
+          return !light.Is(vtkInternals::Technique::HardSamples);
         }))
   {
     internals.CopyDepth(window->GetState());
@@ -715,9 +726,13 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
       }
       continue;
     }
-    vtkInternals::ShadowLight shadowLight{ light, collectionIndex, index,
-      static_cast<int>(internals.Lights.size()), world,
-      static_cast<float>(light->GetShadowAttenuation()), {}, false, 0.0, glm::dvec3(0.0), 0.0 };
+    vtkInternals::ShadowLight shadowLight;
+    shadowLight.Light = light;
+    shadowLight.CollectionIndex = collectionIndex;
+    shadowLight.ShaderIndex = index;
+    shadowLight.Layer = static_cast<int>(internals.Lights.size());
+    shadowLight.World = world;
+    shadowLight.Attenuation = static_cast<float>(light->GetShadowAttenuation());
     internals.ChooseMethod(this, renderer, shadowLight);
     internals.Lights.push_back(shadowLight);
   }
@@ -730,9 +745,9 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   const glm::dvec4& world = shadowLight.World;
   double radius = GetLightRadius(light);
   shadowLight.Samples = { world };
-  shadowLight.Wedges = shadowLight.Plateaus = shadowLight.Counting = false;
+  shadowLight.Method = Technique::HardSamples;
   shadowLight.CountingChosenAutomatically = false;
-  shadowLight.WedgeRadius = 0.0;
+  shadowLight.SoftRadius = 0.0;
   shadowLight.CountingSamples.clear();
   if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
   {
@@ -755,17 +770,15 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
         light->GetTransformedFocalPoint()[2]);
   shadowLight.SampleTarget = target;
   shadowLight.SampleRadius = radius;
+  shadowLight.SoftRadius = world.w != 0.0 ? radius : glm::radians(radius);
   if (self->Method == METHOD_PLATEAUS)
   {
-    shadowLight.Plateaus = true;
-    shadowLight.PlateauRadius = world.w != 0.0 ? radius : glm::radians(radius);
+    shadowLight.Method = Technique::Plateaus;
     return;
   }
-  const double wedgeRadius = world.w != 0.0 ? radius : glm::radians(radius);
   if (self->Method == METHOD_PENUMBRA_WEDGES)
   {
-    shadowLight.Wedges = true;
-    shadowLight.WedgeRadius = wedgeRadius;
+    shadowLight.Method = Technique::PenumbraWedges;
     return;
   }
   if ((self->Method == METHOD_AUTOMATIC || self->Method == METHOD_SOFT_SHADOW_VOLUMES) &&
@@ -779,9 +792,8 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
                                   << " is clamped for them.");
       this->WarnedCountingSamples = true;
     }
-    shadowLight.Counting = true;
+    shadowLight.Method = Technique::SampleCounting;
     shadowLight.CountingChosenAutomatically = self->Method == METHOD_AUTOMATIC;
-    shadowLight.WedgeRadius = wedgeRadius;
     shadowLight.CountingSamples = penumbra::SpreadLightSamples(
       world, radius, std::min(self->LightSamples, maximumSamples), target);
     return;
@@ -979,7 +991,9 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   }
 
   const bool plateaus = std::any_of(internals.Lights.begin(), internals.Lights.end(),
-    [](const vtkInternals::ShadowLight& light) { return light.Plateaus; });
+    [](const vtkInternals::ShadowLight& light) {
+      return light.Is(vtkInternals::Technique::Plateaus);
+    });
   if (plateaus && !this->FindReceiverPlane(s->GetRenderer()))
   {
     if (!internals.Plateau.WarnedNoPlane)
@@ -990,7 +1004,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     }
     for (auto& light : internals.Lights)
     {
-      light.Plateaus = false;
+      light.Method = vtkInternals::Technique::HardSamples;
     }
   }
 
@@ -999,9 +1013,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     const double lightRadius = GetLightRadius(light.Light);
     for (penumbra::CasterCache* caster : internals.Casters)
     {
-      const double radius = light.Wedges || light.Counting ? light.WedgeRadius
-        : light.World.w != 0.0                           ? lightRadius
-                                                         : glm::radians(lightRadius);
+      const double radius = light.World.w != 0.0 ? lightRadius : glm::radians(lightRadius);
       if (!ShadowMayReachView(
             caster->WorldMin, caster->WorldMax, light.World, radius, internals.WorldToClip))
       {
@@ -1010,18 +1022,18 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
       }
     }
     this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
-    if (light.Counting && light.CountingChosenAutomatically &&
+    if (light.Is(vtkInternals::Technique::SampleCounting) && light.CountingChosenAutomatically &&
       !penumbra::CountingIsCheaper(internals.CountingCosts(light), light.CountingSamples.size()))
     {
       // Averaging the same samples gives the same image and is expected to be cheaper here.
-      light.Counting = false;
+      light.Method = vtkInternals::Technique::HardSamples;
       light.Samples = penumbra::SpreadLightSamples(
         light.World, light.SampleRadius, this->LightSamples, light.SampleTarget);
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     }
     for (penumbra::CasterCache* caster : internals.Casters)
     {
-      if (light.Counting && !caster->Culled.count(light.Light))
+      if (light.Is(vtkInternals::Technique::SampleCounting) && !caster->Culled.count(light.Light))
       {
         caster->CountingWedges[light.Light].BuildVertices(*caster->Mesh);
       }
@@ -1045,17 +1057,17 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
       updates += volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored) ? 1 : 0;
     }
-    if (light.Wedges)
+    if (light.Is(Technique::PenumbraWedges))
     {
       caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
-        caster->ObjectToWorld, light.World, light.WedgeRadius);
+        caster->ObjectToWorld, light.World, light.SoftRadius);
     }
-    if (light.Counting)
+    if (light.Is(Technique::SampleCounting))
     {
       const bool frontFacesOnly = penumbra::ShadowVolume::FrontFacesSuffice(
         caster->Mesh->Topology, worldToObject * light.World);
       updates += caster->CountingWedges[light.Light].Update(*caster->Mesh, caster->ObjectToWorld,
-                   light.World, light.WedgeRadius, frontFacesOnly)
+                   light.World, light.SoftRadius, frontFacesOnly)
         ? 1
         : 0;
     }
@@ -1084,11 +1096,11 @@ std::vector<penumbra::CountingCost> vtkSoftShadowPass::vtkInternals::CountingCos
     {
       const double distance = glm::length(0.5 * (caster->WorldMin + caster->WorldMax) -
         glm::dvec3(light.World));
-      cost.AngularRadius = distance > light.WedgeRadius ? light.WedgeRadius / distance : 1e300;
+      cost.AngularRadius = distance > light.SoftRadius ? light.SoftRadius / distance : 1e300;
     }
     else
     {
-      cost.AngularRadius = light.WedgeRadius;
+      cost.AngularRadius = light.SoftRadius;
     }
     costs.push_back(cost);
   }
@@ -1157,8 +1169,8 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     // Wedges and soft shadow volumes count the centre's volumes in colour (additive float).
-    const bool countInColour = light.Wedges || light.Counting;
-    if (light.Counting)
+    const bool countInColour = light.CountsCentreInColour();
+    if (light.Is(vtkInternals::Technique::SampleCounting))
     {
       // The centre's count goes to a texture of its own, for the resolve to read.
       internals.Framebuffer->RemoveColorAttachment(0);
@@ -1200,14 +1212,14 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
 
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
-      if (light.Wedges)
+      if (light.Is(vtkInternals::Technique::PenumbraWedges))
       {
         // Volumes also counted over the background: put it back to fully lit.
         ostate->vtkglDisable(GL_BLEND);
         ostate->vtkglDepthFunc(GL_LEQUAL);
         this->DrawResolve(window, 1.0f);
       }
-      else if (!light.Counting)
+      else if (!light.Is(vtkInternals::Technique::SampleCounting))
       {
         // Resolve: every geometry pixel with a non-zero count is in this sample's shadow.
         ostate->vtkglEnable(GL_BLEND);
@@ -1218,16 +1230,16 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       }
       ostate->vtkglDisable(GL_DEPTH_CLAMP);
     }
-    if (light.Wedges)
+    if (light.Is(vtkInternals::Technique::PenumbraWedges))
     {
       internals.DrawWedges(
         window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
     }
-    if (light.Plateaus)
+    if (light.Is(vtkInternals::Technique::Plateaus))
     {
       this->NumberOfPlateauTriangles += internals.DrawPlateaus(this, window, light);
     }
-    if (light.Counting)
+    if (light.Is(vtkInternals::Technique::SampleCounting))
     {
       internals.DrawSampleCounting(
         this, window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
@@ -1338,7 +1350,7 @@ void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
   // tested against the scene depth skip every point in front of the wedge. Otherwise back
   // faces, which every ray meeting the wedge crosses once, skip points behind it.
-  const glm::dvec3 grow(light.World.w != 0.0 ? light.WedgeRadius : 0.0);
+  const glm::dvec3 grow(light.World.w != 0.0 ? light.SoftRadius : 0.0);
   const bool frontFaces = light.World.w != 0.0 && buffer.Fallbacks == 0 &&
     !VolumeMayReachNearPlane(
       caster.WorldMin - grow, caster.WorldMax + grow, light.World, this->NearCorners);
@@ -1377,7 +1389,7 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
   const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
   program->SetUniform2f("viewportSize", viewport);
-  program->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
+  program->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
   const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
   for (penumbra::CasterCache* caster : this->Casters)
   {
@@ -1408,7 +1420,7 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
     horizon->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
     horizon->SetUniform2f("viewportSize", viewport);
-    horizon->SetUniformf("lightRadius", static_cast<float>(light.WedgeRadius));
+    horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
     horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
     horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
     ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -1444,7 +1456,10 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     penumbraCountingWedgeVS, wedgeFS.c_str(), "");
   if (!program)
   {
-    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume wedge shader.");
+    // Said once: from the next frame on such lights average the same samples.
+    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume wedge shader: "
+                                  "soft shadows average hard shadows instead.");
+    this->CountingSupport = 0;
     return false;
   }
   vtkOpenGLState* ostate = window->GetState();
@@ -1512,7 +1527,9 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     penumbraResolveVS, resolveFS.c_str(), "");
   if (!resolve)
   {
-    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume resolve shader.");
+    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume resolve shader: "
+                                  "soft shadows average hard shadows instead.");
+    this->CountingSupport = 0;
     return false;
   }
   this->Framebuffer->RemoveColorAttachment(0);
@@ -1750,7 +1767,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
   }
   const int resolution = self->GetPlateauResolution();
   std::vector<double> signature = { light.World.x, light.World.y, light.World.z, light.World.w,
-    light.PlateauRadius, plane.Origin.x, plane.Origin.y, plane.Origin.z, plane.Normal.x,
+    light.SoftRadius, plane.Origin.x, plane.Origin.y, plane.Origin.z, plane.Normal.x,
     plane.Normal.y, plane.Normal.z, static_cast<double>(resolution) };
   std::vector<penumbra::CasterCache*> casters;
   for (penumbra::CasterCache* caster : this->Casters)
@@ -1775,7 +1792,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
       volume.EnsureCaps(*caster->Mesh);
       penumbra::BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld,
-        light.World, light.PlateauRadius, plane, plateau.Triangles);
+        light.World, light.SoftRadius, plane, plateau.Triangles);
     }
     // The texture covers the plateaus, within the receiver's extent when it has one.
     plateau.Lo = glm::dvec2(std::numeric_limits<double>::max());
