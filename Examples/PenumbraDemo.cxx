@@ -449,9 +449,12 @@ int main(int argc, char* argv[])
     height, static_cast<long long>(triangles), shadowingLights, shadowingLights == 1 ? "" : "s",
     vtkSoftShadowPass::GetLightRadius(key));
   std::printf("  no shadows      median %6.1f ms  min %6.1f ms\n", plain.Median, plain.Min);
-  std::printf("  shadows         median %6.1f ms  min %6.1f ms  (x%.2f; method %s)\n",
+  std::printf("  shadows         median %6.1f ms  min %6.1f ms  (x%.2f; method %s: %d light%s "
+              "counted, %d averaged, %d samples)\n",
     shadowed.Median, shadowed.Min, plain.Median > 0.0 ? shadowed.Median / plain.Median : 0.0,
-    shadows->GetMethodAsString());
+    shadows->GetMethodAsString(), shadows->GetNumberOfCountedLights(),
+    shadows->GetNumberOfCountedLights() == 1 ? "" : "s", shadows->GetNumberOfAveragedLights(),
+    shadows->GetLightSamples());
   std::printf("    (%d and %d orbiting frames, Render() + glFinish; %lld shadow-volume triangles "
               "per frame, %lld silhouette updates while orbiting)\n",
     plain.Frames, shadowed.Frames, static_cast<long long>(volumeTriangles),

@@ -481,6 +481,8 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReceiverPlaneNormal: " << this->ReceiverPlaneNormal[0] << " "
      << this->ReceiverPlaneNormal[1] << " " << this->ReceiverPlaneNormal[2] << "\n";
   os << indent << "NumberOfPlateauTriangles: " << this->NumberOfPlateauTriangles << "\n";
+  os << indent << "NumberOfCountedLights: " << this->NumberOfCountedLights << "\n";
+  os << indent << "NumberOfAveragedLights: " << this->NumberOfAveragedLights << "\n";
   os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
   os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
      << "\n";
@@ -614,6 +616,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfFullViewportWedges = 0;
   this->NumberOfCulledShadows = 0;
   this->NumberOfPlateauTriangles = 0;
+  this->NumberOfCountedLights = 0;
+  this->NumberOfAveragedLights = 0;
 
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
@@ -1243,7 +1247,9 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     {
       internals.DrawSampleCounting(
         this, window, light, this->NumberOfPenumbraWedges, this->NumberOfFullViewportWedges);
+      ++this->NumberOfCountedLights;
     }
+    this->NumberOfAveragedLights += light.Samples.size() > 1 ? 1 : 0;
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

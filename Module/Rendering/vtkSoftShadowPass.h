@@ -234,6 +234,10 @@ public:
   vtkGetMacro(NumberOfZFailVolumes, int);
   /// Plateau triangles (drop shadows, cones, sheets) drawn in the last frame.
   vtkGetMacro(NumberOfPlateauTriangles, vtkIdType);
+  /// Lights whose soft shadows were counted (soft shadow volumes) in the last frame, and those
+  /// averaged from more than one light sample: Automatic's choices, for one.
+  vtkGetMacro(NumberOfCountedLights, int);
+  vtkGetMacro(NumberOfAveragedLights, int);
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
@@ -270,6 +274,8 @@ protected:
   double ReceiverPlaneNormal[3] = { 0.0, 0.0, 1.0 };
   bool UseReceiverPlane = false;
   vtkIdType NumberOfPlateauTriangles = 0;
+  int NumberOfCountedLights = 0;
+  int NumberOfAveragedLights = 0;
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
   int NumberOfZFailVolumes = 0;

@@ -142,6 +142,9 @@ void TestAutomaticChoice(const Scene& base)
     view.Window->Render();
     const std::vector<float> automatic = Visibility(pass);
     const bool counted = pass->GetNumberOfPenumbraWedges() > 0;
+    Check(pass->GetNumberOfCountedLights() == (counted ? 1 : 0) &&
+        pass->GetNumberOfAveragedLights() == (counted ? 0 : 1),
+      "the pass reports Automatic's choice");
     Check(counted == (radius < 1.0),
       "Automatic " + std::string(counted ? "counts" : "averages") + " a light of radius " +
         std::to_string(radius));
