@@ -423,7 +423,7 @@ public:
   /// as the eye and near plane allow, in wedge coordinates.
   void DrawWedgeBuffer(vtkShaderProgram* program, const penumbra::CasterCache& caster,
     penumbra::WedgeBuffer& buffer, const std::vector<penumbra::WedgeAttribute>& attributes,
-    std::size_t vertexCount, const ShadowLight& light, const glm::dmat4& clipToWorld);
+    const ShadowLight& light, const glm::dmat4& clipToWorld);
 
   /// Adds every caster's penumbra wedges for `light` into its LI layer; returns the count of
   /// wedges and of full-viewport ones.
@@ -1347,8 +1347,8 @@ void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
 
 void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   const penumbra::CasterCache& caster, penumbra::WedgeBuffer& buffer,
-  const std::vector<penumbra::WedgeAttribute>& attributes, std::size_t vertexCount,
-  const ShadowLight& light, const glm::dmat4& clipToWorld)
+  const std::vector<penumbra::WedgeAttribute>& attributes, const ShadowLight& light,
+  const glm::dmat4& clipToWorld)
 {
   vtkOpenGLState* ostate = this->Window->GetState();
   // A point inside a wedge lies behind its front faces and in front of its back faces. When
@@ -1369,7 +1369,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
   program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
   buffer.Bind(program, attributes);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertexCount));
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(buffer.IndexCount()), GL_UNSIGNED_INT, nullptr);
+  buffer.IndexBuffer->Release();
   buffer.VAO->Release();
 }
 
@@ -1404,12 +1405,12 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
       continue;
     }
     penumbra::WedgeCache& cache = caster->Wedges[light.Light];
-    if (cache.VertexCount() == 0)
+    if (cache.IndexCount() == 0)
     {
       continue;
     }
     this->DrawWedgeBuffer(program, *caster, cache, penumbra::WedgeCache::Attributes(),
-      cache.VertexCount(), light, clipToWorld);
+      light, clipToWorld);
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
     fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }
@@ -1500,7 +1501,7 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
       continue;
     }
     penumbra::CountingWedgeCache& cache = caster->CountingWedges[light.Light];
-    if (cache.VertexCount() == 0)
+    if (cache.IndexCount() == 0)
     {
       continue;
     }
@@ -1517,7 +1518,7 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     this->DrawWedgeBuffer(program, *caster, cache, penumbra::CountingWedgeCache::Attributes(),
-      cache.VertexCount(), light, clipToWorld);
+      light, clipToWorld);
     wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
     fullViewport += static_cast<vtkIdType>(cache.FullViewport);
   }

@@ -11,6 +11,7 @@
 #include "penumbraWedge.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 namespace penumbra
@@ -166,36 +167,42 @@ namespace
 /// exists, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
 /// back-face culling keeps: exact but costly. Every vertex carries `attributes`.
 WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
-  double radius, const float* attributes, int attributeCount, std::vector<float>& vertices)
+  double radius, const float* attributes, int attributeCount, std::vector<float>& vertices,
+  std::vector<std::uint32_t>& indices)
 {
+  const int floatsPerVertex = 4 + attributeCount;
+  const auto first = static_cast<std::uint32_t>(vertices.size() / floatsPerVertex);
   auto emit = [&](const glm::dvec4& position) {
     const float xyzw[4] = { static_cast<float>(position.x), static_cast<float>(position.y),
       static_cast<float>(position.z), static_cast<float>(position.w) };
     vertices.insert(vertices.end(), xyzw, xyzw + 4);
     vertices.insert(vertices.end(), attributes, attributes + attributeCount);
   };
+  auto emitShape = [&](const auto& corners, const auto& triangles) {
+    for (const glm::dvec4& corner : corners)
+    {
+      emit(corner);
+    }
+    for (unsigned int index : triangles)
+    {
+      indices.push_back(first + index);
+    }
+  };
   const Wedge wedge = Wedge::Build(from, to, light, radius);
   if (wedge.Valid)
   {
-    for (unsigned int index : Wedge::Triangles())
-    {
-      emit(wedge.Vertices[index]);
-    }
+    emitShape(wedge.Vertices, Wedge::Triangles());
     return WedgeShape::Planes;
   }
   const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
   if (pyramid.Valid)
   {
-    for (unsigned int index : LightPyramid::Triangles())
-    {
-      emit(pyramid.Vertices[index]);
-    }
+    emitShape(pyramid.Vertices, LightPyramid::Triangles());
     return WedgeShape::Pyramid;
   }
-  for (const glm::dvec2 corner : { glm::dvec2(-1, -1), glm::dvec2(-1, 3), glm::dvec2(3, -1) })
-  {
-    emit(glm::dvec4(corner, 0.0, 2.0));
-  }
+  const std::array<glm::dvec4, 3> viewport = { glm::dvec4(-1, -1, 0, 2), glm::dvec4(-1, 3, 0, 2),
+    glm::dvec4(3, -1, 0, 2) };
+  emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
   return WedgeShape::FullViewport;
 }
 
@@ -218,6 +225,7 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
   this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
                                      : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   this->Vertices.clear();
+  this->Indices.clear();
   this->Wedges = this->Fallbacks = this->FullViewport = 0;
   this->Uploaded = false;
 }
@@ -225,8 +233,8 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
 void WedgeBuffer::AppendEdge(
   const glm::dvec3& from, const glm::dvec3& to, const float* attributes, int attributeCount)
 {
-  const WedgeShape shape = AppendWedge(
-    from, to, this->LightInWedgeSpace(), this->Radius, attributes, attributeCount, this->Vertices);
+  const WedgeShape shape = AppendWedge(from, to, this->LightInWedgeSpace(), this->Radius,
+    attributes, attributeCount, this->Vertices, this->Indices);
   // Pyramids and full-viewport triangles are both fallbacks: their caster's wedges are drawn by
   // back faces.
   ++(shape == WedgeShape::Planes ? this->Wedges : this->Fallbacks);
@@ -238,6 +246,7 @@ void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<WedgeAttribu
   if (!this->Uploaded)
   {
     this->Buffer->Upload(this->Vertices, vtkOpenGLBufferObject::ArrayBuffer);
+    this->IndexBuffer->Upload(this->Indices, vtkOpenGLBufferObject::ElementArrayBuffer);
     this->Uploaded = true;
     this->VAOProgram = nullptr;
   }
@@ -256,11 +265,13 @@ void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<WedgeAttribu
     this->VAOProgram = program;
   }
   this->VAO->Bind();
+  this->IndexBuffer->Bind();
 }
 
 void WedgeBuffer::ReleaseGraphicsResources()
 {
   this->Buffer->ReleaseGraphicsResources();
+  this->IndexBuffer->ReleaseGraphicsResources();
   this->VAO->ReleaseGraphicsResources();
   this->VAOProgram = nullptr;
   this->Uploaded = false;
@@ -490,11 +501,11 @@ std::size_t ShadowCaches::GraphicsBufferBytes() const
     }
     for (const auto& wedges : caster.second->Wedges)
     {
-      bytes += wedges.second.Uploaded ? wedges.second.Vertices.size() * sizeof(float) : 0;
+      bytes += wedges.second.UploadedBytes();
     }
     for (const auto& wedges : caster.second->CountingWedges)
     {
-      bytes += wedges.second.Uploaded ? wedges.second.Vertices.size() * sizeof(float) : 0;
+      bytes += wedges.second.UploadedBytes();
     }
   }
   return bytes;

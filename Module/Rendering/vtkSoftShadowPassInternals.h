@@ -97,8 +97,9 @@ struct WedgeAttribute
   int Components;
 };
 
-/// Wedges of one caster for one light, as drawn: 8 outward triangles per edge (a light pyramid's
-/// 6, or a full-viewport triangle) whose vertices carry the edge's data for the fragment shader.
+/// Wedges of one caster for one light, as drawn: 8 outward triangles per edge over its 6
+/// vertices (a light pyramid's 6 over 5, or a full-viewport triangle), indexed, every vertex
+/// carrying the edge's data for the fragment shader.
 /// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
 /// caster's for a directional light), so float precision follows the light, not the world origin.
 struct WedgeBuffer
@@ -111,7 +112,9 @@ struct WedgeBuffer
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
   std::vector<float> Vertices;
+  std::vector<std::uint32_t> Indices;
   vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkOpenGLBufferObject> IndexBuffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;
   bool Uploaded = false;
@@ -119,7 +122,8 @@ struct WedgeBuffer
 
   /// The light in wedge coordinates, as the wedge shaders want it.
   glm::dvec4 LightInWedgeSpace() const;
-  /// Uploads the vertices if needed and binds the VAO for `program`.
+  /// Uploads the vertices and indices if needed and binds the VAO and index buffer for
+  /// `program`; DrawWedgeBuffer releases both.
   void Bind(vtkShaderProgram* program, const std::vector<WedgeAttribute>& attributes);
   void ReleaseGraphicsResources();
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
@@ -127,6 +131,14 @@ struct WedgeBuffer
   /// Appends the wedge of edge from -> to (wedge coordinates), each vertex carrying `attributes`.
   void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
     int attributeCount);
+  std::size_t IndexCount() const { return this->Indices.size(); }
+  /// Bytes of the uploaded vertex and index buffers.
+  std::size_t UploadedBytes() const
+  {
+    return this->Uploaded
+      ? this->Vertices.size() * sizeof(float) + this->Indices.size() * sizeof(std::uint32_t)
+      : 0;
+  }
 };
 
 /// Penumbra wedges of one caster's centre silhouette for one light.
@@ -140,7 +152,6 @@ struct WedgeCache : WedgeBuffer
   /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
   bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
     const glm::dvec4& lightWorld, double radius);
-  std::size_t VertexCount() const { return this->Vertices.size() / FloatsPerVertex; }
 };
 
 /// Potential-silhouette wedges of one caster for one light, for per-light-sample counting
@@ -165,7 +176,6 @@ struct CountingWedgeCache : WedgeBuffer
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
     double radius, bool frontFacesOnly);
   void BuildVertices(const MeshCache& mesh);
-  std::size_t VertexCount() const { return this->Vertices.size() / FloatsPerVertex; }
 };
 
 /// An actor that casts shadows this frame.
