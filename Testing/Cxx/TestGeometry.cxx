@@ -6,6 +6,7 @@
 // to the light crosses: every triangle occludes whatever its orientation, and for closed,
 // consistently oriented meshes the front faces alone count. This covers sides, caps, the dark-cap
 // fan, multiplicities and mirrored matrices at once.
+#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
 #include "penumbraShadowVolume.h"
 
@@ -30,19 +31,10 @@
 #include <string>
 
 using namespace penumbra;
+using penumbra_test::Check;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  if (!condition)
-  {
-    std::printf("FAIL: %s\n", what.c_str());
-    ++Failures;
-  }
-}
 
 /// Möller-Trumbore; returns the ray parameter or -1, and whether the hit is too close to an
 /// edge to count robustly.
@@ -467,6 +459,5 @@ int main()
   TestMirrored(rng);
   TestDegenerateInput();
   FuzzRandomMeshes(rng);
-  std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
-  return Failures ? 1 : 0;
+  return penumbra_test::Finish();
 }

@@ -3,6 +3,7 @@
 // closed forms of the method: hard shadow at depth 0, penumbra width r h / (H - h) for a light of
 // radius r at height H over a caster edge at height h, growing with h, elongated for a light
 // near the horizon, and nothing non-finite on bad input.
+#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
 #include "penumbraPlateaus.h"
 #include "penumbraShadowVolume.h"
@@ -15,16 +16,10 @@
 #include <string>
 
 using namespace penumbra;
+using penumbra_test::Check;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok  " : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
-}
 
 /// The plateau depth at q: the smallest interpolated depth of the triangles covering it, or 1.
 double DepthAt(const std::vector<PlateauVertex>& triangles, const glm::dvec2& q)
@@ -172,6 +167,5 @@ int main()
   TestHardShadowAndWidth();
   TestLowLightIsElongated();
   TestBadInput();
-  std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
-  return Failures ? 1 : 0;
+  return penumbra_test::Finish();
 }

@@ -5,6 +5,7 @@
 // must equal the brute-force count of casting triangles on the segment p -> s, for closed,
 // open, non-manifold, non-orientable and mirrored casters, positional and directional lights.
 // A sign mutation of the edge term must make the check fail.
+#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
 #include "penumbraLightSamples.h"
 #include "penumbraSampleCounting.h"
@@ -27,19 +28,10 @@
 #include <string>
 
 using namespace penumbra;
+using penumbra_test::Check;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  if (!condition)
-  {
-    std::printf("FAIL: %s\n", what.c_str());
-    ++Failures;
-  }
-}
 
 /// Whether segment origin -> origin + dir (t in (0, 1)) crosses triangle abc; `nearEdge` is set
 /// when the hit is too close to the triangle's edges or the segment's ends to count robustly.
@@ -320,6 +312,5 @@ int main()
   const int mutated =
     CountMismatches(casters[0], lights[0].first, lights[0].second, -1, 150, rng, compared, nonZero);
   Check(mutated > 0, "a flipped edge term is detected (" + std::to_string(mutated) + " mismatches)");
-  std::printf("%s (%d failures)\n", Failures ? "FAILED" : "passed", Failures);
-  return Failures ? 1 : 0;
+  return penumbra_test::Finish();
 }

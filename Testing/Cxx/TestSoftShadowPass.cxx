@@ -1002,6 +1002,5 @@ int main()
   TestViewportsLightsAndResize();
   TestDelegateChain();
   TestBadInput();
-  std::printf("%s: %d failure(s)\n", Failures() ? "FAILED" : "passed", Failures());
-  return Failures() ? 1 : 0;
+  return penumbra_test::Finish();
 }

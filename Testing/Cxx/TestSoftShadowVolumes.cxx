@@ -245,6 +245,5 @@ int main()
     RunScene(scene);
   }
   TestAutomaticChoice(scenes[0]);
-  std::printf("%s (%d failures)\n", Failures() ? "FAILED" : "passed", Failures());
-  return Failures() ? 1 : 0;
+  return penumbra_test::Finish();
 }

@@ -3,6 +3,7 @@
 // The reference is a Monte Carlo integral over the light's disk (the same gnomonic disk that
 // EdgeOcclusion integrates over) by ray casting against the caster: what is left between the
 // two is the one approximation of the method, a single silhouette seen from the light's centre.
+#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
 #include "penumbraLightSamples.h"
 #include "penumbraShadowVolume.h"
@@ -20,16 +21,10 @@
 #include <string>
 
 using namespace penumbra;
+using penumbra_test::Check;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok  " : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
-}
 
 bool SegmentHitsTriangle(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& a,
   const glm::dvec3& b, const glm::dvec3& c)
@@ -377,6 +372,5 @@ int main()
   TestDegenerateEdges();
   TestLightSamples();
   TestLightPyramid();
-  std::printf("%s: %d failure(s)\n", Failures ? "FAILED" : "passed", Failures);
-  return Failures ? 1 : 0;
+  return penumbra_test::Finish();
 }

@@ -3,6 +3,8 @@
 #ifndef penumbraTestHarness_h
 #define penumbraTestHarness_h
 
+#include "penumbraCheck.h"
+
 #include "vtkActor.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
@@ -26,21 +28,6 @@
 
 namespace penumbra_test
 {
-
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok  " : "FAIL", what.c_str());
-  if (!condition)
-  {
-    ++Failures();
-  }
-}
 
 /**
  * An offscreen render window sharing one X connection with every other window of the process.
