@@ -1,5 +1,7 @@
 #include "penumbraSampleCounting.h"
 
+#include "penumbraShadowVolume.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,10 +11,9 @@ namespace penumbra
 LightFacing FacingOverLight(
   const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light, double radius)
 {
-  // The sign is ShadowVolume::Facing's, computed the same way, so that a radius of 0 gives
-  // exactly the centre's silhouette and any radius a superset of it.
-  const glm::dvec3 towards = glm::dvec3(light) - light.w * point;
-  const double d = glm::dot(normal, towards);
+  // The sign is ShadowVolume::Facing's, so that a radius of 0 gives exactly the centre's
+  // silhouette and any radius a superset of it.
+  const double d = ShadowVolume::LightSide(normal, point, light);
   const LightFacing sign =
     d > 0.0 ? LightFacing::Towards : (d < 0.0 ? LightFacing::Away : LightFacing::EdgeOn);
   if (!(radius > 0.0))

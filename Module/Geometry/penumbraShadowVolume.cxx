@@ -37,10 +37,15 @@ int ShadowVolume::Facing(const CasterTopology& topo, std::uint32_t triangle, con
 {
   const glm::uvec3& tri = topo.Triangles[triangle];
   const glm::dvec3& p0 = topo.Points[tri.x];
-  const glm::dvec3 normal = glm::cross(topo.Points[tri.y] - p0, topo.Points[tri.z] - p0);
-  const glm::dvec3 toLight = glm::dvec3(light) - light.w * p0;
-  const double d = glm::dot(normal, toLight);
+  const double d =
+    LightSide(glm::cross(topo.Points[tri.y] - p0, topo.Points[tri.z] - p0), p0, light);
   return d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
+}
+
+double ShadowVolume::LightSide(
+  const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light)
+{
+  return glm::dot(normal, glm::dvec3(light) - light.w * point);
 }
 
 ShadowVolume ShadowVolume::Build(

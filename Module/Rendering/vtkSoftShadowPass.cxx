@@ -400,6 +400,12 @@ public:
   /// Fills the light's samples (the light itself, or LightSamples points on it when the method
   /// averages) and its wedge settings, from the pass's method and the light's radius.
   void ChooseMethod(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
+  /// Allocates the counting textures for this viewport and `samples` samples, if they are not
+  /// so already: only when a light is drawn by counting, so averaging lights hold none.
+  void PrepareCountingBuffers(std::size_t samples);
+  /// Makes `texture` (slice `layer` of a 3D texture) the framebuffer's colour attachment 0 and
+  /// its draw buffer; the framebuffer must be bound.
+  void AttachColour(vtkTextureObject* texture, int layer);
   /// Soft shadow volumes' buffers: the centre's count (R32F) and the per-sample counters (R32UI,
   /// four 8-bit counts per texel, one slice per four samples).
   vtkNew<vtkTextureObject> CentreCount;
@@ -418,6 +424,12 @@ public:
   bool DrawSampleCounting(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window,
     const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport);
   FullScreenVAO CountingResolveVAO;
+  /// Every full-screen pass's VAO, for releasing or re-binding them together.
+  std::array<FullScreenVAO*, 4> FullScreenVAOs()
+  {
+    return { &this->ResolveVAO, &this->HorizonVAO, &this->PlateauResolveVAO,
+      &this->CountingResolveVAO };
+  }
 
   /// Draws one caster's wedge buffer (either kind) with the program bound: front or back faces
   /// as the eye and near plane allow, in wedge coordinates.
@@ -878,28 +890,6 @@ void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
     internals.LightIntensity->Allocate3D(width, height, layers, 1, VTK_FLOAT);
     internals.Layers = layers;
   }
-  std::size_t samples = 0;
-  for (const auto& light : internals.Lights)
-  {
-    samples = std::max(samples, light.CountingSamples.size());
-  }
-  const unsigned int words = static_cast<unsigned int>((samples + 3) / 4);
-  if (words > 0 &&
-    (static_cast<int>(internals.CentreCount->GetWidth()) != width ||
-      static_cast<int>(internals.CentreCount->GetHeight()) != height ||
-      internals.SampleCounters->GetDepth() != words))
-  {
-    for (vtkTextureObject* texture : { internals.CentreCount.Get(), internals.SampleCounters.Get() })
-    {
-      texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    }
-    internals.CentreCount->Allocate2D(width, height, 1, VTK_FLOAT);
-    internals.SampleCounters->SetInternalFormat(GL_R32UI);
-    internals.SampleCounters->SetFormat(GL_RED_INTEGER);
-    internals.SampleCounters->SetDataType(GL_UNSIGNED_INT);
-    internals.SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
-  }
   internals.VisibilityImages.clear();
 }
 
@@ -912,8 +902,37 @@ void vtkSoftShadowPass::BindFramebuffer(int layer)
   // the depth-stencil texture ourselves and re-add the LI layer.
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
     internals.DepthStencil->GetHandle(), 0);
-  fbo->RemoveColorAttachment(0);
-  fbo->AddColorAttachment(0, internals.LightIntensity, static_cast<unsigned int>(layer));
+  internals.AttachColour(internals.LightIntensity, layer);
+}
+
+void vtkSoftShadowPass::vtkInternals::PrepareCountingBuffers(std::size_t samples)
+{
+  const int width = this->Size[0], height = this->Size[1];
+  const unsigned int words = static_cast<unsigned int>((samples + 3) / 4);
+  if (static_cast<int>(this->CentreCount->GetWidth()) == width &&
+    static_cast<int>(this->CentreCount->GetHeight()) == height &&
+    this->SampleCounters->GetDepth() == words)
+  {
+    return;
+  }
+  for (vtkTextureObject* texture : { this->CentreCount.Get(), this->SampleCounters.Get() })
+  {
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  }
+  this->CentreCount->Allocate2D(width, height, 1, VTK_FLOAT);
+  this->SampleCounters->SetInternalFormat(GL_R32UI);
+  this->SampleCounters->SetFormat(GL_RED_INTEGER);
+  this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
+  this->SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
+}
+
+void vtkSoftShadowPass::vtkInternals::AttachColour(vtkTextureObject* texture, int layer)
+{
+  // VTK 9.1 ignores a new slice of the attached texture: remove, then add.
+  this->Framebuffer->RemoveColorAttachment(0);
+  this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
+  this->Framebuffer->ActivateDrawBuffer(0);
 }
 
 void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
@@ -1169,7 +1188,6 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
     // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
     this->BindFramebuffer(light.Layer);
-    internals.Framebuffer->ActivateDrawBuffer(0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     // Wedges and soft shadow volumes count the centre's volumes in colour (additive float).
@@ -1177,9 +1195,8 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     if (light.Is(vtkInternals::Technique::SampleCounting))
     {
       // The centre's count goes to a texture of its own, for the resolve to read.
-      internals.Framebuffer->RemoveColorAttachment(0);
-      internals.Framebuffer->AddColorAttachment(0, internals.CentreCount);
-      internals.Framebuffer->ActivateDrawBuffer(0);
+      internals.PrepareCountingBuffers(light.CountingSamples.size());
+      internals.AttachColour(internals.CentreCount, 0);
       ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
@@ -1494,6 +1511,18 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
   program->SetUniformi("counters", 0);
   program->SetUniform2f("viewportSize", viewport);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
+  // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
+  // origin for a positional light, or directions, which no origin moves.
+  std::vector<float> samples;
+  samples.reserve(4 * sampleCount);
+  for (const glm::dvec4& sample : light.CountingSamples)
+  {
+    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
+    samples.insert(samples.end(), { static_cast<float>(position.x),
+      static_cast<float>(position.y), static_cast<float>(position.z),
+      static_cast<float>(sample.w) });
+  }
+  program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
   for (penumbra::CasterCache* caster : this->Casters)
   {
     if (caster->Culled.count(light.Light))
@@ -1505,17 +1534,6 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     {
       continue;
     }
-    // Samples in this caster's wedge coordinates (relative to the light's centre, or directions).
-    std::vector<float> samples;
-    samples.reserve(4 * sampleCount);
-    for (const glm::dvec4& sample : light.CountingSamples)
-    {
-      const glm::dvec3 position = glm::dvec3(sample) - sample.w * cache.Origin;
-      samples.insert(samples.end(), { static_cast<float>(position.x),
-        static_cast<float>(position.y), static_cast<float>(position.z),
-        static_cast<float>(sample.w) });
-    }
-    program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     this->DrawWedgeBuffer(program, *caster, cache, penumbra::CountingWedgeCache::Attributes(),
       light, clipToWorld);
@@ -1539,10 +1557,7 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
     this->CountingSupport = 0;
     return false;
   }
-  this->Framebuffer->RemoveColorAttachment(0);
-  this->Framebuffer->AddColorAttachment(
-    0, this->LightIntensity, static_cast<unsigned int>(light.Layer));
-  this->Framebuffer->ActivateDrawBuffer(0);
+  this->AttachColour(this->LightIntensity, light.Layer);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -1584,8 +1599,7 @@ void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
   {
     const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
     this->FullScreenTriangle->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
-    for (FullScreenVAO* vao : { &this->ResolveVAO, &this->HorizonVAO, &this->PlateauResolveVAO,
-           &this->CountingResolveVAO })
+    for (FullScreenVAO* vao : this->FullScreenVAOs())
     {
       vao->Program = nullptr;
     }
@@ -2026,8 +2040,7 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.SampleCounters->ReleaseGraphicsResources(w);
   internals.CountingSupport = -1;
   internals.FullScreenTriangle->ReleaseGraphicsResources();
-  for (auto* vao : { &internals.ResolveVAO, &internals.HorizonVAO, &internals.PlateauResolveVAO,
-         &internals.CountingResolveVAO })
+  for (vtkInternals::FullScreenVAO* vao : internals.FullScreenVAOs())
   {
     vao->VAO->ReleaseGraphicsResources();
     vao->Program = nullptr;

@@ -120,11 +120,6 @@ bool VolumeCache::Update(const MeshCache& mesh, const glm::dvec4& lightObject, b
   this->MeshGeneration = mesh.Generation;
   this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false);
   ++this->Generation;
-  this->MaxMultiplicity = 0;
-  for (const SilhouetteEdge& edge : this->Volume.Silhouette)
-  {
-    this->MaxMultiplicity = std::max(this->MaxMultiplicity, edge.Multiplicity);
-  }
   this->HasCaps = false;
   this->Uploaded = false;
   return true;
@@ -162,6 +157,14 @@ void VolumeCache::Upload()
 
 namespace
 {
+/// What bounds one edge's wedge fragments (see AppendWedge).
+enum class WedgeShape
+{
+  Planes,      ///< a Wedge: four planes around the edge
+  Pyramid,     ///< a LightPyramid: the edge points at a positional light
+  FullViewport ///< no bound: a triangle over the viewport
+};
+
 /// Appends the wedge of edge from -> to (wedge coordinates) as 8 outward triangles. An edge with
 /// no wedge planes (its line passes through the light) gets its LightPyramid, or, where none
 /// exists, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
@@ -204,11 +207,6 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
     glm::dvec4(3, -1, 0, 2) };
   emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
   return WedgeShape::FullViewport;
-}
-
-glm::vec3 ToFloat(const glm::dvec3& v)
-{
-  return glm::vec3(v);
 }
 } // namespace
 
@@ -301,7 +299,7 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
       glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
     const glm::dvec3 to =
       glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
-    const glm::vec3 fromF = ToFloat(from), toF = ToFloat(to);
+    const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
     const float attributes[7] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z,
       static_cast<float>(edge.Multiplicity) };
     this->AppendEdge(from, to, attributes, 7);
@@ -356,8 +354,8 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   {
     const Edge& edge = topo.Edges[e];
     const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
-    const glm::vec3 fromF = ToFloat(from), toF = ToFloat(to);
-    const glm::vec3 centreNormal = ToFloat(EdgeLightNormal(from, to, light));
+    const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
+    const glm::vec3 centreNormal = glm::vec3(EdgeLightNormal(from, to, light));
     for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
     {
       float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0,
@@ -367,7 +365,7 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
         const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
         const glm::uvec3& tri = topo.Triangles[use.Triangle];
         const glm::vec3 normal =
-          ToFloat(flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]));
+          glm::vec3(flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]));
         for (int c = 0; c < 3; ++c)
         {
           attributes[6 + 3 * k + c] = normal[c];

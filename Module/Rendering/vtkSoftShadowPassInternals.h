@@ -34,14 +34,6 @@ class vtkShaderProgram;
 namespace penumbra
 {
 
-/// What bounds one edge's wedge fragments (see AppendWedge).
-enum class WedgeShape
-{
-  Planes,      ///< a Wedge: four planes around the edge
-  Pyramid,     ///< a LightPyramid: the edge points at a positional light
-  FullViewport ///< no bound: a triangle over the viewport
-};
-
 /// Topology and vertex buffer of one data object, shared by every actor that shows it.
 struct MeshCache
 {
@@ -70,8 +62,6 @@ struct VolumeCache
   bool Mirrored = false;
   std::size_t MeshGeneration = ~std::size_t(0);
   std::size_t Generation = 0; ///< bumped on every silhouette rebuild
-  /// Largest silhouette-edge multiplicity: above 1, layers of the caster share an outline.
-  std::uint32_t MaxMultiplicity = 0;
   ShadowVolume Volume;
   bool HasCaps = false;
   vtkNew<vtkOpenGLBufferObject> Indices;
