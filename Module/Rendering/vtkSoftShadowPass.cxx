@@ -431,11 +431,13 @@ public:
       &this->CountingResolveVAO };
   }
 
-  /// Draws one caster's wedge buffer (either kind) with the program bound: front or back faces
-  /// as the eye and near plane allow, in wedge coordinates.
+  /// Draws one caster's wedge buffer (either kind), if it has any, with the program bound: front
+  /// or back faces as the eye and near plane allow, in wedge coordinates. Adds its wedges and
+  /// full-viewport ones to the counts.
   void DrawWedgeBuffer(vtkShaderProgram* program, const penumbra::CasterCache& caster,
     penumbra::WedgeBuffer& buffer, const std::vector<penumbra::WedgeAttribute>& attributes,
-    const ShadowLight& light, const glm::dmat4& clipToWorld);
+    const ShadowLight& light, const glm::dmat4& clipToWorld, vtkIdType& wedges,
+    vtkIdType& fullViewport);
 
   /// Adds every caster's penumbra wedges for `light` into its LI layer; returns the count of
   /// wedges and of full-viewport ones.
@@ -1365,8 +1367,12 @@ void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
 void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   const penumbra::CasterCache& caster, penumbra::WedgeBuffer& buffer,
   const std::vector<penumbra::WedgeAttribute>& attributes, const ShadowLight& light,
-  const glm::dmat4& clipToWorld)
+  const glm::dmat4& clipToWorld, vtkIdType& wedges, vtkIdType& fullViewport)
 {
+  if (buffer.IndexCount() == 0)
+  {
+    return;
+  }
   vtkOpenGLState* ostate = this->Window->GetState();
   // A point inside a wedge lies behind its front faces and in front of its back faces. When
   // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
@@ -1389,6 +1395,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(buffer.IndexCount()), GL_UNSIGNED_INT, nullptr);
   buffer.IndexBuffer->Release();
   buffer.VAO->Release();
+  wedges += static_cast<vtkIdType>(buffer.Wedges + buffer.Fallbacks);
+  fullViewport += static_cast<vtkIdType>(buffer.FullViewport);
 }
 
 void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
@@ -1421,15 +1429,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
     {
       continue;
     }
-    penumbra::WedgeCache& cache = caster->Wedges[light.Light];
-    if (cache.IndexCount() == 0)
-    {
-      continue;
-    }
-    this->DrawWedgeBuffer(program, *caster, cache, penumbra::WedgeCache::Attributes(),
-      light, clipToWorld);
-    wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
-    fullViewport += static_cast<vtkIdType>(cache.FullViewport);
+    this->DrawWedgeBuffer(program, *caster, caster->Wedges[light.Light],
+      penumbra::WedgeCache::Attributes(), light, clipToWorld, wedges, fullViewport);
   }
   ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);
@@ -1530,15 +1531,9 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
       continue;
     }
     penumbra::CountingWedgeCache& cache = caster->CountingWedges[light.Light];
-    if (cache.IndexCount() == 0)
-    {
-      continue;
-    }
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     this->DrawWedgeBuffer(program, *caster, cache, penumbra::CountingWedgeCache::Attributes(),
-      light, clipToWorld);
-    wedges += static_cast<vtkIdType>(cache.Wedges + cache.Fallbacks);
-    fullViewport += static_cast<vtkIdType>(cache.FullViewport);
+      light, clipToWorld, wedges, fullViewport);
   }
   ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);
