@@ -1,0 +1,213 @@
+// The glyph matrices of penumbraGlyphs against VTK's own constructions: vtkGlyph3D's output for
+// orientation by direction and scaling by magnitude or components (clamped too), and vtkTransform
+// for rotation angles and quaternions. Random points, orientations and scales; every source
+// point must land within 1e-6 of VTK's (its points are float; a wrong rotation is off by 0.1).
+#include "penumbraCheck.h"
+#include "penumbraGlyphs.h"
+
+#include "vtkConeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkGlyph3D.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTransform.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace
+{
+using penumbra::GlyphSettings;
+using penumbra_test::Check;
+
+/// Largest distance between `source` moved by `matrix` and the points VTK produced.
+double WorstDistance(vtkPolyData* source, const glm::dmat4& matrix, vtkPoints* expected,
+  vtkIdType offset = 0)
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < source->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    source->GetPoint(i, p);
+    expected->GetPoint(offset + i, q);
+    const glm::dvec3 moved(matrix * glm::dvec4(p[0], p[1], p[2], 1.0));
+    worst = std::max(worst, glm::length(moved - glm::dvec3(q[0], q[1], q[2])));
+  }
+  return worst;
+}
+
+vtkSmartPointer<vtkPolyData> Cone()
+{
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(7);
+  cone->SetCenter(0.2, -0.1, 0.05); // off-centre, so translation and rotation both show
+  cone->Update();
+  return cone->GetOutput();
+}
+
+/// Direction and scale by vtkGlyph3D, one glyph per point, in each scale mode.
+void TestAgainstGlyph3D(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  vtkSmartPointer<vtkPolyData> cone = Cone();
+  struct Mode
+  {
+    const char* Name;
+    int Ours;
+    bool Clamping;
+  };
+  for (const Mode& mode : { Mode{ "magnitude", GlyphSettings::ScaleByMagnitude, false },
+         Mode{ "components", GlyphSettings::ScaleByComponents, false },
+         Mode{ "magnitude, clamped", GlyphSettings::ScaleByMagnitude, true },
+         Mode{ "no data scaling", GlyphSettings::NoDataScaling, false } })
+  {
+    vtkNew<vtkPolyData> input;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkDoubleArray> vectors;
+    vectors->SetNumberOfComponents(3);
+    vectors->SetName("v");
+    for (int i = 0; i < 40; ++i)
+    {
+      points->InsertNextPoint(u(rng), u(rng), u(rng));
+      // A few along x, both ways: VTK's special case for them.
+      if (i < 2)
+      {
+        vectors->InsertNextTuple3(i == 0 ? 1.5 : -0.7, 0.0, 0.0);
+      }
+      else
+      {
+        vectors->InsertNextTuple3(u(rng), u(rng), u(rng));
+      }
+    }
+    input->SetPoints(points);
+    input->GetPointData()->SetVectors(vectors);
+
+    GlyphSettings settings;
+    settings.ScaleMode = mode.Ours;
+    settings.ScaleFactor = 0.7;
+    settings.Clamping = mode.Clamping;
+    settings.Range[0] = 0.5;
+    settings.Range[1] = 2.0;
+    vtkNew<vtkGlyph3D> glyphs;
+    glyphs->SetInputData(input);
+    glyphs->SetSourceData(cone);
+    glyphs->SetVectorModeToUseVector();
+    glyphs->SetScaleFactor(settings.ScaleFactor);
+    glyphs->SetClamping(settings.Clamping);
+    glyphs->SetRange(settings.Range);
+    if (mode.Ours == GlyphSettings::ScaleByComponents)
+    {
+      glyphs->SetScaleModeToScaleByVectorComponents();
+    }
+    else if (mode.Ours == GlyphSettings::ScaleByMagnitude)
+    {
+      glyphs->SetScaleModeToScaleByVector();
+    }
+    else
+    {
+      glyphs->SetScaleModeToDataScalingOff();
+    }
+    glyphs->Update();
+    vtkPoints* expected = glyphs->GetOutput()->GetPoints();
+
+    double worst = 0.0;
+    bool allFinite = true;
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      double position[3], v[3];
+      points->GetPoint(i, position);
+      vectors->GetTuple(i, v);
+      const glm::dvec3 scale = penumbra::GlyphScale(settings, v, 3);
+      glm::dmat4 matrix;
+      allFinite &= penumbra::GlyphMatrix(settings, glm::make_vec3(position), v, scale, matrix);
+      worst = std::max(
+        worst, WorstDistance(cone, matrix, expected, i * cone->GetNumberOfPoints()));
+    }
+    std::printf("     direction, scale by %s: worst distance %.2e\n", mode.Name, worst);
+    Check(allFinite, "finite directions give matrices");
+    Check(worst < 1e-6, std::string("direction, scale by ") + mode.Name + ": as vtkGlyph3D");
+  }
+}
+
+/// Rotation angles (z, then x, then y) and quaternions against vtkTransform.
+void TestAgainstTransform(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  vtkSmartPointer<vtkPolyData> cone = Cone();
+  double worstRotation = 0.0, worstQuaternion = 0.0;
+  for (int i = 0; i < 50; ++i)
+  {
+    const glm::dvec3 position(u(rng), u(rng), u(rng));
+    const glm::dvec3 scale(0.5 + std::abs(u(rng)));
+    GlyphSettings settings;
+
+    const double angles[3] = { 180.0 * u(rng), 180.0 * u(rng), 180.0 * u(rng) };
+    settings.OrientationMode = GlyphSettings::Rotation;
+    glm::dmat4 matrix;
+    penumbra::GlyphMatrix(settings, position, angles, scale, matrix);
+    vtkNew<vtkTransform> rotation;
+    rotation->Translate(position.x, position.y, position.z);
+    rotation->RotateZ(angles[2]);
+    rotation->RotateX(angles[0]);
+    rotation->RotateY(angles[1]);
+    rotation->Scale(scale.x, scale.y, scale.z);
+    vtkNew<vtkPoints> rotated;
+    rotation->TransformPoints(cone->GetPoints(), rotated);
+    worstRotation = std::max(worstRotation, WorstDistance(cone, matrix, rotated));
+
+    // A quaternion that is not of unit length: VTK normalizes it.
+    const double q[4] = { u(rng), u(rng), u(rng), u(rng) };
+    settings.OrientationMode = GlyphSettings::Quaternion;
+    penumbra::GlyphMatrix(settings, position, q, scale, matrix);
+    const double axis = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    vtkNew<vtkTransform> turn;
+    turn->Translate(position.x, position.y, position.z);
+    turn->RotateWXYZ(2.0 * std::atan2(axis, q[0]) * 180.0 / 3.14159265358979323846, q[1], q[2], q[3]);
+    turn->Scale(scale.x, scale.y, scale.z);
+    vtkNew<vtkPoints> turned;
+    turn->TransformPoints(cone->GetPoints(), turned);
+    worstQuaternion = std::max(worstQuaternion, WorstDistance(cone, matrix, turned));
+  }
+  std::printf("     rotation angles: worst %.2e; quaternions: worst %.2e\n", worstRotation,
+    worstQuaternion);
+  Check(worstRotation < 1e-6, "rotation angles as vtkTransform's RotateZ, RotateX, RotateY");
+  Check(worstQuaternion < 1e-6, "quaternions as vtkTransform's RotateWXYZ");
+}
+
+void TestBadInput()
+{
+  GlyphSettings settings;
+  glm::dmat4 matrix(2.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double direction[3] = { nan, 0.0, 0.0 };
+  Check(!penumbra::GlyphMatrix(settings, glm::dvec3(0.0), direction, glm::dvec3(1.0), matrix),
+    "a NaN direction gives no matrix");
+  settings.OrientationMode = GlyphSettings::Quaternion;
+  const double infinite[4] = { 1.0, std::numeric_limits<double>::infinity(), 0.0, 0.0 };
+  Check(!penumbra::GlyphMatrix(settings, glm::dvec3(0.0), infinite, glm::dvec3(1.0), matrix),
+    "an infinite quaternion gives no matrix");
+  const double zero[4] = { 0.0, 0.0, 0.0, 0.0 };
+  Check(penumbra::GlyphMatrix(settings, glm::dvec3(1.0), zero, glm::dvec3(1.0), matrix) &&
+      matrix == glm::translate(glm::dmat4(1.0), glm::dvec3(1.0)),
+    "a zero quaternion leaves the glyph unrotated");
+  const double none[1] = { 0.0 };
+  Check(penumbra::GlyphScale(settings, none, 1) == glm::dvec3(1e-10),
+    "a zero scale becomes 1e-10, as in VTK");
+}
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(7);
+  TestAgainstGlyph3D(rng);
+  TestAgainstTransform(rng);
+  TestBadInput();
+  return penumbra_test::Finish();
+}
