@@ -4,25 +4,40 @@
 #include "vtkSoftShadowPass.h"
 
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
+#include "vtkAppendPolyData.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkBitArray.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkGlyph3D.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiPieceDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPropCollection.h"
 #include "vtkProperty.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
@@ -420,6 +435,261 @@ void CollectDataSet(
   meshes.push_back(std::move(mesh));
 }
 
+/// The input points a vtkGlyph3DMapper draws a glyph at: not hidden by its mask, and with a
+/// finite orientation (VTK's matrix of a NaN orientation draws nothing).
+vtkSmartPointer<vtkDataSet> DrawnGlyphPoints(
+  vtkGlyph3DMapper* mapper, vtkDataSet* points, vtkDataArray* orientation)
+{
+  const char* maskName = nullptr;
+  if (vtkInformation* info = mapper->GetInputArrayInformation(vtkGlyph3DMapper::MASK))
+  {
+    maskName = info->Get(vtkDataObject::FIELD_NAME());
+  }
+  auto mask = mapper->GetMasking() && maskName
+    ? vtkBitArray::SafeDownCast(points->GetPointData()->GetAbstractArray(maskName))
+    : nullptr;
+  auto drawn = [&](vtkIdType id) {
+    if (mask && mask->GetValue(id) == 0)
+    {
+      return false;
+    }
+    for (int c = 0; orientation && c < orientation->GetNumberOfComponents(); ++c)
+    {
+      if (!std::isfinite(orientation->GetComponent(id, c)))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  auto kept = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> positions;
+  kept->GetPointData()->CopyAllocate(points->GetPointData());
+  for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id)
+  {
+    if (drawn(id))
+    {
+      kept->GetPointData()->CopyData(
+        points->GetPointData(), id, positions->InsertNextPoint(points->GetPoint(id)));
+    }
+  }
+  kept->SetPoints(positions);
+  return kept;
+}
+
+/// The glyphs VTK draws for one dataset of a vtkGlyph3DMapper's input, as a vtkGlyph3D filter
+/// (orientation by direction, or none) or a vtkTransform per glyph (rotation angles,
+/// quaternions) builds them.
+vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* input)
+{
+  auto arrayName = [mapper](int index) -> const char* {
+    vtkInformation* info = mapper->GetInputArrayInformation(index);
+    return info && info->Has(vtkDataObject::FIELD_NAME()) ? info->Get(vtkDataObject::FIELD_NAME())
+                                                           : nullptr;
+  };
+  vtkPointData* data = input->GetPointData();
+  const char* scaleName = arrayName(vtkGlyph3DMapper::SCALE);
+  vtkDataArray* scale = mapper->GetScaling() && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING
+    ? (scaleName ? data->GetArray(scaleName) : data->GetScalars())
+    : nullptr;
+  const char* orientationName = arrayName(vtkGlyph3DMapper::ORIENTATION);
+  vtkDataArray* orientation = mapper->GetOrient()
+    ? (orientationName ? data->GetArray(orientationName) : data->GetVectors())
+    : nullptr;
+  const char* indexName = arrayName(vtkGlyph3DMapper::SOURCE_INDEX);
+  vtkDataArray* index = mapper->GetSourceIndexing()
+    ? (indexName ? data->GetArray(indexName) : data->GetScalars())
+    : nullptr;
+  const int sources = mapper->GetNumberOfInputConnections(1);
+  vtkSmartPointer<vtkDataSet> points = DrawnGlyphPoints(mapper, input, orientation);
+  // The arrays again, on the points kept.
+  auto same = [&points](vtkDataArray* array) {
+    return array ? points->GetPointData()->GetArray(array->GetName()) : nullptr;
+  };
+  scale = same(scale);
+  orientation = same(orientation);
+  index = same(index);
+
+  if (!orientation || mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION)
+  {
+    vtkNew<vtkGlyph3D> glyphs;
+    glyphs->SetInputData(points);
+    for (int i = 0; i < sources; ++i)
+    {
+      glyphs->SetSourceData(i, mapper->GetSource(i));
+    }
+    glyphs->SetScaling(scale != nullptr || mapper->GetScaling());
+    glyphs->SetScaleFactor(mapper->GetScaleFactor());
+    glyphs->SetClamping(mapper->GetClamping());
+    glyphs->SetRange(mapper->GetRange());
+    glyphs->SetOrient(orientation != nullptr);
+    glyphs->SetVectorModeToUseVector();
+    if (!scale)
+    {
+      glyphs->SetScaleModeToDataScalingOff();
+    }
+    else if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS)
+    {
+      glyphs->SetScaleModeToScaleByVectorComponents();
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+    }
+    else if (scale->GetNumberOfComponents() == 1)
+    {
+      glyphs->SetScaleModeToScaleByScalar();
+      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+    }
+    else
+    {
+      glyphs->SetScaleModeToScaleByVector();
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+    }
+    if (orientation)
+    {
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, orientation->GetName());
+    }
+    if (index && sources > 1)
+    {
+      // The mapper takes the index as the value itself; vtkGlyph3D maps Range onto the sources.
+      glyphs->SetIndexModeToScalar();
+      glyphs->SetRange(0.0, sources);
+      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, index->GetName());
+    }
+    glyphs->Update();
+    return glyphs->GetOutput();
+  }
+
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id)
+  {
+    double scaleBy = mapper->GetScaleFactor();
+    if (scale)
+    {
+      scaleBy *= vtkMath::Norm(scale->GetTuple(id), scale->GetNumberOfComponents());
+    }
+    const double* o = orientation->GetTuple(id);
+    vtkNew<vtkTransform> transform;
+    transform->Translate(points->GetPoint(id));
+    if (mapper->GetOrientationMode() == vtkGlyph3DMapper::ROTATION)
+    {
+      transform->RotateZ(o[2]);
+      transform->RotateX(o[0]);
+      transform->RotateY(o[1]);
+    }
+    else
+    {
+      const double length = vtkMath::Norm(o + 1);
+      transform->RotateWXYZ(vtkMath::DegreesFromRadians(2.0 * std::atan2(length, o[0])), o[1], o[2], o[3]);
+    }
+    if (mapper->GetScaling())
+    {
+      transform->Scale(scaleBy, scaleBy, scaleBy);
+    }
+    int source = 0;
+    if (index)
+    {
+      source = static_cast<int>(vtkMath::Norm(index->GetTuple(id), index->GetNumberOfComponents()));
+      source = std::min(std::max(source, 0), sources - 1);
+    }
+    vtkNew<vtkTransformPolyDataFilter> moved;
+    moved->SetInputData(mapper->GetSource(source));
+    moved->SetTransform(transform);
+    moved->Update();
+    append->AddInputData(moved->GetOutput());
+  }
+  append->Update();
+  return append->GetOutput();
+}
+
+/// The leaves of `node` that are drawn opaque: a block's visibility and opacity hold for the
+/// blocks under it that set none of their own.
+void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes,
+  bool visible, double opacity, std::vector<vtkDataObject*>& leaves)
+{
+  if (!node)
+  {
+    return;
+  }
+  if (attributes && attributes->HasBlockVisibility(node))
+  {
+    visible = attributes->GetBlockVisibility(node);
+  }
+  if (attributes && attributes->HasBlockOpacity(node))
+  {
+    opacity = attributes->GetBlockOpacity(node);
+  }
+  if (auto blocks = vtkMultiBlockDataSet::SafeDownCast(node))
+  {
+    for (unsigned int i = 0; i < blocks->GetNumberOfBlocks(); ++i)
+    {
+      VisibleLeaves(blocks->GetBlock(i), attributes, visible, opacity, leaves);
+    }
+  }
+  else if (auto pieces = vtkMultiPieceDataSet::SafeDownCast(node))
+  {
+    for (unsigned int i = 0; i < pieces->GetNumberOfPieces(); ++i)
+    {
+      VisibleLeaves(pieces->GetPiece(i), attributes, visible, opacity, leaves);
+    }
+  }
+  else if (auto composite = vtkCompositeDataSet::SafeDownCast(node))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      VisibleLeaves(it->GetCurrentDataObject(), attributes, visible, opacity, leaves);
+    }
+  }
+  else if (visible && opacity >= 1.0)
+  {
+    leaves.push_back(node);
+  }
+}
+
+/// Appends what VTK draws opaque of one leaf prop (an actor, or an assembly's part at the
+/// path's composed matrix) to `meshes`.
+void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  if (!actor->GetVisibility() || !mapper || actor->GetProperty()->GetOpacity() < 1.0)
+  {
+    return;
+  }
+  mapper->Update();
+  double matrix[16];
+  vtkMatrix4x4::DeepCopy(matrix, pathMatrix ? pathMatrix : actor->GetMatrix());
+  auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
+  std::vector<vtkDataObject*> leaves;
+  VisibleLeaves(mapper->GetInputDataObject(0, 0),
+    blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, 1.0, leaves);
+  for (vtkDataObject* leaf : leaves)
+  {
+    if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+    {
+      if (auto points = vtkDataSet::SafeDownCast(leaf))
+      {
+        CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, meshes);
+      }
+      continue;
+    }
+    CollectDataSet(leaf, matrix, casts, meshes);
+  }
+}
+
+/// Appends every leaf of a top-level prop: itself, or each part of an assembly.
+void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
+{
+  const bool casts = vtkSoftShadowPass::GetCastsShadows(prop);
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkAssemblyNode* node = path->GetLastNode();
+    if (auto actor = vtkActor::SafeDownCast(node ? node->GetViewProp() : nullptr))
+    {
+      CollectLeaf(actor, node->GetMatrix(), casts, meshes);
+    }
+  }
+}
+
 } // namespace
 
 bool vtkRayTracedVisibility::Update()
@@ -464,34 +734,17 @@ bool vtkRayTracedVisibility::Update()
   double progress = 0.0;
   this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
 
-  // Geometry: every visible opaque actor, in world space.
+  // Geometry: every visible opaque surface, in world space, found through VTK's own filters
+  // (CollectProp), not through the pass's walk of the scene.
   internals.Meshes.clear();
-  vtkActorCollection* actors = renderer->GetActors();
-  vtkCollectionSimpleIterator actorIt;
-  actors->InitTraversal(actorIt);
-  while (vtkActor* actor = actors->GetNextActor(actorIt))
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator propIt;
+  vtkProp* prop;
+  for (props->InitTraversal(propIt); (prop = props->GetNextProp(propIt));)
   {
-    vtkMapper* mapper = actor->GetMapper();
-    if (!actor->GetVisibility() || !mapper || actor->GetProperty()->GetOpacity() < 1.0)
+    if (prop->GetVisibility())
     {
-      continue;
-    }
-    mapper->Update();
-    double matrix[16];
-    vtkMatrix4x4::DeepCopy(matrix, actor->GetMatrix());
-    const bool casts = vtkSoftShadowPass::GetCastsShadows(actor);
-    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-    if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
-    {
-      auto it = vtk::TakeSmartPointer(composite->NewIterator());
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      {
-        CollectDataSet(it->GetCurrentDataObject(), matrix, casts, internals.Meshes);
-      }
-    }
-    else
-    {
-      CollectDataSet(input, matrix, casts, internals.Meshes);
+      CollectProp(prop, internals.Meshes);
     }
   }
 
