@@ -2,6 +2,8 @@
 
 #include "vtkSoftShadowPassInternals.h"
 
+#include "penumbraSceneWalk.h"
+
 #include "vtkActor.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -281,6 +283,7 @@ public:
   static constexpr int CentreVolume = -1;
 
   penumbra::ShadowCaches Caches;
+  penumbra::SceneWalk SceneWalk;
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
@@ -841,13 +844,14 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
   internals.Receivers.clear();
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
+    // Any prop with opaque surfaces: an assembly hands its keys to its parts as VTK draws them,
+    // composite and glyph mappers draw with their actor's. SetShaderParameters leaves
+    // translucent fragments unshadowed: they lie over the LI buffer of what is behind them.
     vtkProp* prop = s->GetPropArray()[i];
-    auto actor = vtkActor::SafeDownCast(prop);
-    // Translucent surfaces are drawn over the LI buffer of what lies behind them: never shadow them.
-    if (actor && GetReceivesShadows(actor) && !actor->HasTranslucentPolygonalGeometry())
+    if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry())
     {
-      AddRenderPassKey(actor, this);
-      internals.Receivers.push_back(actor);
+      AddRenderPassKey(prop, this);
+      internals.Receivers.push_back(prop);
     }
   }
 }
@@ -972,35 +976,19 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   internals.Caches.BeginFrame();
   internals.Casters.clear();
-  // Casters come from every visible prop, not the render state's list: the frustum culler drops
-  // props outside the view whose shadows still fall inside it.
-  vtkPropCollection* props = s->GetRenderer()->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  vtkProp* prop;
-  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  for (const penumbra::DrawnSurface& surface :
+    internals.SceneWalk.Casters(s->GetRenderer(), this))
   {
-    auto actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !GetCastsShadows(actor) || !actor->HasOpaqueGeometry() ||
-      !actor->GetMapper())
-    {
-      continue;
-    }
-    vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0);
-    if (!data)
-    {
-      continue;
-    }
-    penumbra::MeshCache* mesh = internals.Caches.FindMesh(data, this);
+    penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, this);
     if (mesh->Topology.Empty())
     {
       continue;
     }
-    penumbra::CasterCache* caster = internals.Caches.FindCaster(actor);
+    penumbra::CasterCache* caster = internals.Caches.FindCaster(surface.Actor, surface.Part);
     caster->Mesh = mesh;
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
-    caster->ObjectToWorld =
-      ToGlm(actor->GetMatrix()) * glm::translate(glm::dmat4(1.0), topo.Origin);
+    caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);
     caster->WorldMin = glm::dvec3(std::numeric_limits<double>::max());
     caster->WorldMax = -caster->WorldMin;
     for (int corner = 0; corner < 8; ++corner)
@@ -1993,7 +1981,8 @@ bool vtkSoftShadowPass::SetShaderParameters(
   {
     return true;
   }
-  const bool apply = internals.ApplyShadows && GetReceivesShadows(prop);
+  const bool apply = internals.ApplyShadows && GetReceivesShadows(prop) &&
+    !prop->IsRenderingTranslucentPolygonalGeometry();
   program->SetUniformi("penumbraApply", apply ? 1 : 0);
   program->SetUniformi("penumbraLI", internals.LightIntensity->GetTextureUnit());
   program->SetUniform2i("penumbraOrigin", internals.Origin);

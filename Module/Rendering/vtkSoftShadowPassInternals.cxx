@@ -390,9 +390,9 @@ MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner)
   return mesh.get();
 }
 
-CasterCache* ShadowCaches::FindCaster(vtkActor* actor)
+CasterCache* ShadowCaches::FindCaster(vtkActor* actor, std::size_t part)
 {
-  std::unique_ptr<CasterCache>& caster = this->Casters[actor];
+  std::unique_ptr<CasterCache>& caster = this->Casters[{ actor, part }];
   if (!caster || caster->Actor != actor)
   {
     caster.reset(new CasterCache);

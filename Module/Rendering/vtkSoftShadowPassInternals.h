@@ -168,7 +168,7 @@ struct CountingWedgeCache : WedgeBuffer
   void BuildVertices(const MeshCache& mesh);
 };
 
-/// An actor that casts shadows this frame.
+/// A surface that casts shadows this frame: an actor's, or one of its blocks or glyphs.
 struct CasterCache
 {
   vtkWeakPointer<vtkActor> Actor;
@@ -188,11 +188,12 @@ struct CasterCache
 struct ShadowCaches
 {
   std::map<vtkDataObject*, std::unique_ptr<MeshCache>> Meshes;
-  std::map<vtkActor*, std::unique_ptr<CasterCache>> Casters;
+  /// Keyed by actor and part (penumbra::DrawnSurface): a block or glyph of it.
+  std::map<std::pair<vtkActor*, std::size_t>, std::unique_ptr<CasterCache>> Casters;
 
   /// Finds or creates the mesh of `data` and brings it up to date.
   MeshCache* FindMesh(vtkDataObject* data, vtkObject* owner);
-  CasterCache* FindCaster(vtkActor* actor);
+  CasterCache* FindCaster(vtkActor* actor, std::size_t part);
   /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
   void BeginFrame();
   void PurgeUnused();

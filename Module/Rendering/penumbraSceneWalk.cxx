@@ -1,0 +1,307 @@
+#include "penumbraSceneWalk.h"
+
+#include "penumbraGlyphs.h"
+#include "vtkSoftShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkBitArray.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeRange.h"
+#include "vtkDataSet.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageSlice.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace penumbra
+{
+namespace
+{
+/// vtkMatrix4x4 is row-major; glm is column-major.
+glm::dmat4 FromRowMajor(const double* elements)
+{
+  return glm::transpose(glm::make_mat4(elements));
+}
+
+/// Reads the arrays vtkGlyph3DMapper itself reads (its protected Get*Array), through pointers
+/// to its members, so that array selection, Orient, SourceIndexing and Masking act as in VTK.
+struct GlyphArrays : vtkGlyph3DMapper
+{
+  using Getter = vtkDataArray* (vtkGlyph3DMapper::*)(vtkDataSet*);
+  static constexpr Getter Scale = &GlyphArrays::GetScaleArray;
+  static constexpr Getter Orientation = &GlyphArrays::GetOrientationArray;
+  static constexpr Getter SourceIndex = &GlyphArrays::GetSourceIndexArray;
+  static constexpr Getter Mask = &GlyphArrays::GetMaskArray;
+};
+
+/// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader): there
+/// are no triangles to cast from.
+bool DrawsImposters(vtkMapper* mapper)
+{
+  return mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper") ||
+    mapper->IsA("vtkPointGaussianMapper");
+}
+} // namespace
+
+std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)
+{
+  std::vector<DrawnSurface> surfaces;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  {
+    if (!prop->GetVisibility() || !vtkSoftShadowPass::GetCastsShadows(prop))
+    {
+      continue;
+    }
+    prop->InitPathTraversal();
+    while (vtkAssemblyPath* path = prop->GetNextPath())
+    {
+      vtkAssemblyNode* node = path->GetLastNode();
+      vtkMatrix4x4* matrix = node ? node->GetMatrix() : nullptr;
+      if (node && node->GetViewProp())
+      {
+        this->Leaf(node->GetViewProp(), matrix ? matrix->GetData() : nullptr, owner, surfaces);
+      }
+    }
+  }
+  return surfaces;
+}
+
+void SceneWalk::Leaf(
+  vtkProp* leaf, const double* pathMatrix, vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  if (!leaf->GetVisibility())
+  {
+    return;
+  }
+  auto actor = vtkActor::SafeDownCast(leaf);
+  if (!actor)
+  {
+    if (vtkVolume::SafeDownCast(leaf))
+    {
+      this->Warn(owner, leaf, "is drawn but casts no shadow: volumes do not cast");
+    }
+    else if (vtkImageSlice::SafeDownCast(leaf))
+    {
+      this->Warn(owner, leaf, "is drawn but casts no shadow: image slices do not cast");
+    }
+    return; // 2D props and the like: overlays, nothing to cast
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper || !actor->HasOpaqueGeometry())
+  {
+    return;
+  }
+  // A path's last matrix is the composed one; a plain actor's path carries none.
+  const glm::dmat4 matrix =
+    FromRowMajor(pathMatrix ? pathMatrix : actor->GetMatrix()->GetData());
+  if (DrawsImposters(mapper))
+  {
+    this->Warn(owner, leaf,
+      std::string("is drawn by ") + mapper->GetClassName() +
+        ", whose imposters have no triangles: it casts no shadow");
+    return;
+  }
+  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    this->Glyphs(actor, glyphs, matrix, owner, surfaces);
+    return;
+  }
+  vtkDataObject* data = mapper->GetInputDataObject(0, 0);
+  if (!data)
+  {
+    return;
+  }
+  std::size_t part = 0;
+  this->Blocks(actor, data, matrix, true, 1.0, part, surfaces);
+}
+
+void SceneWalk::Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix,
+  bool visible, double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
+{
+  // Block attributes apply to a node and everything under it unless a child sets its own,
+  // as vtkCompositePolyDataMapper2 applies them.
+  auto composite = vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper());
+  vtkCompositeDataDisplayAttributes* attributes =
+    composite ? composite->GetCompositeDataDisplayAttributes() : nullptr;
+  if (attributes && attributes->HasBlockVisibility(node))
+  {
+    visible = attributes->GetBlockVisibility(node);
+  }
+  if (attributes && attributes->HasBlockOpacity(node))
+  {
+    opacity = attributes->GetBlockOpacity(node);
+  }
+  if (auto tree = vtkDataObjectTree::SafeDownCast(node))
+  {
+    for (vtkDataObject* child : vtk::Range(tree, vtk::DataObjectTreeOptions::None))
+    {
+      if (child)
+      {
+        this->Blocks(actor, child, matrix, visible, opacity, part, surfaces);
+      }
+      else
+      {
+        ++part; // an empty block keeps the numbering of the others
+      }
+    }
+    return;
+  }
+  const std::size_t index = part++;
+  if (!visible || opacity * actor->GetProperty()->GetOpacity() < 1.0)
+  {
+    return;
+  }
+  surfaces.push_back({ actor, node, matrix, index });
+}
+
+void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  std::vector<vtkDataObject*> sources;
+  if (mapper->GetUseSourceTableTree())
+  {
+    if (vtkDataObjectTree* table = mapper->GetSourceTableTree())
+    {
+      for (vtkDataObject* source : vtk::Range(table, vtk::DataObjectTreeOptions::None))
+      {
+        sources.push_back(vtkPolyData::SafeDownCast(source));
+      }
+    }
+  }
+  else
+  {
+    for (int i = 0; i < mapper->GetNumberOfInputConnections(1); ++i)
+    {
+      sources.push_back(mapper->GetSource(i));
+    }
+  }
+  // Without a source VTK draws its default glyph, a line: like any glyph without surface
+  // cells it casts nothing, and says so once here rather than once per glyph.
+  if (sources.empty())
+  {
+    sources.push_back(nullptr);
+  }
+  for (vtkDataObject*& source : sources)
+  {
+    auto poly = vtkPolyData::SafeDownCast(source);
+    if (!poly || poly->GetNumberOfPolys() + poly->GetNumberOfStrips() == 0)
+    {
+      this->Warn(owner, actor,
+        "has a vtkGlyph3DMapper glyph source that is missing or has no surface cells (VTK's "
+        "default glyph is a line): those glyphs cast no shadow");
+      source = nullptr;
+    }
+  }
+  if (std::none_of(sources.begin(), sources.end(), [](vtkDataObject* s) { return s; }))
+  {
+    return;
+  }
+
+  GlyphSettings settings;
+  settings.Scaling = mapper->GetScaling();
+  settings.ScaleMode = mapper->GetScaleMode();
+  settings.ScaleFactor = mapper->GetScaleFactor();
+  settings.Clamping = mapper->GetClamping();
+  mapper->GetRange(settings.Range);
+  settings.OrientationMode = mapper->GetOrientationMode();
+
+  std::vector<vtkDataSet*> inputs;
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      inputs.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+    }
+  }
+  else
+  {
+    inputs.push_back(vtkDataSet::SafeDownCast(input));
+  }
+
+  std::size_t part = 0;
+  bool nonFinite = false;
+  for (vtkDataSet* points : inputs)
+  {
+    if (!points)
+    {
+      continue;
+    }
+    vtkDataArray* scale = (mapper->*GlyphArrays::Scale)(points);
+    vtkDataArray* orientation = (mapper->*GlyphArrays::Orientation)(points);
+    vtkDataArray* sourceIndex = (mapper->*GlyphArrays::SourceIndex)(points);
+    auto mask = vtkBitArray::SafeDownCast((mapper->*GlyphArrays::Mask)(points));
+    const int orientationComponents =
+      settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
+    if (orientation && orientation->GetNumberOfComponents() != orientationComponents)
+    {
+      return; // VTK reports it and draws nothing
+    }
+    for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id, ++part)
+    {
+      if (mask && mask->GetValue(id) == 0)
+      {
+        continue;
+      }
+      std::size_t entry = 0;
+      if (sourceIndex)
+      {
+        const double value = glm::length(glm::dvec3(sourceIndex->GetComponent(id, 0),
+          sourceIndex->GetNumberOfComponents() > 1 ? sourceIndex->GetComponent(id, 1) : 0.0,
+          sourceIndex->GetNumberOfComponents() > 2 ? sourceIndex->GetComponent(id, 2) : 0.0));
+        entry = static_cast<std::size_t>(
+          std::min(std::max(static_cast<int>(value), 0), static_cast<int>(sources.size()) - 1));
+      }
+      if (!sources[entry])
+      {
+        continue;
+      }
+      double position[3];
+      points->GetPoint(id, position);
+      const glm::dvec3 size = GlyphScale(settings, scale ? scale->GetTuple(id) : nullptr,
+        scale ? scale->GetNumberOfComponents() : 0);
+      glm::dmat4 glyph;
+      if (!GlyphMatrix(settings, glm::dvec3(position[0], position[1], position[2]),
+            orientation ? orientation->GetTuple(id) : nullptr, size, glyph))
+      {
+        nonFinite = true;
+        continue;
+      }
+      surfaces.push_back({ actor, sources[entry], matrix * glyph, part });
+    }
+  }
+  if (nonFinite)
+  {
+    this->Warn(owner, actor,
+      "has glyphs whose orientation is not finite: those glyphs cast no shadow");
+  }
+}
+
+void SceneWalk::Warn(vtkObject* owner, vtkProp* prop, const std::string& reason)
+{
+  if (this->Warned.insert({ prop, reason }).second)
+  {
+    vtkWarningWithObjectMacro(owner, << prop->GetClassName() << " (" << prop << ") " << reason << ".");
+  }
+}
+
+} // namespace penumbra

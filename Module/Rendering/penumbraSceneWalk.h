@@ -1,0 +1,72 @@
+/**
+ * @file   penumbraSceneWalk.h
+ * @brief  What a renderer draws opaque, as surfaces in world space: the casters of
+ *         vtkSoftShadowPass.
+ *
+ * VTK draws far more than top-level actors with a polydata mapper: assembly paths with their
+ * composed matrices, the leaves of composite data with their block visibility and opacity, the
+ * instances of a vtkGlyph3DMapper. The walk follows what VTK draws, not what a mapper's input
+ * holds: a glyph mapper's input points (a seed plane, an image's bounding box) are never drawn and
+ * never cast. What VTK draws but no shadow volume can be built from (imposter mappers, volumes,
+ * image slices) gets one warning per prop and reason.
+ *
+ * The ray tracer (vtkRayTracedVisibility) walks the scene its own way, through VTK's filters,
+ * so that a mistake here shows against it.
+ */
+#ifndef penumbraSceneWalk_h
+#define penumbraSceneWalk_h
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkActor;
+class vtkDataObject;
+class vtkGlyph3DMapper;
+class vtkObject;
+class vtkProp;
+class vtkRenderer;
+
+namespace penumbra
+{
+
+/// One surface VTK draws opaque.
+struct DrawnSurface
+{
+  vtkActor* Actor = nullptr;     ///< the actor whose mapper draws it (an assembly's part, say)
+  vtkDataObject* Data = nullptr; ///< a dataset: the mapper's input, a block, a glyph's source
+  glm::dmat4 ObjectToWorld{ 1.0 };
+  /// Which block or glyph of Actor it is; with Actor, the surface's identity between frames.
+  std::size_t Part = 0;
+};
+
+/// Finds the surfaces a renderer draws opaque, and warns once about what cannot cast.
+class SceneWalk
+{
+public:
+  /// The opaque surfaces of every visible prop of `renderer` (its view props, not the frustum
+  /// culler's list: a prop outside the view may shadow inside it) that casts shadows
+  /// (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives an assembly's
+  /// parts the assembly's property keys). Warnings go through `owner`.
+  std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
+
+private:
+  void Leaf(vtkProp* leaf, const double* pathMatrix, vtkObject* owner,
+    std::vector<DrawnSurface>& surfaces);
+  void Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix, bool visible,
+    double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces);
+  void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
+    vtkObject* owner, std::vector<DrawnSurface>& surfaces);
+  /// Warns once per prop and reason.
+  void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
+
+  std::set<std::pair<vtkProp*, std::string>> Warned;
+};
+
+} // namespace penumbra
+
+#endif

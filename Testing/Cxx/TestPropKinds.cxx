@@ -1,0 +1,451 @@
+// Every kind of prop VTK draws casts and receives as VTK draws it: glyph mappers (direction and
+// rotation orientation, source indexing, masking), composite data (block visibility and opacity,
+// nested and empty blocks) and assemblies (composed matrices, parts that receive).
+//
+// Each scene is rendered twice with hard shadows at a non-square 400 x 250: once with the prop
+// kind and once built from plain actors the way VTK's own filters build it (vtkGlyph3D, one
+// actor per block, the assembly's matrices as user matrices). Tolerances: at most 0.2% of the
+// pixels differ in visibility by more than 0.5 and at most 0.5% in colour by more than 8 of 255
+// (rasterization of the same triangles drawn by different mappers); against the ray-traced truth,
+// CheckAgainstTruth's 0.2%. Then what cannot cast: one warning per prop and reason, and the rest of
+// the scene still shadows.
+#include "penumbraTestHarness.h"
+
+#include "vtkAssembly.h"
+#include "vtkBitArray.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkConeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkGlyph3D.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkLight.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkOpenGLSphereMapper.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace penumbra_test;
+
+namespace
+{
+constexpr int Width = 400, Height = 250;
+
+/// A window with a ground-lighting scene light, a camera and the pass (hard shadows).
+struct View
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
+  vtkNew<vtkSoftShadowPass> Pass;
+
+  View()
+  {
+    this->Renderer->SetBackground(0.2, 0.2, 0.25);
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPositional(true);
+    this->Light->SetConeAngle(180);
+    this->Light->SetPosition(-2.0, 6.0, 3.0);
+    this->Light->SetFocalPoint(0, 0, 0);
+    this->Renderer->AddLight(this->Light);
+    this->Window->SetSize(Width, Height);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Pass->SetMethodToHardVolumes();
+    this->Renderer->SetPass(this->Pass);
+  }
+
+  void Render()
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(3.0, 5.0, 8.0);
+    camera->SetFocalPoint(0.0, 0.5, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    this->Renderer->ResetCameraClippingRange(-4, 4, -1, 4, -4, 4);
+    this->Window->Render();
+  }
+
+  std::vector<float> Visibility()
+  {
+    auto values =
+      vtkFloatArray::SafeDownCast(this->Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+    return std::vector<float>(
+      values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  }
+
+  std::vector<unsigned char> Colours()
+  {
+    vtkNew<vtkUnsignedCharArray> pixels;
+    this->Window->GetPixelData(0, 0, Width - 1, Height - 1, 0, pixels);
+    return std::vector<unsigned char>(
+      pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+  }
+};
+
+vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)
+{
+  auto ground = MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8);
+  renderer->AddActor(ground);
+  return ground;
+}
+
+/// Renders `kind` and `plain` alike and checks that they agree, and `kind` with the truth.
+void CompareScenes(const std::string& name, const std::function<void(vtkRenderer*)>& kind,
+  const std::function<void(vtkRenderer*)>& plain)
+{
+  View a, b;
+  kind(a.Renderer);
+  plain(b.Renderer);
+  a.Render();
+  b.Render();
+  const std::vector<float> va = a.Visibility(), vb = b.Visibility();
+  const std::vector<unsigned char> ca = a.Colours(), cb = b.Colours();
+  int visibilityOff = 0, colourOff = 0, shadowed = 0;
+  for (std::size_t i = 0; i < va.size(); ++i)
+  {
+    visibilityOff += std::abs(va[i] - vb[i]) > 0.5f;
+    shadowed += vb[i] < 0.5f;
+  }
+  for (std::size_t i = 0; i < ca.size(); i += 3)
+  {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(int(ca[i + c]) - int(cb[i + c])));
+    }
+    colourOff += worst > 8;
+  }
+  const double pixels = double(Width) * Height;
+  std::printf("%-40s shadowed %6d px; visibility differs on %.3f%%, colour on %.3f%%\n",
+    name.c_str(), shadowed, 100.0 * visibilityOff / pixels, 100.0 * colourOff / pixels);
+  Check(shadowed > pixels / 50, name + ": the plain scene has shadow in view");
+  Check(visibilityOff <= 0.002 * pixels, name + ": shadows as its plain-actor scene's");
+  Check(colourOff <= 0.005 * pixels, name + ": colours as its plain-actor scene's");
+  CheckAgainstTruth(name, CompareWithTruth(a.Window, a.Renderer, a.Pass, 0));
+}
+
+//------------------------------------------------------------------------------
+/// Twelve points above the ground, with a size and a direction each.
+vtkSmartPointer<vtkPolyData> GlyphPoints()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> size, direction, angles, index;
+  size->SetName("size");
+  direction->SetName("direction");
+  direction->SetNumberOfComponents(3);
+  angles->SetName("angles");
+  angles->SetNumberOfComponents(3);
+  index->SetName("index");
+  vtkNew<vtkBitArray> mask;
+  mask->SetName("mask");
+  for (int i = 0; i < 12; ++i)
+  {
+    const double x = -1.5 + (i % 4), z = -1.0 + (i / 4);
+    points->InsertNextPoint(x, 1.0 + 0.1 * (i % 3), z);
+    size->InsertNextValue(0.5 + 0.08 * i);
+    direction->InsertNextTuple3(1.0, 0.3 * (i % 5) - 0.6, 0.2 * (i % 3));
+    angles->InsertNextTuple3(15.0 * i, 40.0 - 7.0 * i, 25.0 * (i % 4));
+    index->InsertNextValue(i % 2);
+    mask->InsertNextValue(i % 5 != 3);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->GetPointData()->AddArray(size);
+  poly->GetPointData()->AddArray(direction);
+  poly->GetPointData()->AddArray(angles);
+  poly->GetPointData()->AddArray(index);
+  poly->GetPointData()->AddArray(mask);
+  return poly;
+}
+
+/// An actor for a glyph mapper, lit as MakeActor's.
+vtkSmartPointer<vtkActor> GlyphActor(vtkMapper* mapper)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.2);
+  actor->GetProperty()->SetDiffuse(0.8);
+  return actor;
+}
+
+vtkSmartPointer<vtkConeSource> Cone()
+{
+  auto cone = vtkSmartPointer<vtkConeSource>::New();
+  cone->SetResolution(12);
+  cone->SetHeight(1.0);
+  cone->SetRadius(0.3);
+  return cone;
+}
+
+void TestGlyphsByDirection()
+{
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  auto cone = Cone();
+  CompareScenes(
+    "glyph mapper, direction and size",
+    [&](vtkRenderer* r) {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetSourceConnection(cone->GetOutputPort());
+      mapper->SetOrientationArray("direction");
+      mapper->SetScaleArray("size");
+      mapper->SetScaleModeToScaleByMagnitude();
+      mapper->SetScaleFactor(0.8);
+      auto actor = GlyphActor(mapper);
+      actor->SetPosition(0.2, 0.1, -0.1); // the actor's matrix applies to every glyph
+      r->AddActor(actor);
+    },
+    [&](vtkRenderer* r) {
+      Ground(r);
+      vtkNew<vtkGlyph3D> glyphs;
+      glyphs->SetInputData(points);
+      glyphs->SetSourceConnection(cone->GetOutputPort());
+      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "size");
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
+      glyphs->SetScaleModeToScaleByScalar();
+      glyphs->SetVectorModeToUseVector();
+      glyphs->SetScaleFactor(0.8);
+      auto actor = MakeActor(glyphs, 1, 1, 1);
+      actor->GetMapper()->ScalarVisibilityOff(); // vtkGlyph3D colours by scale; the mapper does not
+      actor->SetPosition(0.2, 0.1, -0.1);
+      r->AddActor(actor);
+    });
+}
+
+void TestGlyphsByRotation()
+{
+  // Rotation angles, two sources picked by an index array, masked points: one plain actor per
+  // glyph with the rotation VTK documents (z, then x, then y).
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  auto cone = Cone();
+  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  CompareScenes(
+    "glyph mapper, rotation, index, mask",
+    [&](vtkRenderer* r) {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetSourceConnection(0, cone->GetOutputPort());
+      mapper->SetSourceConnection(1, box->GetOutputPort());
+      mapper->SetOrientationModeToRotation();
+      mapper->SetOrientationArray("angles");
+      mapper->SetScaling(false);
+      mapper->SourceIndexingOn();
+      mapper->SetSourceIndexArray("index");
+      mapper->MaskingOn();
+      mapper->SetMaskArray("mask");
+      auto actor = GlyphActor(mapper);
+      r->AddActor(actor);
+    },
+    [&](vtkRenderer* r) {
+      Ground(r);
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        if (i % 5 == 3)
+        {
+          continue; // masked
+        }
+        double angles[3];
+        points->GetPointData()->GetArray("angles")->GetTuple(i, angles);
+        vtkNew<vtkTransform> transform;
+        transform->Translate(points->GetPoint(i));
+        transform->RotateZ(angles[2]);
+        transform->RotateX(angles[0]);
+        transform->RotateY(angles[1]);
+        auto actor = MakeActor(i % 2 ? static_cast<vtkAlgorithm*>(box) : cone, 1, 1, 1);
+        actor->SetUserTransform(transform);
+        r->AddActor(actor);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void TestMultiBlock()
+{
+  // Blocks: a sphere, a nested multiblock (a box, an empty block, a hidden sphere), a
+  // translucent box. Hidden and translucent blocks cast nothing; the rest cast and receive.
+  auto sphere = SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16);
+  auto box = BoxSource(1.0, 0.7, 0.3, 0.7, 1.0, 0.7);
+  auto hidden = SphereSource(0.0, 1.5, -1.0, 0.5, 24, 12);
+  auto glass = BoxSource(0.2, 1.6, 1.2, 0.5, 0.2, 0.5);
+  for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ sphere, box, hidden, glass })
+  {
+    source->Update();
+  }
+  auto data = [](vtkAlgorithm* a) { return vtkPolyData::SafeDownCast(a->GetOutputDataObject(0)); };
+  vtkNew<vtkMultiBlockDataSet> nested;
+  nested->SetBlock(0, data(box));
+  nested->SetBlock(1, nullptr);
+  nested->SetBlock(2, data(hidden));
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, data(sphere));
+  blocks->SetBlock(1, nested);
+  blocks->SetBlock(2, data(glass));
+
+  CompareScenes(
+    "multiblock with hidden, empty, translucent blocks",
+    [&](vtkRenderer* r) {
+      Ground(r);
+      vtkNew<vtkCompositePolyDataMapper2> mapper;
+      mapper->SetInputDataObject(blocks);
+      vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+      attributes->SetBlockVisibility(data(hidden), false);
+      attributes->SetBlockOpacity(data(glass), 0.4);
+      mapper->SetCompositeDataDisplayAttributes(attributes);
+      mapper->ScalarVisibilityOff();
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetAmbient(0.2);
+      actor->GetProperty()->SetDiffuse(0.8);
+      r->AddActor(actor);
+    },
+    [&](vtkRenderer* r) {
+      Ground(r);
+      r->AddActor(MakeActor(sphere, 1, 1, 1));
+      r->AddActor(MakeActor(box, 1, 1, 1));
+      auto translucent = MakeActor(glass, 1, 1, 1);
+      translucent->GetProperty()->SetOpacity(0.4);
+      r->AddActor(translucent);
+    });
+}
+
+//------------------------------------------------------------------------------
+void TestAssembly()
+{
+  // A moved, turned and scaled assembly of a ground, a sphere and a box: its parts cast onto
+  // and receive from each other at the composed matrices.
+  auto groundSource = GroundSource(3.0);
+  auto sphereSource = SphereSource(0.0, 0.0, 0.0, 0.6, 32, 16);
+  auto boxSource = BoxSource(0.0, 0.0, 0.0, 0.7, 1.0, 0.7);
+  auto build = [&](vtkRenderer* r, bool flatten) {
+    auto ground = MakeActor(groundSource, 0.85, 0.85, 0.8);
+    auto sphere = MakeActor(sphereSource, 0.9, 0.3, 0.3);
+    sphere->SetPosition(-0.9, 1.0, 0.0);
+    auto box = MakeActor(boxSource, 0.3, 0.6, 0.9);
+    box->SetPosition(1.0, 0.6, 0.3);
+    box->RotateY(30.0);
+    vtkNew<vtkAssembly> assembly;
+    assembly->AddPart(ground);
+    assembly->AddPart(sphere);
+    assembly->AddPart(box);
+    assembly->SetPosition(0.3, -0.2, 0.1);
+    assembly->RotateY(-20.0);
+    assembly->SetScale(1.1);
+    if (!flatten)
+    {
+      r->AddActor(assembly);
+      return;
+    }
+    for (vtkActor* part : { ground.Get(), sphere.Get(), box.Get() })
+    {
+      vtkNew<vtkMatrix4x4> composed;
+      vtkMatrix4x4::Multiply4x4(assembly->GetMatrix(), part->GetMatrix(), composed);
+      vtkNew<vtkActor> flat;
+      flat->SetMapper(part->GetMapper());
+      flat->SetProperty(part->GetProperty());
+      flat->SetUserMatrix(composed);
+      r->AddActor(flat);
+    }
+  };
+  CompareScenes(
+    "assembly of ground, sphere and box", [&](vtkRenderer* r) { build(r, false); },
+    [&](vtkRenderer* r) { build(r, true); });
+}
+
+//------------------------------------------------------------------------------
+/// What cannot cast warns once per prop and reason, over two frames, and the rest still shadows.
+void TestWarnings()
+{
+  View view;
+  Ground(view.Renderer);
+  view.Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16), 0.9, 0.3, 0.3));
+
+  vtkNew<vtkPolyData> centres;
+  vtkNew<vtkPoints> centrePoints;
+  centrePoints->InsertNextPoint(1.0, 1.2, 0.0);
+  centrePoints->InsertNextPoint(1.5, 1.0, 0.5);
+  centres->SetPoints(centrePoints);
+  vtkNew<vtkOpenGLSphereMapper> imposters;
+  imposters->SetInputData(centres);
+  imposters->SetRadius(0.3);
+  vtkNew<vtkActor> atoms;
+  atoms->SetMapper(imposters);
+  view.Renderer->AddActor(atoms);
+
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  vtkNew<vtkGlyph3DMapper> noSource;
+  noSource->SetInputData(points);
+  vtkNew<vtkActor> lines;
+  lines->SetMapper(noSource);
+  // Out of view: the truth has no lines to see, so their pixels would not compare.
+  lines->SetPosition(50.0, 0.0, 0.0);
+  view.Renderer->AddActor(lines);
+
+  vtkNew<vtkPolyData> broken;
+  broken->DeepCopy(points);
+  vtkDataArray* direction = broken->GetPointData()->GetArray("direction");
+  direction->SetTuple3(0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+  direction->SetTuple3(5, 0.0, std::numeric_limits<double>::infinity(), 0.0);
+  auto cone = Cone();
+  vtkNew<vtkGlyph3DMapper> nanGlyphs;
+  nanGlyphs->SetInputData(broken);
+  nanGlyphs->SetSourceConnection(cone->GetOutputPort());
+  nanGlyphs->SetOrientationArray("direction");
+  nanGlyphs->SetScaling(false);
+  vtkNew<vtkActor> nanActor;
+  nanActor->SetMapper(nanGlyphs);
+  nanActor->SetPosition(0.0, 1.0, 0.0);
+  view.Renderer->AddActor(nanActor);
+
+  std::vector<std::string> warnings;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetClientData(&warnings);
+  counter->SetCallback([](vtkObject*, unsigned long, void* client, void* text) {
+    static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text));
+  });
+  view.Pass->AddObserver(vtkCommand::WarningEvent, counter);
+  view.Render();
+  view.Render();
+  auto count = [&](const std::string& needle) {
+    return std::count_if(warnings.begin(), warnings.end(),
+      [&](const std::string& w) { return w.find(needle) != std::string::npos; });
+  };
+  for (const std::string& w : warnings)
+  {
+    std::printf("     warning: %s", w.c_str());
+  }
+  Check(count("vtkOpenGLSphereMapper") == 1, "imposter spheres: one warning naming the mapper");
+  Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
+  Check(count("not finite") == 1, "glyphs with a NaN or infinite orientation: one warning");
+  Check(warnings.size() == 3, "no other warning");
+  const std::vector<float> visibility = view.Visibility();
+  const auto shadowed = std::count_if(
+    visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
+  Check(shadowed > Width * Height / 50, "the rest of the scene still casts");
+  CheckAgainstTruth("scene with props that cannot cast",
+    CompareWithTruth(view.Window, view.Renderer, view.Pass, 0));
+}
+} // namespace
+
+int main()
+{
+  TestGlyphsByDirection();
+  TestGlyphsByRotation();
+  TestMultiBlock();
+  TestAssembly();
+  TestWarnings();
+  return penumbra_test::Finish();
+}
