@@ -32,7 +32,7 @@
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
-#include "vtkRenderStepsPass.h"
+#include "vtkRendererSettingsPass.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkFloatArray.h"
@@ -464,8 +464,8 @@ public:
 vtkSoftShadowPass::vtkSoftShadowPass()
   : Internals(new vtkInternals)
 {
-  vtkNew<vtkRenderStepsPass> steps;
-  this->SetDelegatePass(steps);
+  vtkNew<vtkRendererSettingsPass> scene;
+  this->SetDelegatePass(scene);
 }
 
 vtkSoftShadowPass::~vtkSoftShadowPass()

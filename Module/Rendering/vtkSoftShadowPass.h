@@ -63,7 +63,8 @@ public:
 
   /**
    * The pass that renders the scene once the light-intensity buffer is ready. Defaults to a
-   * vtkRenderStepsPass (the whole scene as VTK draws it).
+   * vtkRendererSettingsPass: the whole scene as the renderer draws it without a pass, its depth
+   * peeling, FXAA and SSAO settings included.
    */
   virtual void SetDelegatePass(vtkRenderPass* delegatePass);
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);

@@ -1,0 +1,114 @@
+#include "vtkRendererSettingsPass.h"
+
+#include "vtkCameraPass.h"
+#include "vtkLightsPass.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFXAAFilter.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOverlayPass.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkVolumetricPass.h"
+
+namespace
+{
+/// What runs inside the camera pass: VTK's steps after the camera, as DeviceRender orders them.
+class vtkRendererSettingsSteps : public vtkRenderPass
+{
+public:
+  static vtkRendererSettingsSteps* New();
+  vtkTypeMacro(vtkRendererSettingsSteps, vtkRenderPass);
+
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+    if (!renderer)
+    {
+      return;
+    }
+    const int before = renderer->GetNumberOfPropsRendered();
+    this->Lights->Render(s);
+    renderer->DeviceRenderOpaqueGeometry(s->GetFrameBuffer());
+
+    bool translucent = false;
+    for (int i = 0; i < s->GetPropArrayCount() && !translucent; ++i)
+    {
+      translucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
+    }
+    if (translucent)
+    {
+      renderer->DeviceRenderTranslucentPolygonalGeometry(s->GetFrameBuffer());
+    }
+    if (renderer->GetUseFXAA())
+    {
+      if (renderer->GetFXAAOptions())
+      {
+        this->FXAA->UpdateConfiguration(renderer->GetFXAAOptions());
+      }
+      this->FXAA->Execute(renderer);
+    }
+    // Dual depth peeling draws volumes with the translucent props when asked to.
+    if (!translucent || !renderer->GetUseDepthPeeling() || !renderer->GetUseDepthPeelingForVolumes())
+    {
+      this->Volumes->Render(s);
+      this->NumberOfRenderedProps += this->Volumes->GetNumberOfRenderedProps();
+    }
+    this->Overlays->Render(s);
+    this->NumberOfRenderedProps += this->Overlays->GetNumberOfRenderedProps();
+    // The renderer counts what its own Device* calls drew.
+    this->NumberOfRenderedProps += renderer->GetNumberOfPropsRendered() - before;
+  }
+
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    this->FXAA->ReleaseGraphicsResources();
+    this->Volumes->ReleaseGraphicsResources(w);
+    this->Overlays->ReleaseGraphicsResources(w);
+  }
+
+private:
+  vtkNew<vtkLightsPass> Lights;
+  vtkNew<vtkOpenGLFXAAFilter> FXAA;
+  vtkNew<vtkVolumetricPass> Volumes;
+  vtkNew<vtkOverlayPass> Overlays;
+};
+vtkStandardNewMacro(vtkRendererSettingsSteps);
+} // namespace
+
+class vtkRendererSettingsPass::vtkInternals
+{
+public:
+  vtkNew<vtkCameraPass> Camera;
+  vtkNew<vtkRendererSettingsSteps> Steps;
+};
+
+vtkStandardNewMacro(vtkRendererSettingsPass);
+
+vtkRendererSettingsPass::vtkRendererSettingsPass()
+  : Internals(new vtkInternals)
+{
+  this->Internals->Camera->SetDelegatePass(this->Internals->Steps);
+}
+
+vtkRendererSettingsPass::~vtkRendererSettingsPass() = default;
+
+void vtkRendererSettingsPass::Render(const vtkRenderState* s)
+{
+  this->Internals->Camera->Render(s);
+  this->NumberOfRenderedProps = this->Internals->Camera->GetNumberOfRenderedProps();
+}
+
+void vtkRendererSettingsPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Internals->Camera->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+void vtkRendererSettingsPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Steps: camera, lights, opaque (hidden-line removal, SSAO), translucent (depth "
+                  "peeling, OIT), FXAA, volumes, overlays, as the renderer's settings ask\n";
+}

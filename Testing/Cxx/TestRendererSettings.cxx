@@ -1,0 +1,236 @@
+// The renderer's own settings survive the pass: depth peeling, FXAA, SSAO, tone mapping around
+// the pass, and a viewport that is not at the window's origin.
+//
+// For each setting the same scene (ground, sphere, box, two overlapping translucent spheres) is
+// rendered by VTK alone with the setting off and on, and with the pass and the setting on, at
+// 400 x 250. Where the light is seen (visibility 1, three pixels clear of any shadow):
+// - the pass's image equals VTK's with the setting: at most 0.5% of those pixels differ by more
+//   than 8 of 255 in a channel;
+// - the setting is not dropped: the pass's image differs from VTK's without the setting on at
+//   least half as many pixels as VTK's with and without it differ (and on at least 0.5%).
+// In the shadow the pass is darker than VTK (85% of its brightness at most, no pixel brighter by
+// more than 12 of 765), and its visibility agrees with the ray-traced truth (CheckAgainstTruth's
+// 0.2%) wherever the window keeps the scene's depth.
+#include "penumbraTestHarness.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRendererSettingsPass.h"
+#include "vtkToneMappingPass.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <functional>
+
+using namespace penumbra_test;
+
+namespace
+{
+constexpr int Width = 400, Height = 250;
+
+struct Image
+{
+  int Size[2] = { 0, 0 };
+  std::vector<unsigned char> Rgb;
+};
+
+/// One window showing the test scene in `viewport`, rendered by VTK alone or with the pass.
+struct View
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
+  vtkNew<vtkSoftShadowPass> Pass;
+
+  explicit View(const double viewport[4])
+  {
+    this->Renderer->SetBackground(0.2, 0.2, 0.25);
+    this->Renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    this->Renderer->AddActor(MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8));
+    this->Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 48, 24), 0.9, 0.3, 0.3));
+    this->Renderer->AddActor(MakeActor(BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7), 0.3, 0.6, 0.9));
+    for (int i = 0; i < 2; ++i)
+    {
+      auto glass =
+        MakeActor(SphereSource(0.1 + 0.35 * i, 0.9, 1.3 - 0.3 * i, 0.45, 32, 16), i, 0.8, 1 - i);
+      glass->GetProperty()->SetOpacity(0.45);
+      vtkSoftShadowPass::SetCastsShadows(glass, false);
+      this->Renderer->AddActor(glass);
+    }
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPositional(true);
+    this->Light->SetConeAngle(180);
+    this->Light->SetPosition(-2.0, 6.0, 3.0);
+    this->Light->SetFocalPoint(0, 0, 0);
+    this->Renderer->AddLight(this->Light);
+    this->Renderer->GetActiveCamera()->SetPosition(3.0, 4.0, 7.0);
+    this->Renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.6, 0.0);
+    this->Renderer->ResetCameraClippingRange();
+    this->Window->SetSize(Width, Height);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetAlphaBitPlanes(1);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  Image Render()
+  {
+    this->Window->Render();
+    Image image;
+    int origin[2];
+    this->Renderer->GetTiledSizeAndOrigin(&image.Size[0], &image.Size[1], &origin[0], &origin[1]);
+    vtkNew<vtkUnsignedCharArray> pixels;
+    this->Window->GetPixelData(origin[0], origin[1], origin[0] + image.Size[0] - 1,
+      origin[1] + image.Size[1] - 1, 0, pixels);
+    image.Rgb.assign(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+    return image;
+  }
+};
+
+struct Setting
+{
+  std::string Name;
+  std::function<void(View&, bool withPass)> Apply; ///< turns the setting on
+  /// Whether the window's depth buffer holds the scene's depth afterwards (a pass around
+  /// this one may keep it in its own framebuffer): the truth comparison needs it.
+  bool WindowDepth = true;
+};
+
+bool Differs(const Image& a, const Image& b, std::size_t pixel)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (std::abs(int(a.Rgb[3 * pixel + c]) - int(b.Rgb[3 * pixel + c])) > 8)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+int Luminance(const Image& image, std::size_t pixel)
+{
+  return image.Rgb[3 * pixel] + image.Rgb[3 * pixel + 1] + image.Rgb[3 * pixel + 2];
+}
+
+void TestSetting(const Setting& setting, const double viewport[4])
+{
+  View plainOff(viewport), plainOn(viewport), shadowed(viewport);
+  setting.Apply(plainOn, false);
+  shadowed.Renderer->SetPass(shadowed.Pass);
+  setting.Apply(shadowed, true);
+  const Image off = plainOff.Render(), on = plainOn.Render(), ours = shadowed.Render();
+
+  auto values = vtkFloatArray::SafeDownCast(
+    shadowed.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  const int w = ours.Size[0], h = ours.Size[1];
+  Check(values && values->GetNumberOfValues() == vtkIdType(w) * h,
+    setting.Name + ": a visibility image of the viewport's size");
+  if (!values || values->GetNumberOfValues() != vtkIdType(w) * h)
+  {
+    return;
+  }
+  auto lit = [&](int x, int y) {
+    for (int dy = -3; dy <= 3; ++dy)
+    {
+      for (int dx = -3; dx <= 3; ++dx)
+      {
+        const int u = std::min(std::max(x + dx, 0), w - 1), v = std::min(std::max(y + dy, 0), h - 1);
+        const float value = values->GetValue(vtkIdType(v) * w + u);
+        if (!(value >= 1.0f)) // NaN (background) counts as lit; shadow does not
+        {
+          if (!std::isnan(value))
+          {
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  };
+  int litPixels = 0, oursVsOn = 0, oursVsOff = 0, onVsOff = 0, shadowPixels = 0, brighter = 0;
+  double oursInShadow = 0.0, vtkInShadow = 0.0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const std::size_t i = std::size_t(y) * w + x;
+      if (lit(x, y))
+      {
+        ++litPixels;
+        oursVsOn += Differs(ours, on, i);
+        oursVsOff += Differs(ours, off, i);
+        onVsOff += Differs(on, off, i);
+      }
+      else if (values->GetValue(vtkIdType(i)) <= 0.0f)
+      {
+        ++shadowPixels;
+        brighter += Luminance(ours, i) > Luminance(on, i) + 12;
+        oursInShadow += Luminance(ours, i);
+        vtkInShadow += Luminance(on, i);
+      }
+    }
+  }
+  std::printf("%-28s lit %6d px: pass vs VTK with it %.3f%%, pass vs VTK without %.3f%%, VTK "
+              "with vs without %.3f%%; shadow %d px, %.0f%% of VTK's brightness\n",
+    setting.Name.c_str(), litPixels, 100.0 * oursVsOn / litPixels, 100.0 * oursVsOff / litPixels,
+    100.0 * onVsOff / litPixels, shadowPixels, vtkInShadow > 0 ? 100.0 * oursInShadow / vtkInShadow : 0.0);
+  Check(litPixels > w * h / 4, setting.Name + ": most of the view is lit");
+  Check(onVsOff >= 0.005 * litPixels, setting.Name + ": the setting changes VTK's image");
+  Check(oursVsOn <= 0.005 * litPixels, setting.Name + ": lit pixels as VTK draws them with it");
+  Check(2 * oursVsOff >= onVsOff, setting.Name + ": the setting is not dropped");
+  // Some shadowed pixels face away from the light, and VTK draws them dark already.
+  Check(shadowPixels > w * h / 100 && brighter <= shadowPixels / 1000 &&
+      oursInShadow < 0.85 * vtkInShadow,
+    setting.Name + ": shadowed pixels darker than VTK's, none brighter");
+  if (setting.WindowDepth)
+  {
+    CheckAgainstTruth(
+      setting.Name, CompareWithTruth(shadowed.Window, shadowed.Renderer, shadowed.Pass, 0));
+  }
+}
+} // namespace
+
+int main()
+{
+  const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
+  std::vector<Setting> settings;
+  settings.push_back({ "depth peeling", [](View& view, bool) {
+                        view.Renderer->SetUseDepthPeeling(true);
+                        view.Renderer->SetMaximumNumberOfPeels(8);
+                        view.Renderer->SetOcclusionRatio(0.0);
+                      } });
+  settings.push_back({ "FXAA", [](View& view, bool) { view.Renderer->SetUseFXAA(true); } });
+  settings.push_back({ "SSAO", [](View& view, bool) {
+                        view.Renderer->SetUseSSAO(true);
+                        view.Renderer->SetSSAORadius(0.4);
+                        view.Renderer->SetSSAOBias(0.01);
+                        view.Renderer->SetSSAOKernelSize(32);
+                      } });
+  settings.push_back({ "tone mapping around the pass", [](View& view, bool withPass) {
+                        vtkNew<vtkToneMappingPass> toneMapping;
+                        toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
+                        toneMapping->SetExposure(1.6);
+                        if (withPass)
+                        {
+                          toneMapping->SetDelegatePass(view.Pass);
+                        }
+                        else
+                        {
+                          // The pass's own delegate without the pass: vtkRenderStepsPass would
+                          // blend the translucent spheres without VTK's OIT (0.44% of pixels).
+                          vtkNew<vtkRendererSettingsPass> scene;
+                          toneMapping->SetDelegatePass(scene);
+                        }
+                        view.Renderer->SetPass(toneMapping);
+                      },
+    false });
+  for (const Setting& setting : settings)
+  {
+    TestSetting(setting, full);
+  }
+  // A viewport away from the window's origin, with FXAA: the LI buffer is read at the
+  // viewport's pixels, not the window's.
+  const double offset[4] = { 0.3, 0.2, 1.0, 1.0 };
+  TestSetting({ "FXAA, offset viewport", settings[1].Apply }, offset);
+  return penumbra_test::Finish();
+}
