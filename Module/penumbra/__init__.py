@@ -1,6 +1,10 @@
 """Soft shadows for VTK: shadow volumes, penumbra wedges and ray-traced ground truth.
 
     import penumbra
+    shadows = penumbra.enable_shadows(renderer, radius=0.3)
+
+or, the VTK way:
+
     shadows = penumbra.vtkSoftShadowPass()
     renderer.SetPass(shadows)
 """
@@ -8,3 +12,4 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL fac
 
 from .vtkPenumbraRendering import *  # noqa: F401,F403
 from .vtkPenumbraFilters import *  # noqa: F401,F403
+from .shadows import disable_shadows, enable_shadows  # noqa: F401

@@ -1,0 +1,72 @@
+"""Shadows for a renderer in one call, for scripts and for clients such as vedo.
+
+    import penumbra
+    shadows = penumbra.enable_shadows(renderer, radius=0.3)       # positional lights
+    shadows = penumbra.enable_shadows(plotter.renderer, angular_radius=2.0)  # vedo.Light
+
+The plain VTK way, which this wraps:
+
+    shadows = penumbra.vtkSoftShadowPass()
+    penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.3)
+    renderer.SetPass(shadows)
+"""
+import warnings
+
+from .vtkPenumbraRendering import vtkSoftShadowPass
+
+METHODS = {
+    "automatic": vtkSoftShadowPass.METHOD_AUTOMATIC,
+    "hard": vtkSoftShadowPass.METHOD_HARD_VOLUMES,
+    "averaged": vtkSoftShadowPass.METHOD_AVERAGED_HARD_SHADOWS,
+    "wedges": vtkSoftShadowPass.METHOD_PENUMBRA_WEDGES,
+    "plateaus": vtkSoftShadowPass.METHOD_PLATEAUS,
+    "soft_volumes": vtkSoftShadowPass.METHOD_SOFT_SHADOW_VOLUMES,
+}
+
+
+def _lights_of(renderer):
+    lights = renderer.GetLights()
+    lights.InitTraversal()
+    return [lights.GetItemAsObject(i) for i in range(lights.GetNumberOfItems())]
+
+
+def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic", samples=None,
+                   lights=None):
+    """Sets a vtkSoftShadowPass on `renderer` and returns it.
+
+    radius: the size of positional lights, in world units (0 gives hard shadows).
+    angular_radius: the size of directional lights, in degrees (the sun is about 0.27). vedo's
+        ``vedo.Light`` and a plain ``vtkLight`` are directional unless SetPositional(True).
+    Either applies to `lights` (default: every light of the renderer); None leaves a light's
+    radius as it is. method: "automatic" (the default), "hard", "averaged", "wedges",
+    "plateaus" or "soft_volumes" (vtkSoftShadowPass.SetMethod). samples: light samples per area light
+    (vtkSoftShadowPass.SetLightSamples), None for the default.
+
+    The scene is drawn as the renderer draws it without a pass: its depth peeling, FXAA and SSAO
+    settings are kept (vtkRendererSettingsPass). Headlights and camera lights cast no shadow; a
+    Python warning says so when no light of the renderer can cast.
+    """
+    if method not in METHODS:
+        raise ValueError("method must be one of %s, not %r" % (", ".join(sorted(METHODS)), method))
+    targets = list(lights) if lights is not None else _lights_of(renderer)
+    for light in targets:
+        size = radius if light.GetPositional() else angular_radius
+        if size is not None:
+            if size < 0:
+                raise ValueError("a light's radius cannot be negative (%r)" % size)
+            vtkSoftShadowPass.SetLightRadius(light, size)
+    shadows = vtkSoftShadowPass()
+    shadows.SetMethod(METHODS[method])
+    if samples is not None:
+        shadows.SetLightSamples(samples)
+    renderer.SetPass(shadows)
+    if not any(vtkSoftShadowPass.LightCastsShadows(light) for light in _lights_of(renderer)):
+        warnings.warn("penumbra.enable_shadows: no light of this renderer casts shadows (headlights "
+                      "and camera lights do not, nor lights that are off); add a scene light",
+                      stacklevel=2)
+    return shadows
+
+
+def disable_shadows(renderer):
+    """Removes the pass enable_shadows set: the renderer draws as VTK does by default."""
+    renderer.SetPass(None)

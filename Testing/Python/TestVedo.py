@@ -1,0 +1,90 @@
+"""A real client: a vedo scene (Plotter, vedo.Light, vedo meshes) with shadows from
+penumbra.enable_shadows, checked against the ray-traced truth. vedo.Light is directional, so the
+light's size is an angle (angular_radius, degrees).
+
+Tolerance: hard shadows (CheckAgainstTruth's 0.2% of compared pixels wrong away from shadow
+boundaries), and a soft light whose visibility MAE against the truth is below 0.03."""
+import sys
+import warnings
+
+import numpy as np
+import penumbra
+import vedo
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        failures.append(what)
+
+
+vedo.settings.default_backend = "vtk"
+plotter = vedo.Plotter(offscreen=True, size=(480, 320))
+ground = vedo.Box(pos=(0, -0.05, 0), length=6, width=0.1, height=6).c("white")
+ball = vedo.Sphere(pos=(-0.8, 1.0, 0.0), r=0.6, res=36).c("tomato")
+box = vedo.Cube(pos=(1.0, 0.6, 0.3), side=0.9).c("steelblue")
+sun = vedo.Light(pos=(-2, 6, 3), focal_point=(0, 0, 0), intensity=1.0)
+plotter.show(ground, ball, box, sun, camera={"pos": (3, 5, 8), "focal_point": (0, 0.5, 0)},
+             interactive=False)
+renderer = plotter.renderer
+
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    shadows = penumbra.enable_shadows(renderer, angular_radius=0.0, method="hard")
+check(not caught, "no warning: the vedo light casts")
+check(not sun.GetPositional(), "vedo.Light is directional")
+plotter.render()
+check(shadows.GetNumberOfShadowingLights() >= 1, "the pass shadows with the vedo light")
+
+
+def visibility(pass_, index):
+    return vtk_to_numpy(pass_.GetVisibilityImage(index).GetPointData().GetScalars())
+
+
+def truth_of(samples):
+    truth = penumbra.vtkRayTracedVisibility()
+    truth.SetRenderer(renderer)
+    truth.SetSamplesPerLight(samples)
+    check(truth.Update(), "the ray tracer ran")
+    return truth
+
+
+# The light's index among the renderer's lights (vedo may add its own).
+lights = renderer.GetLights()
+index = [lights.GetItemAsObject(i) for i in range(lights.GetNumberOfItems())].index(sun)
+layer = 0
+ours = visibility(shadows, layer)
+truth = truth_of(1)
+expected = vtk_to_numpy(truth.GetVisibilityImage(index).GetPointData().GetScalars())
+depth = vtk_to_numpy(truth.GetDepthImage().GetPointData().GetScalars())
+seen = depth < 1.0
+wrong = np.abs(ours - expected) > 0.5
+shadowed = (expected < 0.5) & seen
+print(f"     hard: {seen.sum()} px seen, {shadowed.sum()} shadowed, {wrong[seen].mean():.4%} differ")
+check(shadowed.sum() > 0.02 * seen.sum(), "hard: the vedo scene has shadow in view")
+# Differences only on shadow and object boundaries: not more than 1% of the seen pixels.
+check(wrong[seen].mean() < 0.01, "hard: agrees with the ray-traced truth")
+
+shadows = penumbra.enable_shadows(renderer, angular_radius=3.0, samples=64)
+plotter.render()
+soft = visibility(shadows, layer)
+truth = truth_of(256)
+expected = vtk_to_numpy(truth.GetVisibilityImage(index).GetPointData().GetScalars())
+penumbral = seen & ((expected < 1.0) | (soft < 1.0))
+mae = np.abs(soft - expected)[penumbral].mean()
+print(f"     soft (3 degrees): MAE {mae:.4f} over {penumbral.sum()} px")
+check(penumbral.sum() > shadowed.sum(), "soft: a penumbra wider than the hard shadow")
+check(mae < 0.03, "soft: close to the ray-traced truth")
+
+try:
+    penumbra.enable_shadows(renderer, method="raytraced")
+    check(False, "an unknown method is refused")
+except ValueError:
+    check(True, "an unknown method is refused")
+penumbra.disable_shadows(renderer)
+check(renderer.GetPass() is None, "disable_shadows takes the pass off")
+plotter.close()
+sys.exit(1 if failures else 0)
