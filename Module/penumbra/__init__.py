@@ -11,5 +11,6 @@ or, the VTK way:
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL factories first)
 
 from .vtkPenumbraRendering import *  # noqa: F401,F403
+from .vtkPenumbraRayTracing import *  # noqa: F401,F403
 from .vtkPenumbraFilters import *  # noqa: F401,F403
 from .shadows import disable_shadows, enable_shadows  # noqa: F401

@@ -4,7 +4,7 @@
 add_executable(TestRayTracedVisibility TestRayTracedVisibility.cxx)
 target_link_libraries(TestRayTracedVisibility
   PRIVATE
-    Penumbra::Rendering
+    Penumbra::Rendering Penumbra::RayTracing
     Penumbra::Geometry
     VTK::CommonCore
     VTK::CommonDataModel

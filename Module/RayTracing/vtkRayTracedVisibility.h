@@ -34,14 +34,14 @@
 #define vtkRayTracedVisibility_h
 
 #include "vtkObject.h"
-#include "vtkPenumbraRenderingModule.h" // for export macro
+#include "vtkPenumbraRayTracingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
 class vtkRenderer;
 
-class VTKPENUMBRARENDERING_EXPORT vtkRayTracedVisibility : public vtkObject
+class VTKPENUMBRARAYTRACING_EXPORT vtkRayTracedVisibility : public vtkObject
 {
 public:
   static vtkRayTracedVisibility* New();
