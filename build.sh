@@ -3,6 +3,8 @@
 #   ./build.sh demo   install what is missing, build, render the example scene to build/demo/
 #   ./build.sh test   install what is missing, build, run the whole test suite (ctest under Xvfb)
 #   ./build.sh build  install what is missing and build only
+#   ./build.sh install  build, then cmake --install into PREFIX (/usr/local): python3 -c
+#                     "import penumbra" and find_package(Penumbra) work without further setup
 #   ./build.sh bench [ARGS]  also matplotlib; build, run the speed-versus-error benchmark into
 #                     build/bench/ (results.csv, speed_vs_error.png); ARGS go to PenumbraBench
 #   ./build.sh fuzz [SECONDS]  also clang; libFuzzer on the geometry core for SECONDS (600) in
@@ -84,6 +86,13 @@ case "$cmd" in
     install_missing; configure_and_build
     mkdir -p "$BUILD_DIR/bench"
     with_display "$BUILD_DIR/bin/PenumbraBench" --output "$BUILD_DIR/bench" "$@" ;;
+  install)
+    # Libraries, headers, the CMake package and the Python package under PREFIX (/usr/local),
+    # where Debian's python3 and find_package(Penumbra) find them.
+    install_missing; configure_and_build
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    $sudo cmake --install "$BUILD_DIR" --prefix "${PREFIX:-/usr/local}" ;;
   fuzz)
     run_fuzzer "${2:-600}" ;;
   load)
@@ -92,5 +101,5 @@ case "$cmd" in
     mkdir -p "$BUILD_DIR/load"
     with_display "$BUILD_DIR/bin/PenumbraLoad" --output "$BUILD_DIR/load" "$@" ;;
   *)
-    echo "usage: $0 {demo|test|build|bench [PenumbraBench options]|fuzz [SECONDS]|load [PenumbraLoad options]}" >&2; exit 2 ;;
+    echo "usage: $0 {demo|test|build|install|bench [PenumbraBench options]|fuzz [SECONDS]|load [PenumbraLoad options]}" >&2; exit 2 ;;
 esac
