@@ -15,6 +15,8 @@
 //   DIR/results_ground.csv     the visibility methods' error on the ground plane's pixels only
 //                              (where the planar methods, plateaus, shadow)
 //   DIR/truth.csv              per scene: truth samples, trace time and the truth's own noise
+//   DIR/stages.csv             per scene and pass method: one frame's time in each stage of the
+//                              pass (CollectStageTimes: the pipeline drained at each stage's end)
 //   DIR/README.md              what the columns mean, which rows use which error
 //   DIR/<scene>_<method>.png   still images (for the scenes --images selects)
 //   DIR/speed_vs_error.png     the plot (plot_results.py), when /usr/bin/python3 has matplotlib
@@ -769,6 +771,27 @@ void WriteCsvRow(std::FILE* file, const Row& row, const ErrorStats& e)
   std::fflush(file);
 }
 
+/// One more frame with the pass's stage times on (the pipeline drained at each stage's end):
+/// printed under the row and written to stages.csv.
+void WriteStageSplit(
+  std::FILE* file, const Row& row, vtkSoftShadowPass* pass, vtkRenderWindow* window)
+{
+  pass->CollectStageTimesOn();
+  window->Render();
+  pass->CollectStageTimesOff();
+  std::fprintf(file, "%s,%s", row.Scene.c_str(), row.Method.c_str());
+  std::printf("  %-15s stages:", "");
+  for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
+  {
+    const double ms = pass->GetStageCPUMilliseconds(stage);
+    std::fprintf(file, ",%.3f", ms);
+    std::printf(" %s %.1f ms", vtkSoftShadowPass::GetStageName(stage), ms);
+  }
+  std::fprintf(file, "\n");
+  std::fflush(file);
+  std::printf("\n");
+}
+
 void PrintTableHeader()
 {
   std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s %8s\n", "method",
@@ -953,12 +976,19 @@ int main(int argc, char* argv[])
   std::FILE* lumCsv = std::fopen((out + "/results_luminance.csv").c_str(), "w");
   std::FILE* groundCsv = std::fopen((out + "/results_ground.csv").c_str(), "w");
   std::FILE* truthCsv = std::fopen((out + "/truth.csv").c_str(), "w");
-  if (!csv || !lumCsv || !groundCsv || !truthCsv)
+  std::FILE* stagesCsv = std::fopen((out + "/stages.csv").c_str(), "w");
+  if (!csv || !lumCsv || !groundCsv || !truthCsv || !stagesCsv)
   {
     std::fprintf(stderr, "error: cannot write the CSV files in %s\n", out.c_str());
     return EXIT_FAILURE;
   }
   std::fprintf(csv, "%s\n", CsvHeader);
+  std::fprintf(stagesCsv, "scene,method");
+  for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
+  {
+    std::fprintf(stagesCsv, ",%s_ms", vtkSoftShadowPass::GetStageName(stage));
+  }
+  std::fprintf(stagesCsv, "\n");
   std::fprintf(lumCsv, "%s\n", CsvHeader);
   std::fprintf(groundCsv, "%s\n", CsvHeader);
   std::fprintf(truthCsv,
@@ -1227,6 +1257,10 @@ int main(int argc, char* argv[])
           noneMedian = row.Time.Median;
         }
         PrintTableRow(row, noneMedian);
+        if (auto soft = vtkSoftShadowPass::SafeDownCast(method.Pass))
+        {
+          WriteStageSplit(stagesCsv, row, soft, window);
+        }
         WriteCsvRow(csv, row, row.Error);
         WriteCsvRow(lumCsv, row, row.Luminance);
         if (row.VisibilityMetric)
@@ -1271,6 +1305,7 @@ int main(int argc, char* argv[])
     }
   }
   std::fclose(csv);
+  std::fclose(stagesCsv);
   std::fclose(lumCsv);
   std::fclose(groundCsv);
   std::fclose(truthCsv);

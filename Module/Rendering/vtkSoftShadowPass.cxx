@@ -3,6 +3,7 @@
 #include "vtkSoftShadowPassInternals.h"
 
 #include "penumbraSceneWalk.h"
+#include "penumbraStageTimes.h"
 
 #include "vtkActor.h"
 #include "vtkImageData.h"
@@ -284,6 +285,7 @@ public:
 
   penumbra::ShadowCaches Caches;
   penumbra::SceneWalk SceneWalk;
+  penumbra::StageTimes StageTimes;
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
@@ -489,6 +491,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowsEnabled: " << this->ShadowsEnabled << "\n";
   os << indent << "Method: " << this->GetMethodAsString() << "\n";
   os << indent << "LightSamples: " << this->LightSamples << "\n";
+  os << indent << "CollectStageTimes: " << this->CollectStageTimes << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
   os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
@@ -636,6 +639,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfCountedLights = 0;
   this->NumberOfAveragedLights = 0;
 
+  using Stage = penumbra::StageTimes::Stage;
+  internals.StageTimes.BeginFrame(this->CollectStageTimes);
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
   internals.Lights.clear();
@@ -654,17 +659,27 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   if (internals.Lights.empty() || internals.Size[0] <= 0 || internals.Size[1] <= 0)
   {
     internals.Lights.clear();
-    this->RenderDelegate(s);
+    {
+      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
+      this->RenderDelegate(s);
+    }
+    internals.StageTimes.EndFrame();
     return;
   }
 
   this->AddReceiverKeys(s);
   internals.UpdateCamera(renderer);
   this->PrepareFramebuffer(window);
-  internals.LightIntensity->Activate();
-  this->RenderDepth(s);
-  internals.LightIntensity->Deactivate();
-  this->UpdateCasters(s);
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+    internals.LightIntensity->Activate();
+    this->RenderDepth(s);
+    internals.LightIntensity->Deactivate();
+  }
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
+    this->UpdateCasters(s);
+  }
   // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
   // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
@@ -672,6 +687,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
           return !light.Is(vtkInternals::Technique::HardSamples);
         }))
   {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.CopyDepth(window->GetState());
   }
   this->RenderLightIntensity(renderer, window);
@@ -679,7 +695,11 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.ApplyShadows = true;
   this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
 
-  this->RenderDelegate(s);
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
+    this->RenderDelegate(s);
+  }
+  internals.StageTimes.EndFrame();
 
   internals.ApplyShadows = false;
   internals.LightIntensity->Deactivate();
@@ -1192,6 +1212,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
     }
     const float sampleWeight = 1.0f / static_cast<float>(light.Samples.size());
+    internals.StageTimes.Begin(penumbra::StageTimes::Volumes);
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       ostate->vtkglStencilMask(0xFF);
@@ -1241,6 +1262,8 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       }
       ostate->vtkglDisable(GL_DEPTH_CLAMP);
     }
+    internals.StageTimes.End(penumbra::StageTimes::Volumes);
+    penumbra::StageTimes::Scope timedWedges(internals.StageTimes, penumbra::StageTimes::Wedges);
     if (light.Is(vtkInternals::Technique::PenumbraWedges))
     {
       internals.DrawWedges(
@@ -2003,9 +2026,35 @@ vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
+static_assert(static_cast<int>(penumbra::StageTimes::Count) == vtkSoftShadowPass::NUMBER_OF_STAGES,
+  "one stage list");
+
+const char* vtkSoftShadowPass::GetStageName(int stage)
+{
+  static const char* const names[NUMBER_OF_STAGES] = { "depth", "casters", "volumes", "wedges",
+    "compositing" };
+  return stage >= 0 && stage < NUMBER_OF_STAGES ? names[stage] : "unknown";
+}
+
+double vtkSoftShadowPass::GetStageCPUMilliseconds(int stage)
+{
+  return stage >= 0 && stage < NUMBER_OF_STAGES
+    ? this->Internals->StageTimes.CpuMilliseconds(static_cast<penumbra::StageTimes::Stage>(stage))
+    : 0.0;
+}
+
+double vtkSoftShadowPass::GetStageGPUMilliseconds(int stage)
+{
+  return stage >= 0 && stage < NUMBER_OF_STAGES
+    ? this->Internals->StageTimes.GpuMilliseconds(static_cast<penumbra::StageTimes::Stage>(stage))
+    : -1.0;
+}
+
+//------------------------------------------------------------------------------
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;
+  internals.StageTimes.ReleaseGraphicsResources();
   internals.Caches.ReleaseGraphicsResources();
   internals.Framebuffer->ReleaseGraphicsResources(w);
   internals.DepthStencil->ReleaseGraphicsResources(w);

@@ -247,6 +247,35 @@ public:
   /// and wedge buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
+  /// The stages of a frame, for GetStageCPUMilliseconds and GetStageGPUMilliseconds.
+  enum Stages
+  {
+    STAGE_DEPTH = 0,       ///< the depth pass and its copy for the wedge shaders
+    STAGE_CASTERS = 1,     ///< the scene walk, topology, silhouettes and wedge buffers (CPU)
+    STAGE_VOLUMES = 2,     ///< shadow volumes and their resolves into the LI buffer
+    STAGE_WEDGES = 3,      ///< wedges, per-sample counting and plateaus into the LI buffer
+    STAGE_COMPOSITING = 4, ///< the delegate: the scene drawn with the LI buffer applied
+    NUMBER_OF_STAGES = 5
+  };
+  static const char* GetStageName(int stage);
+
+  ///@{
+  /**
+   * Per-stage times of the last frame: off by default. When on, GL timestamp queries bracket
+   * each stage, and the pipeline is drained (glFinish) at every stage boundary so that no
+   * stage is billed for work the driver deferred: a timed frame is slower than an untimed one
+   * and the split, not the sum, is the figure. CPU times are the wall-clock time from a stage's
+   * start to the end of its GL work.
+   */
+  vtkSetMacro(CollectStageTimes, bool);
+  vtkGetMacro(CollectStageTimes, bool);
+  vtkBooleanMacro(CollectStageTimes, bool);
+  ///@}
+  /// Milliseconds of the last frame in `stage` on the CPU, and on the GPU (-1 when the frame was
+  /// not timed).
+  double GetStageCPUMilliseconds(int stage);
+  double GetStageGPUMilliseconds(int stage);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -274,6 +303,7 @@ protected:
   double ReceiverPlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double ReceiverPlaneNormal[3] = { 0.0, 0.0, 1.0 };
   bool UseReceiverPlane = false;
+  bool CollectStageTimes = false;
   vtkIdType NumberOfPlateauTriangles = 0;
   int NumberOfCountedLights = 0;
   int NumberOfAveragedLights = 0;

@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <chrono>
 #include <functional>
 
 using namespace penumbra_test;
@@ -127,6 +128,42 @@ void RunScene(const Scene& scene)
   Check(step <= 0.01, scene.Name + ": counting equals averaging within 1/N");
   Check(half <= 0.001, scene.Name + ": no counting pixel off by half");
   Check(maeCounted <= maeAveraged + 0.01, scene.Name + ": as accurate as averaging");
+}
+
+/// Stage times: off by default (GPU -1), then every stage timed, the wedges' GPU time > 0 when
+/// counting and none of the stages longer than the whole frame.
+void TestStageTimes(const Scene& base)
+{
+  SceneWindow view(base);
+  vtkSoftShadowPass* pass = view.Pass;
+  pass->SetMethodToSoftShadowVolumes();
+  view.Window->Render();
+  bool untimed = true;
+  for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
+  {
+    untimed &= pass->GetStageGPUMilliseconds(stage) < 0.0;
+  }
+  Check(untimed, "stage times are off by default");
+  pass->CollectStageTimesOn();
+  const auto start = std::chrono::steady_clock::now();
+  view.Window->Render();
+  const double frame =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  double cpu = 0.0;
+  bool timed = true;
+  for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
+  {
+    const double gpu = pass->GetStageGPUMilliseconds(stage);
+    std::printf("     stage %-12s cpu %7.2f ms  gpu %7.2f ms\n",
+      vtkSoftShadowPass::GetStageName(stage), pass->GetStageCPUMilliseconds(stage), gpu);
+    timed &= gpu >= 0.0 && gpu <= frame && pass->GetStageCPUMilliseconds(stage) <= frame;
+    cpu += pass->GetStageCPUMilliseconds(stage);
+  }
+  Check(timed, "every stage timed, none longer than the frame");
+  Check(cpu <= frame, "the stages' CPU times add up to at most the frame");
+  Check(pass->GetStageGPUMilliseconds(vtkSoftShadowPass::STAGE_WEDGES) > 0.0 &&
+      pass->GetStageGPUMilliseconds(vtkSoftShadowPass::STAGE_COMPOSITING) > 0.0,
+    "counting wedges and compositing take GPU time");
 }
 
 /// Automatic counts a small light and averages a large one (penumbra::CountingIsCheaper), and
@@ -245,5 +282,6 @@ int main()
     RunScene(scene);
   }
   TestAutomaticChoice(scenes[0]);
+  TestStageTimes(scenes[0]);
   return penumbra_test::Finish();
 }
