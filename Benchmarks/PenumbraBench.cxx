@@ -39,11 +39,11 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellLocator.h"
-#include "vtkGenericCell.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
 #include "vtkGlyph3D.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -92,19 +92,19 @@
 namespace
 {
 using penumbra::bench::Clock;
-using penumbra::bench::SecondsSince;
-using penumbra::metrics::ErrorStats;
 using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
+using penumbra::bench::GrabFrame;
 using penumbra::bench::ParseDouble;
 using penumbra::bench::ParseInt;
+using penumbra::bench::SecondsSince;
 using penumbra::bench::SplitList;
-using penumbra::bench::GrabFrame;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteGrey;
 using penumbra::bench::WritePNG;
 using penumbra::bench::WriteRGB;
+using penumbra::metrics::ErrorStats;
 
 //--------------------------------------------------------------------------------------------------
 // Options
@@ -116,15 +116,15 @@ struct Options
   int Height = 768;
   int Frames = 20;
   int WarmUp = 3;
-  double WarmUpSeconds = 3.0;  // warm-up stops early past this (at least 1 warm-up frame)
-  double AzimuthStep = 0.5;    // degrees per frame
-  double MaxSeconds = 10.0;    // per method's timed frames; at least 3 frames are always timed
+  double WarmUpSeconds = 3.0; // warm-up stops early past this (at least 1 warm-up frame)
+  double AzimuthStep = 0.5;   // degrees per frame
+  double MaxSeconds = 10.0;   // per method's timed frames; at least 3 frames are always timed
   int TruthSamples = 256;
-  bool NoiseCheck = true;      // a second truth with another seed: the truth's own noise
+  bool NoiseCheck = true; // a second truth with another seed: the truth's own noise
   bool Plot = true;
   std::string Images = "classic"; // scenes whose still images are written: classic, all, none
   std::vector<std::string> Scenes = { "classic", "isosurface", "glyphs", "large" };
-  std::vector<std::string> Methods;  // empty: all
+  std::vector<std::string> Methods; // empty: all
   std::vector<double> Radii = { 0.2, 1.0 };
   bool Quick = false;
   bool SizeGiven = false, FramesGiven = false, TruthGiven = false, MaxGiven = false;
@@ -480,10 +480,10 @@ void SetStartCamera(vtkRenderer* renderer)
 //--------------------------------------------------------------------------------------------------
 struct MethodInstance
 {
-  vtkSmartPointer<vtkRenderPass> Pass;              ///< installed with renderer->SetPass
-  std::function<vtkImageData*()> Visibility;       ///< empty: scored on luminance
-  std::function<long long()> ShadowTriangles;      ///< empty: not applicable
-  std::function<long long()> Wedges;               ///< empty: not applicable
+  vtkSmartPointer<vtkRenderPass> Pass;        ///< installed with renderer->SetPass
+  std::function<vtkImageData*()> Visibility;  ///< empty: scored on luminance
+  std::function<long long()> ShadowTriangles; ///< empty: not applicable
+  std::function<long long()> Wedges;          ///< empty: not applicable
   /// Scene changes the method makes (a decal actor) and takes back; empty: none.
   std::function<void(vtkRenderer*)> Attach, Detach;
 };
@@ -523,9 +523,8 @@ MethodInstance MakeSoftShadow(int method, int samples)
   instance.Pass = pass;
   vtkSoftShadowPass* raw = pass;
   instance.Visibility = [raw]() { return raw->GetVisibilityImage(0); };
-  instance.ShadowTriangles = [raw]() {
-    return static_cast<long long>(raw->GetNumberOfShadowVolumeTriangles());
-  };
+  instance.ShadowTriangles = [raw]()
+  { return static_cast<long long>(raw->GetNumberOfShadowVolumeTriangles()); };
   instance.Wedges = [raw]() { return static_cast<long long>(raw->GetNumberOfPenumbraWedges()); };
   return instance;
 }
@@ -546,7 +545,8 @@ MethodInstance MakePlanarFilter(int samples)
   auto decal = vtkSmartPointer<vtkActor>::New();
   auto ground = std::make_shared<vtkSmartPointer<vtkActor>>();
   auto image = vtkSmartPointer<vtkImageData>::New();
-  instance.Attach = [=](vtkRenderer* renderer) {
+  instance.Attach = [=](vtkRenderer* renderer)
+  {
     vtkNew<vtkAppendPolyData> casters;
     vtkActorCollection* actors = renderer->GetActors();
     vtkCollectionSimpleIterator it;
@@ -578,7 +578,8 @@ MethodInstance MakePlanarFilter(int samples)
     const auto start = Clock::now();
     filter->Update();
     std::printf("  (planar_filter_%d: filter update %.1f ms, %lld triangles)\n", samples,
-      1000.0 * SecondsSince(start), static_cast<long long>(filter->GetOutput()->GetNumberOfCells()));
+      1000.0 * SecondsSince(start),
+      static_cast<long long>(filter->GetOutput()->GetNumberOfCells()));
     // Black with alpha (1 - intensity): the ground darkened as far as the light is hidden.
     vtkNew<vtkLookupTable> shade;
     shade->SetTableRange(0.0, 1.0);
@@ -604,7 +605,8 @@ MethodInstance MakePlanarFilter(int samples)
       vtkSoftShadowPass::SetReceivesShadows(*ground, false);
     }
   };
-  instance.Detach = [=](vtkRenderer* renderer) {
+  instance.Detach = [=](vtkRenderer* renderer)
+  {
     renderer->RemoveActor(decal);
     if (*ground)
     {
@@ -612,7 +614,8 @@ MethodInstance MakePlanarFilter(int samples)
     }
   };
   vtkSoftShadowPass* raw = pass;
-  instance.Visibility = [=]() -> vtkImageData* {
+  instance.Visibility = [=]() -> vtkImageData*
+  {
     vtkImageData* hard = raw->GetVisibilityImage(0);
     const GroundView& view = CurrentGround;
     if (!hard)
@@ -658,14 +661,13 @@ std::vector<MethodSpec> AllMethods()
     methods.push_back({ "shadowmap_" + std::to_string(resolution),
       [resolution]() { return MakeShadowMap(resolution, true); } });
   }
-  methods.push_back({ "hard_volumes",
-    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_HARD_VOLUMES, 1); } });
+  methods.push_back(
+    { "hard_volumes", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_HARD_VOLUMES, 1); } });
   for (int samples : { 4, 16, 64, 256 })
   {
-    methods.push_back({ "averaged_" + std::to_string(samples), [samples]() {
-                         return MakeSoftShadow(
-                           vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS, samples);
-                       } });
+    methods.push_back({ "averaged_" + std::to_string(samples),
+      [samples]()
+      { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS, samples); } });
   }
   // VTK 9.1's shadow maps exactly as they come, aspect bug included (only with --methods).
   for (int resolution : { 1024, 4096 })
@@ -674,21 +676,21 @@ std::vector<MethodSpec> AllMethods()
       [resolution]() { return MakeShadowMap(resolution, false); }, false });
   }
   // Penumbra wedges: the hard shadow of the light's centre plus one wedge per silhouette edge.
-  methods.push_back({ "wedges",
-    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES, 1); } });
+  methods.push_back(
+    { "wedges", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES, 1); } });
   // Soft shadow volumes: per-sample counting, the averaged method's answer for the same samples.
   for (int samples : { 16, 64 })
   {
-    methods.push_back({ "soft_volumes_" + std::to_string(samples), [samples]() {
-                         return MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples);
-                       } });
+    methods.push_back({ "soft_volumes_" + std::to_string(samples),
+      [samples]()
+      { return MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples); } });
   }
   // The default: counting or averaging 64 samples, whichever the cost model expects faster.
-  methods.push_back({ "automatic_64",
-    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AUTOMATIC, 64); } });
+  methods.push_back(
+    { "automatic_64", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AUTOMATIC, 64); } });
   // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
-  methods.push_back({ "plateaus",
-    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });
+  methods.push_back(
+    { "plateaus", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });
   // The triangulated geometric soft shadow on the ground (vtkPlanarSoftShadowFilter).
   for (int samples : { 16, 64 })
   {
@@ -706,8 +708,9 @@ std::vector<MethodSpec> AllMethods()
 //--------------------------------------------------------------------------------------------------
 /// Up to WarmUp orbiting warm-up frames, none once WarmUpSeconds of warming up (counting the
 /// `warmSeconds` already spent rendering at the starting camera) have passed; then up to Frames
-/// timed ones, fewer once MaxSeconds have passed (at least 1), the camera orbiting `step` degrees before each so that no frame repeats the previous
-/// one. Each sample is Render() plus glFinish (WaitForCompletion).
+/// timed ones, fewer once MaxSeconds have passed (at least 1), the camera orbiting `step` degrees
+/// before each so that no frame repeats the previous one. Each sample is Render() plus glFinish
+/// (WaitForCompletion).
 Timing TimeFrames(
   vtkRenderWindow* window, vtkRenderer* renderer, const Options& options, double warmSeconds)
 {
@@ -751,9 +754,9 @@ struct Row
   int Width = 0, Height = 0;
   long long Triangles = 0;
   Timing Time;
-  ErrorStats Error;          ///< the error results.csv reports
-  ErrorStats Luminance;      ///< every method on luminance (results_luminance.csv)
-  ErrorStats Ground;         ///< visibility on the ground's pixels only (results_ground.csv)
+  ErrorStats Error;     ///< the error results.csv reports
+  ErrorStats Luminance; ///< every method on luminance (results_luminance.csv)
+  ErrorStats Ground;    ///< visibility on the ground's pixels only (results_ground.csv)
   bool VisibilityMetric = false;
   long long ShadowTriangles = -1;
   long long Wedges = -1;
@@ -794,9 +797,9 @@ void WriteStageSplit(
 
 void PrintTableHeader()
 {
-  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s %8s\n", "method",
-    "frames", "median ms", "min ms", "x none", "MAE", "RMSE", "p99", "max", ">0.1", ">0.5",
-    "err", "pixels", "sv tris", "gnd MAE", "wedges");
+  std::printf("  %-15s %6s %10s %10s %8s %8s %8s %7s %7s %7s %7s  %-4s %8s %10s %8s %8s\n",
+    "method", "frames", "median ms", "min ms", "x none", "MAE", "RMSE", "p99", "max", ">0.1",
+    ">0.5", "err", "pixels", "sv tris", "gnd MAE", "wedges");
 }
 
 void PrintTableRow(const Row& row, double noneMedian)
@@ -824,64 +827,64 @@ void PrintTableRow(const Row& row, double noneMedian)
   }
   std::printf("  %-15s %6d %10.2f %10.2f %8s %8.4f %8.4f %7.3f %7.3f %6.2f%% %6.2f%%  %-4s %8zu "
               "%10s %8s %8s\n",
-    row.Method.c_str(), row.Time.Frames, row.Time.Median, row.Time.Min, ratio, e.MAE, e.RMSE,
-    e.P99, e.Max, 100.0 * e.FracGt01, 100.0 * e.FracGt05, row.VisibilityMetric ? "vis" : "lum",
-    e.Pixels, shadowTriangles, ground, wedges);
+    row.Method.c_str(), row.Time.Frames, row.Time.Median, row.Time.Min, ratio, e.MAE, e.RMSE, e.P99,
+    e.Max, 100.0 * e.FracGt01, 100.0 * e.FracGt05, row.VisibilityMetric ? "vis" : "lum", e.Pixels,
+    shadowTriangles, ground, wedges);
   std::fflush(stdout);
 }
 
 bool WriteReadme(const std::string& path, const Options& options)
 {
   std::ofstream out(path);
-  out << "# PenumbraBench results\n\n"
-         "Written by PenumbraBench (Benchmarks/PenumbraBench.cxx); see Benchmarks/README.md.\n\n"
-         "Run: "
-      << options.Width << "x" << options.Height
-      << ". Per method: two renders at the starting camera (the error is measured on the\n"
-         "second; only one when the first takes over 2 s), then up to "
-      << options.WarmUp << " orbiting warm-up frames (none once\n"
-      << options.WarmUpSeconds
-      << " s have been spent warming up, those renders included), then up to " << options.Frames
-      << " timed\nframes, fewer once they pass " << options.MaxSeconds
-      << " s (at least 1; `frames` says how many). The camera orbits "
-      << options.AzimuthStep << " degrees before each\nwarm-up and timed frame. Truth: "
-      << options.TruthSamples
-      << " shadow rays per pixel.\n\n"
-         "## results.csv\n\n"
-         "- `scene`: scene name and light radius, `<scene>_r<radius>` (world units; the scenes\n"
-         "  are ~10 units across and the light, a spot of cone 55 degrees, ~12.5 units away).\n"
-         "- `method`: `none` (VTK without shadows), `shadowmap_1024|4096` (vtkShadowMapPass),\n"
-         "  `hard_volumes`, `averaged_N` (N light samples), `wedges` (vtkSoftShadowPass).\n"
-         "- `triangles`: triangles of the scene. `frames`: timed frames.\n"
-         "- `ms_median`, `ms_min`: Render() + glFinish per frame, in ms.\n"
-         "- `mae, rmse, p99, max`: mean, root mean square, 99th percentile and largest absolute\n"
-         "  error; `frac_gt_0.1`, `frac_gt_0.5`: fraction of the compared pixels whose error\n"
-         "  exceeds 0.1 and 0.5. All at the orbit's starting camera.\n\n"
-         "Which error each row reports:\n\n"
-         "- **visibility** (`hard_volumes`, `averaged_*`, `wedges`): |pass visibility - ray-traced\n"
-         "  visibility| of the light, over pixels where either is below 1 - 1e-3.\n"
-         "- **luminance** (`none`, `shadowmap_*`: no visibility image): |lum(image) -\n"
-         "  lum(reference)|, reference = A + v (D - A) per pixel (A: the scene with the light's\n"
-         "  intensity 0, D: lit without shadows, v: the ray-traced visibility), Rec. 709\n"
-         "  luminance of RGB in [0, 1], over pixels where v < 1 - 1e-3 or the image is darker\n"
-         "  than D by more than 1/255. `none`'s image is D.\n\n"
-         "Both kinds only count pixels where the rasterized and the ray-traced surface agree\n"
-         "(|truth depth - z-buffer| < 1e-3, not background). Luminance errors are scaled by the\n"
-         "light's contribution (D - A) and are therefore smaller than the visibility errors of the\n"
-         "same shadow: compare luminance rows with luminance rows, or use\n"
-         "results_luminance.csv, where every method (also the pass's) is scored on luminance.\n\n"
-         "Shadow maps: VTK 9.1's vtkShadowMapBakerPass + vtkShadowMapPass (exponential shadow\n"
-         "maps) set up as in VTK's TestShadowMapPass, with one fix: the map is baked with the\n"
-         "renderer's viewport shrunk to a square, because VTK 9.1 bakes a spot light's map at the\n"
-         "window's aspect ratio but looks it up at aspect 1, which misplaces every shadow in a\n"
-         "non-square window (`--methods shadowmap_1024_vtkaspect` shows it unfixed). VTK re-bakes\n"
-         "the maps only when a light or a prop changes, so under the orbiting camera of a static\n"
-         "scene the shadowmap rows time the lookup only; the pass, too, reuses its silhouettes\n"
-         "but draws its volumes every frame.\n\n"
-         "## truth.csv\n\n"
-         "Per scene: shadow rays per pixel, trace time, and the difference between two truths\n"
-         "traced with different seeds over their shadowed pixels (MAE, p99, max). The truth's own\n"
-         "error is about that MAE / sqrt(2).\n";
+  out
+    << "# PenumbraBench results\n\n"
+       "Written by PenumbraBench (Benchmarks/PenumbraBench.cxx); see Benchmarks/README.md.\n\n"
+       "Run: "
+    << options.Width << "x" << options.Height
+    << ". Per method: two renders at the starting camera (the error is measured on the\n"
+       "second; only one when the first takes over 2 s), then up to "
+    << options.WarmUp << " orbiting warm-up frames (none once\n"
+    << options.WarmUpSeconds
+    << " s have been spent warming up, those renders included), then up to " << options.Frames
+    << " timed\nframes, fewer once they pass " << options.MaxSeconds
+    << " s (at least 1; `frames` says how many). The camera orbits " << options.AzimuthStep
+    << " degrees before each\nwarm-up and timed frame. Truth: " << options.TruthSamples
+    << " shadow rays per pixel.\n\n"
+       "## results.csv\n\n"
+       "- `scene`: scene name and light radius, `<scene>_r<radius>` (world units; the scenes\n"
+       "  are ~10 units across and the light, a spot of cone 55 degrees, ~12.5 units away).\n"
+       "- `method`: `none` (VTK without shadows), `shadowmap_1024|4096` (vtkShadowMapPass),\n"
+       "  `hard_volumes`, `averaged_N` (N light samples), `wedges` (vtkSoftShadowPass).\n"
+       "- `triangles`: triangles of the scene. `frames`: timed frames.\n"
+       "- `ms_median`, `ms_min`: Render() + glFinish per frame, in ms.\n"
+       "- `mae, rmse, p99, max`: mean, root mean square, 99th percentile and largest absolute\n"
+       "  error; `frac_gt_0.1`, `frac_gt_0.5`: fraction of the compared pixels whose error\n"
+       "  exceeds 0.1 and 0.5. All at the orbit's starting camera.\n\n"
+       "Which error each row reports:\n\n"
+       "- **visibility** (`hard_volumes`, `averaged_*`, `wedges`): |pass visibility - ray-traced\n"
+       "  visibility| of the light, over pixels where either is below 1 - 1e-3.\n"
+       "- **luminance** (`none`, `shadowmap_*`: no visibility image): |lum(image) -\n"
+       "  lum(reference)|, reference = A + v (D - A) per pixel (A: the scene with the light's\n"
+       "  intensity 0, D: lit without shadows, v: the ray-traced visibility), Rec. 709\n"
+       "  luminance of RGB in [0, 1], over pixels where v < 1 - 1e-3 or the image is darker\n"
+       "  than D by more than 1/255. `none`'s image is D.\n\n"
+       "Both kinds only count pixels where the rasterized and the ray-traced surface agree\n"
+       "(|truth depth - z-buffer| < 1e-3, not background). Luminance errors are scaled by the\n"
+       "light's contribution (D - A) and are therefore smaller than the visibility errors of the\n"
+       "same shadow: compare luminance rows with luminance rows, or use\n"
+       "results_luminance.csv, where every method (also the pass's) is scored on luminance.\n\n"
+       "Shadow maps: VTK 9.1's vtkShadowMapBakerPass + vtkShadowMapPass (exponential shadow\n"
+       "maps) set up as in VTK's TestShadowMapPass, with one fix: the map is baked with the\n"
+       "renderer's viewport shrunk to a square, because VTK 9.1 bakes a spot light's map at the\n"
+       "window's aspect ratio but looks it up at aspect 1, which misplaces every shadow in a\n"
+       "non-square window (`--methods shadowmap_1024_vtkaspect` shows it unfixed). VTK re-bakes\n"
+       "the maps only when a light or a prop changes, so under the orbiting camera of a static\n"
+       "scene the shadowmap rows time the lookup only; the pass, too, reuses its silhouettes\n"
+       "but draws its volumes every frame.\n\n"
+       "## truth.csv\n\n"
+       "Per scene: shadow rays per pixel, trace time, and the difference between two truths\n"
+       "traced with different seeds over their shadowed pixels (MAE, p99, max). The truth's own\n"
+       "error is about that MAE / sqrt(2).\n";
   return static_cast<bool>(out);
 }
 
@@ -943,8 +946,8 @@ int main(int argc, char* argv[])
     }
     for (const std::string& name : options.Methods)
     {
-      auto it = std::find_if(
-        all.begin(), all.end(), [&](const MethodSpec& m) { return m.Name == name; });
+      auto it =
+        std::find_if(all.begin(), all.end(), [&](const MethodSpec& m) { return m.Name == name; });
       if (it == all.end())
       {
         std::fprintf(stderr, "%s: unknown method %s\n", argv[0], name.c_str());
@@ -991,8 +994,8 @@ int main(int argc, char* argv[])
   std::fprintf(stagesCsv, "\n");
   std::fprintf(lumCsv, "%s\n", CsvHeader);
   std::fprintf(groundCsv, "%s\n", CsvHeader);
-  std::fprintf(truthCsv,
-    "scene,width,height,samples,trace_ms,noise_pixels,noise_mae,noise_p99,noise_max\n");
+  std::fprintf(
+    truthCsv, "scene,width,height,samples,trace_ms,noise_pixels,noise_mae,noise_p99,noise_max\n");
   if (!WriteReadme(out + "/README.md", options))
   {
     std::fprintf(stderr, "error: cannot write %s/README.md\n", out.c_str());
@@ -1002,8 +1005,7 @@ int main(int argc, char* argv[])
   std::printf("PenumbraBench: %dx%d, up to %d frames (+%d warm-up, %.0f s cap) per method, "
               "truth %d spp, %zu methods, %zu scenes x %zu radii -> %s\n",
     options.Width, options.Height, options.Frames, options.WarmUp, options.MaxSeconds,
-    options.TruthSamples, methods.size(), options.Scenes.size(), options.Radii.size(),
-    out.c_str());
+    options.TruthSamples, methods.size(), options.Scenes.size(), options.Radii.size(), out.c_str());
 
   bool ok = true;
   std::vector<std::string> oddities;
@@ -1032,8 +1034,8 @@ int main(int argc, char* argv[])
     for (double radius : options.Radii)
     {
       const std::string label = sceneName + "_r" + RadiusLabel(radius);
-      const bool images = options.Images == "all" ||
-        (options.Images == "classic" && sceneName == "classic");
+      const bool images =
+        options.Images == "all" || (options.Images == "classic" && sceneName == "classic");
 
       // One window and renderer for the whole run (one X connection); the scene's actors and a
       // new key light per scene and radius.
@@ -1061,7 +1063,8 @@ int main(int argc, char* argv[])
       start->DeepCopy(renderer->GetActiveCamera());
       // vtkCamera::DeepCopy does not call Modified() (VTK 9.1): without it the mappers keep the
       // lighting uniforms (and, unless the renderer changed, the view matrices) of the last view.
-      auto resetCamera = [&]() {
+      auto resetCamera = [&]()
+      {
         renderer->GetActiveCamera()->DeepCopy(start);
         renderer->GetActiveCamera()->Modified();
         renderer->ResetCameraClippingRange();
@@ -1124,8 +1127,7 @@ int main(int argc, char* argv[])
         tracer->Update();
         const float* second =
           static_cast<const float*>(tracer->GetVisibilityImage(0)->GetScalarPointer());
-        noise =
-          penumbra::metrics::CompareTruths(truth.data(), second, truthDepth.data(), pixels);
+        noise = penumbra::metrics::CompareTruths(truth.data(), second, truthDepth.data(), pixels);
       }
       std::fprintf(truthCsv, "%s,%d,%d,%d,%.1f,%zu,%.6f,%.6f,%.6f\n", label.c_str(), width, height,
         options.TruthSamples, traceMs, noise.Pixels, noise.MAE, noise.P99, noise.Max);
@@ -1247,8 +1249,8 @@ int main(int argc, char* argv[])
         }
         if (images)
         {
-          ok = WriteRGB(frame.RGB, width, height, out + "/" + label + "_" + spec.Name + ".png") &&
-            ok;
+          ok =
+            WriteRGB(frame.RGB, width, height, out + "/" + label + "_" + spec.Name + ".png") && ok;
         }
 
         row.Time = TimeFrames(window, renderer, options, startRenderSeconds);
@@ -1319,7 +1321,8 @@ int main(int argc, char* argv[])
     }
   }
   std::printf("\nwrote %s/results.csv, results_luminance.csv, results_ground.csv, truth.csv, "
-              "README.md\n", out.c_str());
+              "README.md\n",
+    out.c_str());
 
   std::fflush(stdout);
   if (options.Plot)

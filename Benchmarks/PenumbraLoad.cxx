@@ -53,15 +53,15 @@
 #include "vtk_glew.h"
 
 #include <X11/Xlib.h> // the display, opened here so that a refused connection is retried
-#include <malloc.h> // malloc_trim: give freed heap back so VmRSS tracks what is live
+#include <malloc.h>   // malloc_trim: give freed heap back so VmRSS tracks what is live
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -77,15 +77,15 @@
 namespace
 {
 using penumbra::bench::Clock;
-using penumbra::bench::SecondsSince;
 using penumbra::bench::CountTriangles;
-using penumbra::bench::vtkCountingOutputWindow;
 using penumbra::bench::DetachedOutput;
-using penumbra::bench::MakeShadedActor;
 using penumbra::bench::GrabFrame;
+using penumbra::bench::MakeShadedActor;
+using penumbra::bench::SecondsSince;
 using penumbra::bench::SplitList;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
+using penumbra::bench::vtkCountingOutputWindow;
 using penumbra::bench::WriteRGB;
 
 double MillisecondsSince(Clock::time_point start)
@@ -391,8 +391,8 @@ Scene MakeActors1000()
     }
     datasets.insert(data);
     const double hue = unit(random);
-    auto actor = MakeShadedActor(
-      data, 0.45 + 0.5 * hue, 0.35 + 0.4 * (1.0 - hue), 0.3 + 0.5 * unit(random));
+    auto actor =
+      MakeShadedActor(data, 0.45 + 0.5 * hue, 0.35 + 0.4 * (1.0 - hue), 0.3 + 0.5 * unit(random));
     actor->SetScale(size);
     // Spheres float (their shadows fall away from them), cubes and cones stand on the ground.
     const double z = kind == 0 ? 0.3 + 1.2 * unit(random) : 0.5 * size;
@@ -429,7 +429,8 @@ vtkSmartPointer<vtkPolyData> MakeTorus(double ring, double cross, int u, int v)
     for (int j = 0; j < v; ++j)
     {
       const double b = 2.0 * vtkMath::Pi() * j / v;
-      const double normal[3] = { std::cos(b) * std::cos(a), std::cos(b) * std::sin(a), std::sin(b) };
+      const double normal[3] = { std::cos(b) * std::cos(a), std::cos(b) * std::sin(a),
+        std::sin(b) };
       const vtkIdType id = static_cast<vtkIdType>(i) * v + j;
       points->SetPoint(id, ring * std::cos(a) + cross * normal[0],
         ring * std::sin(a) + cross * normal[1], cross * normal[2]);
@@ -854,8 +855,8 @@ void PrintRow(const Row& r)
     r.Method.c_str(), r.FirstMs, r.Orbit.Median, r.Light.Median, r.SilhouettesLight,
     r.Memory.RssMiB, r.Memory.HwmMiB, r.RssGrowthMiB, r.PassGpuMiB,
     static_cast<long long>(r.Triangles), static_cast<long long>(r.ShadowTriangles),
-    static_cast<long long>(r.Wedges), r.Culled, r.ZFail, lights, r.ShadowedPixels,
-    r.IsolatedPixels, r.Errors + r.GLErrors, r.Warnings);
+    static_cast<long long>(r.Wedges), r.Culled, r.ZFail, lights, r.ShadowedPixels, r.IsolatedPixels,
+    r.Errors + r.GLErrors, r.Warnings);
   std::fflush(stdout);
 }
 
@@ -871,14 +872,15 @@ std::string CsvQuote(const std::string& text)
 
 const char* CsvTag = "@csv ";
 
-const char* CsvHeader = "scene,method,width,height,triangles,lights_expected,lights_shadowing,"
-                        "lights_with_shadow,first_ms,orbit_frames,orbit_ms_median,orbit_ms_min,"
-                        "orbit_silhouette_updates_per_frame,light_frames,light_ms_median,"
-                        "light_ms_min,light_silhouette_updates_per_frame,rss_mib,hwm_mib,"
-                        "rss_growth_mib,pass_gpu_mib,vtk_gpu_estimate_mib,shadow_volume_triangles,"
-                        "wedges,full_viewport_wedges,culled_shadows,zfail_volumes,shadowed_pixels,"
-                        "nan_pixels,out_of_range_pixels,isolated_pixels,vtk_errors,vtk_warnings,gl_errors,"
-                        "first_message";
+const char* CsvHeader =
+  "scene,method,width,height,triangles,lights_expected,lights_shadowing,"
+  "lights_with_shadow,first_ms,orbit_frames,orbit_ms_median,orbit_ms_min,"
+  "orbit_silhouette_updates_per_frame,light_frames,light_ms_median,"
+  "light_ms_min,light_silhouette_updates_per_frame,rss_mib,hwm_mib,"
+  "rss_growth_mib,pass_gpu_mib,vtk_gpu_estimate_mib,shadow_volume_triangles,"
+  "wedges,full_viewport_wedges,culled_shadows,zfail_volumes,shadowed_pixels,"
+  "nan_pixels,out_of_range_pixels,isolated_pixels,vtk_errors,vtk_warnings,gl_errors,"
+  "first_message";
 
 void WriteCsvRow(std::FILE* file, const Row& r, const Options& o)
 {
@@ -888,10 +890,10 @@ void WriteCsvRow(std::FILE* file, const Row& r, const Options& o)
     r.Scene.c_str(), r.Method.c_str(), o.Width, o.Height, static_cast<long long>(r.Triangles),
     r.ExpectedLights, r.ShadowingLights, r.LightsWithShadow, r.FirstMs, r.Orbit.Frames,
     r.Orbit.Median, r.Orbit.Min, r.SilhouettesOrbit, r.Light.Frames, r.Light.Median, r.Light.Min,
-    r.SilhouettesLight, r.Memory.RssMiB, r.Memory.HwmMiB, r.RssGrowthMiB, r.PassGpuMiB,
-    r.VtkGpuMiB, static_cast<long long>(r.ShadowTriangles), static_cast<long long>(r.Wedges),
-    static_cast<long long>(r.FullViewportWedges), r.Culled, r.ZFail, r.ShadowedPixels,
-    r.NanPixels, r.OutOfRangePixels, r.IsolatedPixels, r.Errors, r.Warnings, r.GLErrors,
+    r.SilhouettesLight, r.Memory.RssMiB, r.Memory.HwmMiB, r.RssGrowthMiB, r.PassGpuMiB, r.VtkGpuMiB,
+    static_cast<long long>(r.ShadowTriangles), static_cast<long long>(r.Wedges),
+    static_cast<long long>(r.FullViewportWedges), r.Culled, r.ZFail, r.ShadowedPixels, r.NanPixels,
+    r.OutOfRangePixels, r.IsolatedPixels, r.Errors, r.Warnings, r.GLErrors,
     CsvQuote(r.FirstMessage).c_str());
   std::fflush(file);
 }
@@ -983,8 +985,7 @@ int RunChild(const std::string& sceneName, const std::string& method, bool first
                 "VTK buffers (estimate) %.1f MiB\n",
       scene.Name.c_str(), scene.Actors.size(), scene.Datasets,
       static_cast<long long>(scene.Triangles), scene.Lights.size(), frames, buildSeconds,
-      baselineMs,
-      beforeBuild.RssMiB, afterBuild.RssMiB - beforeBuild.RssMiB,
+      baselineMs, beforeBuild.RssMiB, afterBuild.RssMiB - beforeBuild.RssMiB,
       baseline.RssMiB - afterBuild.RssMiB, baseline.RssMiB, vtkGpuBytes / MiB);
     PrintHeader();
   }
@@ -1003,8 +1004,8 @@ int RunChild(const std::string& sceneName, const std::string& method, bool first
   std::vector<std::string> failures;
   if (row.Errors || row.GLErrors)
   {
-    failures.push_back(std::to_string(row.Errors) + " VTK errors, " +
-      std::to_string(row.GLErrors) + " GL errors; first message: " + row.FirstMessage);
+    failures.push_back(std::to_string(row.Errors) + " VTK errors, " + std::to_string(row.GLErrors) +
+      " GL errors; first message: " + row.FirstMessage);
   }
   if (row.ShadowsOn && row.ShadowingLights < row.ExpectedLights)
   {
@@ -1175,8 +1176,8 @@ int main(int argc, char* argv[])
   // The parent opens no window and builds nothing: each child starts from the same small
   // process, and nothing (X connection, GL context, threads) is shared across fork().
   std::vector<Job> jobs;
-  const bool hasAutomatic = std::find(options.Methods.begin(), options.Methods.end(),
-                              "automatic") != options.Methods.end();
+  const bool hasAutomatic =
+    std::find(options.Methods.begin(), options.Methods.end(), "automatic") != options.Methods.end();
   for (const std::string& scene : options.Scenes)
   {
     for (std::size_t m = 0; m < options.Methods.size(); ++m)
@@ -1262,7 +1263,8 @@ int main(int argc, char* argv[])
   }
   std::printf(
     "\ncolumns: first = first frame with the pass, after VTK alone drew the scene once (shader "
-    "rebuilds, topology, silhouettes, the pass's uploads); orbit, light = median ms per frame with the camera orbiting / the "
+    "rebuilds, topology, silhouettes, the pass's uploads); orbit, light = median ms per frame with "
+    "the camera orbiting / the "
     "lights turning; sil/fr = silhouette updates per frame with the lights turning; RSS = VmRSS "
     "after the frames, HWM = VmHWM (the process's peak), +RSS = RSS over the same process's "
     "baseline (VTK alone, scene drawn); GPU = the pass's GetGraphicsMemoryBytes; sv tris, wedges, "

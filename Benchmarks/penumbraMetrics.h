@@ -30,14 +30,14 @@ namespace metrics
 /// Summary of per-pixel absolute errors.
 struct ErrorStats
 {
-  std::size_t Pixels = 0;   ///< pixels compared
-  std::size_t Skipped = 0;  ///< candidate pixels left out: background or different surfaces
-  double MAE = 0.0;         ///< mean absolute error
-  double RMSE = 0.0;        ///< root mean square error
-  double P99 = 0.0;         ///< 99th percentile (nearest rank)
-  double Max = 0.0;         ///< largest error
-  double FracGt01 = 0.0;    ///< fraction of compared pixels with error > 0.1
-  double FracGt05 = 0.0;    ///< fraction of compared pixels with error > 0.5
+  std::size_t Pixels = 0;  ///< pixels compared
+  std::size_t Skipped = 0; ///< candidate pixels left out: background or different surfaces
+  double MAE = 0.0;        ///< mean absolute error
+  double RMSE = 0.0;       ///< root mean square error
+  double P99 = 0.0;        ///< 99th percentile (nearest rank)
+  double Max = 0.0;        ///< largest error
+  double FracGt01 = 0.0;   ///< fraction of compared pixels with error > 0.1
+  double FracGt05 = 0.0;   ///< fraction of compared pixels with error > 0.5
 };
 
 /// Statistics of a list of absolute errors (the list is reordered).
@@ -93,8 +93,8 @@ inline bool SameSurface(float truthDepth, float zbuffer, float depthTolerance)
 /// Thresholds of the comparisons.
 struct Options
 {
-  float DepthTolerance = 1e-3f; ///< |truth depth - z-buffer| below this: same surface
-  float LitThreshold = 1e-3f;   ///< visibility below 1 - this counts as (partly) shadowed
+  float DepthTolerance = 1e-3f;         ///< |truth depth - z-buffer| below this: same surface
+  float LitThreshold = 1e-3f;           ///< visibility below 1 - this counts as (partly) shadowed
   double DarkerThreshold = 1.0 / 255.0; ///< method darker than D by more than this: shadowed
 };
 

@@ -413,12 +413,14 @@ int main(int argc, char* argv[])
   truth->SetSamplesPerLight(options.TruthSamples);
   const auto traceStart = std::chrono::steady_clock::now();
   const bool traced = truth->Update();
-  const double traceMs = std::chrono::duration<double, std::milli>(
-    std::chrono::steady_clock::now() - traceStart).count();
+  const double traceMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart)
+      .count();
   vtkImageData* truthVisibility = traced ? truth->GetVisibilityImage(lightIndex) : nullptr;
   vtkImageData* truthDepth = traced ? truth->GetDepthImage() : nullptr;
 
-  auto sizeMatches = [&](vtkImageData* image) {
+  auto sizeMatches = [&](vtkImageData* image)
+  {
     int dims[3];
     image->GetDimensions(dims);
     return dims[0] == width && dims[1] == height;
@@ -444,10 +446,10 @@ int main(int argc, char* argv[])
   {
     compared = true;
     // Pixels in shadow in either image, where raster and ray tracer saw the same surface.
-    passError = penumbra::metrics::CompareVisibility(
-      static_cast<float*>(passVisibility->GetScalarPointer()),
-      static_cast<float*>(truthVisibility->GetScalarPointer()),
-      static_cast<float*>(truthDepth->GetScalarPointer()), zbuffer->GetPointer(0), pixels);
+    passError =
+      penumbra::metrics::CompareVisibility(static_cast<float*>(passVisibility->GetScalarPointer()),
+        static_cast<float*>(truthVisibility->GetScalarPointer()),
+        static_cast<float*>(truthDepth->GetScalarPointer()), zbuffer->GetPointer(0), pixels);
     if (!WriteGrey(static_cast<float*>(passVisibility->GetScalarPointer()), width, height,
           out + "/visibility_pass.png") ||
       !WriteGrey(static_cast<float*>(truthVisibility->GetScalarPointer()), width, height,
@@ -534,13 +536,15 @@ int main(int argc, char* argv[])
     const ShortRow rows[] = {
       { "none", []() { return vtkSmartPointer<vtkRenderPass>(); } },
       { "hard_volumes",
-        []() {
+        []()
+        {
           auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
           pass->SetMethodToHardVolumes();
           return vtkSmartPointer<vtkRenderPass>(pass);
         } },
       { "averaged_16",
-        []() {
+        []()
+        {
           auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
           pass->SetMethodToAveragedHardShadows();
           pass->SetLightSamples(16);
@@ -591,8 +595,8 @@ int main(int argc, char* argv[])
         timing = TimeFrames(window, camera, 1, options.Frames, 5.0);
       }
       std::printf("    %-15s %10.1f %7.2f %8.4f %6.2f%%  %s\n", row.Name, timing.Median,
-        plain.Median > 0.0 ? timing.Median / plain.Median : 0.0, error.MAE,
-        100.0 * error.FracGt01, onVisibility ? "visibility" : "luminance");
+        plain.Median > 0.0 ? timing.Median / plain.Median : 0.0, error.MAE, 100.0 * error.FracGt01,
+        onVisibility ? "visibility" : "luminance");
       std::fflush(stdout);
       renderer->SetPass(nullptr);
       if (pass)
@@ -600,8 +604,9 @@ int main(int argc, char* argv[])
         pass->ReleaseGraphicsResources(window);
       }
     }
-    std::printf("    (luminance errors are scaled by the light's share of each pixel and read lower "
-                "than visibility errors of the same shadow)\n");
+    std::printf(
+      "    (luminance errors are scaled by the light's share of each pixel and read lower "
+      "than visibility errors of the same shadow)\n");
   }
 
   std::printf("wrote:\n");

@@ -287,7 +287,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
   double scale = 1.0;
 
   // Everything that can go wrong ends here, with an empty output that still has the arrays.
-  auto finish = [&]() {
+  auto finish = [&]()
+  {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(result.Points.size()));
@@ -360,7 +361,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
   }
   std::vector<Polygon3> casters;
   vtkIdType droppedCells = 0;
-  auto addCaster = [&](vtkIdType n, const vtkIdType* ids) {
+  auto addCaster = [&](vtkIdType n, const vtkIdType* ids)
+  {
     Polygon3 poly;
     double top = 0.0;
     for (vtkIdType j = 0; j < n; ++j)
@@ -414,9 +416,9 @@ int vtkPlanarSoftShadowFilter::RequestData(
     return finish();
   }
   int dropped = 0;
-  const std::vector<glm::dvec4> samples = SampleLight(this->Positional ? light : glm::normalize(light),
-    this->Positional, this->LightRadius, this->LightSamples, this->SamplePattern,
-    0.5 * (lo + hi), origin, toPlane, dropped);
+  const std::vector<glm::dvec4> samples = SampleLight(
+    this->Positional ? light : glm::normalize(light), this->Positional, this->LightRadius,
+    this->LightSamples, this->SamplePattern, 0.5 * (lo + hi), origin, toPlane, dropped);
   if (dropped > 0)
   {
     vtkWarningMacro(<< dropped << " light samples on or below the plane were left out.");
@@ -450,7 +452,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
   {
     return finish();
   }
-  const double margin = this->OutputLitRegion ? this->LitMargin * std::max(phi.x - plo.x, phi.y - plo.y) : 0.0;
+  const double margin =
+    this->OutputLitRegion ? this->LitMargin * std::max(phi.x - plo.x, phi.y - plo.y) : 0.0;
   plo -= margin;
   phi += margin;
   const double extent = std::max(phi.x - plo.x, phi.y - plo.y);
@@ -460,7 +463,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
   }
   centre = 0.5 * (plo + phi);
   scale = IntegerExtent / extent;
-  auto toInt = [&](const glm::dvec2& p) {
+  auto toInt = [&](const glm::dvec2& p)
+  {
     const glm::dvec2 q = (p - centre) * scale;
     return ClipperLib::IntPoint(std::llround(q.x), std::llround(q.y));
   };
@@ -552,7 +556,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
   // Coverage of each face: faces joined by unconstrained edges share it, so one point-in-rings
   // test per component, at the centroid of its largest face (well inside, whatever slivers the
   // component has). Levels are nested, so a binary search finds the highest one containing it.
-  auto classify = [&]() {
+  auto classify = [&]()
+  {
     std::vector<int> coverage;
     for (auto f : cdt.all_face_handles())
     {
@@ -621,7 +626,7 @@ int vtkPlanarSoftShadowFilter::RequestData(
       }
       coverage.push_back(covered);
     }
-      return coverage;
+    return coverage;
   };
 
   // Refinement against long, thin triangles (Mach bands), in the penumbra only, in rounds and
@@ -641,9 +646,8 @@ int vtkPlanarSoftShadowFilter::RequestData(
     {
       const std::vector<int> coverage = classify();
       std::vector<CDT::Point> steiner;
-      auto penumbra = [&](CDT::Face_handle f) {
-        return !cdt.is_infinite(f) && coverage[f->info()] > 0 && coverage[f->info()] < count;
-      };
+      auto penumbra = [&](CDT::Face_handle f)
+      { return !cdt.is_infinite(f) && coverage[f->info()] > 0 && coverage[f->info()] < count; };
       for (auto f : cdt.finite_face_handles())
       {
         if (!penumbra(f) || static_cast<int>(steiner.size()) >= budget)
@@ -670,14 +674,16 @@ int vtkPlanarSoftShadowFilter::RequestData(
           const CDT::Face_handle g = f->neighbor(i);
           const int j = g->index(f);
           const bool encroachedFromThere = !cdt.is_infinite(g) && penumbra(g) &&
-            glm::dot(a - ToDouble(g->vertex(j)->point()), b - ToDouble(g->vertex(j)->point())) < 0.0;
+            glm::dot(a - ToDouble(g->vertex(j)->point()), b - ToDouble(g->vertex(j)->point())) <
+              0.0;
           if (!encroachedFromThere || &*f < &*g)
           {
             const glm::dvec2 m = 0.5 * (a + b);
             steiner.emplace_back(m.x, m.y);
           }
         }
-        const double ab = glm::length(p[1] - p[0]), bd = glm::length(p[2] - p[1]), da = glm::length(p[0] - p[2]);
+        const double ab = glm::length(p[1] - p[0]), bd = glm::length(p[2] - p[1]),
+                     da = glm::length(p[0] - p[2]);
         const double shortest = std::min({ ab, bd, da });
         // sin of the smallest angle (opposite the shortest edge) = 2 area / (the other two edges)
         const double others = shortest == ab ? bd * da : shortest == bd ? ab * da : ab * bd;
@@ -824,9 +830,7 @@ int vtkPlanarSoftShadowFilter::RequestData(
       {
         id = static_cast<vtkIdType>(result.Points.size());
         result.Points.push_back(ToDouble(v->point()));
-        const double lit = region == 0 ? 0.0
-          : region == 2               ? 1.0
-                                      : 1.0 - banded / count;
+        const double lit = region == 0 ? 0.0 : region == 2 ? 1.0 : 1.0 - banded / count;
         result.Intensity.push_back(static_cast<float>(std::min(1.0, std::max(0.0, lit))));
       }
       result.Triangles.push_back(id);
@@ -860,8 +864,8 @@ void vtkPlanarSoftShadowFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Positional: " << this->Positional << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "LightSamples: " << this->LightSamples << "\n";
-  os << indent << "SamplePattern: " << (this->SamplePattern == SUNFLOWER ? "Sunflower" : "PolarGrid")
-     << "\n";
+  os << indent
+     << "SamplePattern: " << (this->SamplePattern == SUNFLOWER ? "Sunflower" : "PolarGrid") << "\n";
   os << indent << "PlaneOrigin: (" << this->PlaneOrigin[0] << ", " << this->PlaneOrigin[1] << ", "
      << this->PlaneOrigin[2] << ")\n";
   os << indent << "PlaneNormal: (" << this->PlaneNormal[0] << ", " << this->PlaneNormal[1] << ", "

@@ -48,8 +48,8 @@ public:
   /// Light sample patterns over the disk (or cone) of the light.
   enum SamplePatterns
   {
-    SUNFLOWER = 0,  ///< Vogel's sunflower, as vtkSoftShadowPass: equal-area, golden-angle turns
-    POLAR_GRID = 1  ///< concentric equal-area rings, evenly spaced samples on each
+    SUNFLOWER = 0, ///< Vogel's sunflower, as vtkSoftShadowPass: equal-area, golden-angle turns
+    POLAR_GRID = 1 ///< concentric equal-area rings, evenly spaced samples on each
   };
 
   ///@{

@@ -27,8 +27,8 @@ bool IsFinite(const glm::dvec3& p)
 
 /// Welds points closer than `tolerance` (grid hashing, each point checked against its 27 cells).
 /// Returns, for every input point, its welded index or InvalidIndex for non-finite points.
-std::vector<std::uint32_t> WeldPoints(const std::vector<glm::dvec3>& points, double tolerance,
-  std::vector<glm::dvec3>& welded)
+std::vector<std::uint32_t> WeldPoints(
+  const std::vector<glm::dvec3>& points, double tolerance, std::vector<glm::dvec3>& welded)
 {
   struct CellHash
   {
@@ -164,9 +164,9 @@ void BuildEdges(CasterTopology& topo)
       }
     }
   }
-  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& l, const HalfEdge& r) {
-    return l.A != r.A ? l.A < r.A : (l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle);
-  });
+  std::sort(halfEdges.begin(), halfEdges.end(),
+    [](const HalfEdge& l, const HalfEdge& r)
+    { return l.A != r.A ? l.A < r.A : (l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle); });
 
   topo.Uses.reserve(halfEdges.size());
   TopologyReport& report = topo.Report;
@@ -357,7 +357,8 @@ CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTole
     // A malformed cell naming a point that does not exist would make vtkPolygon read past the
     // points, and ids >= 2^32 would alias valid points once narrowed: drop the whole cell.
     const vtkIdType pointCount = pts->GetNumberOfPoints();
-    auto validIds = [&](vtkIdType count, const vtkIdType* cellIds) {
+    auto validIds = [&](vtkIdType count, const vtkIdType* cellIds)
+    {
       const bool valid = std::all_of(cellIds, cellIds + count,
         [pointCount](vtkIdType id) { return id >= 0 && id < pointCount; });
       if (!valid)

@@ -29,10 +29,10 @@ namespace penumbra
 
 enum class EdgeKind : std::uint8_t
 {
-  Boundary,   ///< one triangle
-  Manifold,   ///< two triangles walking it in opposite directions
+  Boundary,     ///< one triangle
+  Manifold,     ///< two triangles walking it in opposite directions
   Inconsistent, ///< two triangles walking it in the same direction (flipped winding)
-  NonManifold ///< three or more triangles
+  NonManifold   ///< three or more triangles
 };
 
 /// One triangle's use of an edge: +1 when it walks Edge::A -> Edge::B, -1 otherwise.
@@ -76,8 +76,8 @@ struct TopologyReport
 struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
 {
   glm::dvec3 Origin{ 0.0 };          ///< centre of the bounds; Points are relative to it
-  std::vector<glm::dvec3> Points;     ///< welded, relative to Origin
-  std::vector<glm::uvec3> Triangles;  ///< indices into Points, none degenerate
+  std::vector<glm::dvec3> Points;    ///< welded, relative to Origin
+  std::vector<glm::uvec3> Triangles; ///< indices into Points, none degenerate
   std::vector<Edge> Edges;
   std::vector<EdgeUse> Uses;
   glm::dvec3 BoundsMin{ 0.0 }, BoundsMax{ 0.0 }; ///< relative to Origin
@@ -89,7 +89,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
   /// Relative weld tolerance used by Build (times the bounds diagonal).
   static constexpr double DefaultWeldTolerance = 1e-7;
 
-  static CasterTopology Build(vtkPolyData* input, double relativeWeldTolerance = DefaultWeldTolerance);
+  static CasterTopology Build(
+    vtkPolyData* input, double relativeWeldTolerance = DefaultWeldTolerance);
   /// Same, from raw triangles (used by tests and fuzzing).
   static CasterTopology Build(const std::vector<glm::dvec3>& points,
     const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance = DefaultWeldTolerance);

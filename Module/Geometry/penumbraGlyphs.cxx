@@ -29,9 +29,8 @@ glm::dquat OrientationQuaternion(int mode, const double* o)
   {
     case GlyphSettings::Rotation:
     {
-      auto about = [](double degrees, const glm::dvec3& axis) {
-        return glm::angleAxis(glm::radians(degrees), axis);
-      };
+      auto about = [](double degrees, const glm::dvec3& axis)
+      { return glm::angleAxis(glm::radians(degrees), axis); };
       return about(o[2], { 0, 0, 1 }) * about(o[0], { 1, 0, 0 }) * about(o[1], { 0, 1, 0 });
     }
     case GlyphSettings::Quaternion:

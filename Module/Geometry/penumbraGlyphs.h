@@ -25,7 +25,7 @@ struct GlyphSettings
   enum OrientationModes
   {
     Direction = 0,
-    Rotation = 1, ///< degrees about x, y and z, applied as VTK does (z, then x, then y)
+    Rotation = 1,  ///< degrees about x, y and z, applied as VTK does (z, then x, then y)
     Quaternion = 2 ///< (w, x, y, z)
   };
   bool Scaling = true;

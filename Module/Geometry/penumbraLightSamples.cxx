@@ -48,8 +48,7 @@ std::vector<glm::dvec4> SpreadLightSamples(
   {
     const double cosTheta = 1.0 - (k + 0.5) / count * (1.0 - cosMax);
     const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta)), phi = k * golden;
-    samples.emplace_back(
-      cosTheta * axis + sinTheta * (std::cos(phi) * u + std::sin(phi) * v), 0.0);
+    samples.emplace_back(cosTheta * axis + sinTheta * (std::cos(phi) * u + std::sin(phi) * v), 0.0);
   }
   return samples;
 }

@@ -102,7 +102,8 @@ void Emit(std::vector<PlateauVertex>& out, const glm::dvec2& p, double t)
 }
 
 /// Extent of `points` around `centre` along `direction` (0 if all lie behind).
-double Support(const std::vector<glm::dvec2>& points, const glm::dvec2& centre, const glm::dvec2& direction)
+double Support(
+  const std::vector<glm::dvec2>& points, const glm::dvec2& centre, const glm::dvec2& direction)
 {
   double extent = 0.0;
   for (const glm::dvec2& q : points)
@@ -144,12 +145,11 @@ PlateauReport BuildPlateaus(const CasterTopology& topo, const ShadowVolume& volu
     return report;
   }
   const std::size_t n = topo.Points.size();
-  auto world = [&](std::uint32_t i) {
-    return glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0));
-  };
+  auto world = [&](std::uint32_t i)
+  { return glm::dvec3(objectToWorld * glm::dvec4(topo.Points[i], 1.0)); };
   // Geometry on (or under) the plane cannot shadow it: the receiver itself, when it casts too.
-  const double onPlane = 1e-6 * glm::length(glm::dvec3(objectToWorld *
-                                  glm::dvec4(topo.BoundsMax - topo.BoundsMin, 0.0)));
+  const double onPlane = 1e-6 *
+    glm::length(glm::dvec3(objectToWorld * glm::dvec4(topo.BoundsMax - topo.BoundsMin, 0.0)));
   auto above = [&](const glm::dvec3& x) { return plane.Height(x) > onPlane; };
 
   // The hard drop shadow: the casting triangles (the light cap) at depth 0.

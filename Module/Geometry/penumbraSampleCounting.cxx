@@ -73,8 +73,8 @@ std::vector<std::uint32_t> PotentialSilhouette(const CasterTopology& topo,
   return edges;
 }
 
-int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a, const EdgeFace* faces,
-  int faceCount, bool frontFacesOnly)
+int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a, const EdgeFace* faces, int faceCount,
+  bool frontFacesOnly)
 {
   int multiplicity = 0;
   for (int k = 0; k < faceCount; ++k)

@@ -58,8 +58,9 @@ VTKPENUMBRAGEOMETRY_EXPORT LightFacing FacingOverLight(
  * light is in world space as for FacingOverLight. `frontFacesOnly` is the rule of the centre's
  * shadow volume (ShadowVolume::FrontFacesSuffice).
  */
-VTKPENUMBRAGEOMETRY_EXPORT std::vector<std::uint32_t> PotentialSilhouette(const CasterTopology& topo,
-  const glm::dmat4& objectToWorld, const glm::dvec4& light, double radius, bool frontFacesOnly);
+VTKPENUMBRAGEOMETRY_EXPORT std::vector<std::uint32_t> PotentialSilhouette(
+  const CasterTopology& topo, const glm::dmat4& objectToWorld, const glm::dvec4& light,
+  double radius, bool frontFacesOnly);
 
 /**
  * One triangle's use of an edge a -> b, as the per-pixel evaluation needs it: the triangle's

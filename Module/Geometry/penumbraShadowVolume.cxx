@@ -17,8 +17,8 @@ bool LightOutsideBounds(const CasterTopology& topo, const glm::dvec4& light)
     glm::any(glm::greaterThan(p, topo.BoundsMax + margin));
 }
 
-void AppendTriangle(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b,
-  std::uint32_t c)
+void AppendTriangle(
+  std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b, std::uint32_t c)
 {
   out.push_back(a);
   out.push_back(b);
@@ -33,7 +33,8 @@ bool ShadowVolume::FrontFacesSuffice(const CasterTopology& topo, const glm::dvec
   return topo.ClosedAndOriented && (light.w == 0.0 || LightOutsideBounds(topo, light));
 }
 
-int ShadowVolume::Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light)
+int ShadowVolume::Facing(
+  const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light)
 {
   const glm::uvec3& tri = topo.Triangles[triangle];
   const glm::dvec3& p0 = topo.Points[tri.x];
@@ -115,7 +116,8 @@ ShadowVolume ShadowVolume::Build(
   {
     if (LightOutsideBounds(topo, light))
     {
-      const std::uint32_t centre = volume.Silhouette.empty() ? 0 : volume.Silhouette.front().From + n;
+      const std::uint32_t centre =
+        volume.Silhouette.empty() ? 0 : volume.Silhouette.front().From + n;
       for (const SilhouetteEdge& e : volume.Silhouette)
       {
         if (e.From + n == centre || e.To + n == centre)

@@ -60,7 +60,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
   static int Facing(const CasterTopology& topo, std::uint32_t triangle, const glm::dvec4& light);
   /// What Facing takes the sign of: the light's side of the plane through `point` with
   /// `normal` (any length, as wound), times the normal's length.
-  static double LightSide(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light);
+  static double LightSide(
+    const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light);
 
   /// True when every vertex has as many silhouette edges leaving as entering (closed loops).
   bool SilhouetteIsBalanced(std::size_t pointCount) const;

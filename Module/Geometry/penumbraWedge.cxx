@@ -166,12 +166,10 @@ Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& l
   const glm::dvec3 front = cosBeta * up + sinBeta * side, back = cosBeta * up - sinBeta * side;
 
   // Side planes: every ray from the light through the edge must stay inside.
-  auto away = [&](const glm::dvec3& end) {
-    return positional ? glm::normalize(end - centre) : -glm::normalize(centre);
-  };
-  auto sine = [&](const glm::dvec3& end) {
-    return positional ? radius / glm::length(end - centre) : std::sin(radius);
-  };
+  auto away = [&](const glm::dvec3& end)
+  { return positional ? glm::normalize(end - centre) : -glm::normalize(centre); };
+  auto sine = [&](const glm::dvec3& end)
+  { return positional ? radius / glm::length(end - centre) : std::sin(radius); };
   glm::dvec3 sideA, sideB;
   if (sine(a) >= 1.0 || sine(b) >= 1.0 || !SidePlane(d, away(a), sine(a), sideA) ||
     !SidePlane(-d, away(b), sine(b), sideB))
@@ -180,8 +178,10 @@ Wedge Wedge::Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& l
   }
 
   wedge.Normals = { front, back, -sideA, -sideB };
-  wedge.Offsets = { glm::dot(front, a), glm::dot(back, a), -glm::dot(sideA, a), -glm::dot(sideB, b) };
-  auto farEdge = [&](const glm::dvec3& plane, const glm::dvec3& sidePlane, const glm::dvec3& end) {
+  wedge.Offsets = { glm::dot(front, a), glm::dot(back, a), -glm::dot(sideA, a),
+    -glm::dot(sideB, b) };
+  auto farEdge = [&](const glm::dvec3& plane, const glm::dvec3& sidePlane, const glm::dvec3& end)
+  {
     glm::dvec3 direction = glm::normalize(glm::cross(plane, sidePlane));
     return glm::dot(direction, away(end)) < 0.0 ? -direction : direction;
   };
@@ -237,10 +237,10 @@ const std::array<unsigned int, 24>& Wedge::Triangles()
 {
   // Vertices: 0 a, 1 b, 2 front-a, 3 front-b, 4 back-a, 5 back-b (2..5 at infinity).
   static const std::array<unsigned int, 24> triangles = { 1, 0, 2, 1, 2, 3, // front
-    0, 1, 5, 0, 5, 4,                                                     // back
-    0, 4, 2,                                                              // side at a
-    1, 3, 5,                                                              // side at b
-    2, 4, 5, 2, 5, 3 };                                                   // far end
+    0, 1, 5, 0, 5, 4,                                                       // back
+    0, 4, 2,                                                                // side at a
+    1, 3, 5,                                                                // side at b
+    2, 4, 5, 2, 5, 3 };                                                     // far end
   return triangles;
 }
 
@@ -257,7 +257,8 @@ LightPyramid LightPyramid::Build(
   // The nearest point of the edge to the centre bounds the widening angle.
   const glm::dvec3 edge = b - a;
   const double edgeLength2 = glm::dot(edge, edge);
-  const double t = edgeLength2 > 0.0 ? glm::clamp(-glm::dot(toA, edge) / edgeLength2, 0.0, 1.0) : 0.0;
+  const double t =
+    edgeLength2 > 0.0 ? glm::clamp(-glm::dot(toA, edge) / edgeLength2, 0.0, 1.0) : 0.0;
   const double nearest = glm::length(toA + t * edge);
   if (!(nearest > radius) || !(glm::length(toA) > 0.0) || !(glm::length(toB) > 0.0))
   {
@@ -317,8 +318,8 @@ bool LightPyramid::Contains(const glm::dvec3& x, double tolerance) const
 const std::array<unsigned int, 18>& LightPyramid::Triangles()
 {
   // Vertices: 0 apex, 1..4 directions counter-clockwise about the axis.
-  static const std::array<unsigned int, 18> triangles = { 0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 4,
-    1, 2, 3, 1, 3, 4 };
+  static const std::array<unsigned int, 18> triangles = { 0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 4, 1, 2,
+    3, 1, 3, 4 };
   return triangles;
 }
 

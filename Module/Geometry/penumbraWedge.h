@@ -55,7 +55,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT Wedge
   /// a, b, then the directions (w = 0) of the four far edges: front-a, front-b, back-a, back-b.
   std::array<glm::dvec4, 6> Vertices;
 
-  static Wedge Build(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius);
+  static Wedge Build(
+    const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius);
   bool Contains(const glm::dvec3& x, double tolerance = 0.0) const;
   /// The wedge's boundary as 8 outward triangles (indices into Vertices): front, back, two sides
   /// and the far end at infinity; a ray meets it once leaving, whatever its origin.

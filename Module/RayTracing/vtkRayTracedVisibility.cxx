@@ -33,8 +33,8 @@
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
-#include "vtkRenderer.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -448,7 +448,8 @@ vtkSmartPointer<vtkDataSet> DrawnGlyphPoints(
   auto mask = mapper->GetMasking() && maskName
     ? vtkBitArray::SafeDownCast(points->GetPointData()->GetAbstractArray(maskName))
     : nullptr;
-  auto drawn = [&](vtkIdType id) {
+  auto drawn = [&](vtkIdType id)
+  {
     if (mask && mask->GetValue(id) == 0)
     {
       return false;
@@ -482,14 +483,16 @@ vtkSmartPointer<vtkDataSet> DrawnGlyphPoints(
 /// quaternions) builds them.
 vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* input)
 {
-  auto arrayName = [mapper](int index) -> const char* {
+  auto arrayName = [mapper](int index) -> const char*
+  {
     vtkInformation* info = mapper->GetInputArrayInformation(index);
     return info && info->Has(vtkDataObject::FIELD_NAME()) ? info->Get(vtkDataObject::FIELD_NAME())
-                                                           : nullptr;
+                                                          : nullptr;
   };
   vtkPointData* data = input->GetPointData();
   const char* scaleName = arrayName(vtkGlyph3DMapper::SCALE);
-  vtkDataArray* scale = mapper->GetScaling() && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING
+  vtkDataArray* scale =
+    mapper->GetScaling() && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING
     ? (scaleName ? data->GetArray(scaleName) : data->GetScalars())
     : nullptr;
   const char* orientationName = arrayName(vtkGlyph3DMapper::ORIENTATION);
@@ -503,9 +506,8 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   const int sources = mapper->GetNumberOfInputConnections(1);
   vtkSmartPointer<vtkDataSet> points = DrawnGlyphPoints(mapper, input, orientation);
   // The arrays again, on the points kept.
-  auto same = [&points](vtkDataArray* array) {
-    return array ? points->GetPointData()->GetArray(array->GetName()) : nullptr;
-  };
+  auto same = [&points](vtkDataArray* array)
+  { return array ? points->GetPointData()->GetArray(array->GetName()) : nullptr; };
   scale = same(scale);
   orientation = same(orientation);
   index = same(index);
@@ -531,28 +533,33 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
     else if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS)
     {
       glyphs->SetScaleModeToScaleByVectorComponents();
-      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+      glyphs->SetInputArrayToProcess(
+        1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
     }
     else if (scale->GetNumberOfComponents() == 1)
     {
       glyphs->SetScaleModeToScaleByScalar();
-      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+      glyphs->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
     }
     else
     {
       glyphs->SetScaleModeToScaleByVector();
-      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
+      glyphs->SetInputArrayToProcess(
+        1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scale->GetName());
     }
     if (orientation)
     {
-      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, orientation->GetName());
+      glyphs->SetInputArrayToProcess(
+        1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, orientation->GetName());
     }
     if (index && sources > 1)
     {
       // The mapper takes the index as the value itself; vtkGlyph3D maps Range onto the sources.
       glyphs->SetIndexModeToScalar();
       glyphs->SetRange(0.0, sources);
-      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, index->GetName());
+      glyphs->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, index->GetName());
     }
     glyphs->Update();
     return glyphs->GetOutput();
@@ -578,7 +585,8 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
     else
     {
       const double length = vtkMath::Norm(o + 1);
-      transform->RotateWXYZ(vtkMath::DegreesFromRadians(2.0 * std::atan2(length, o[0])), o[1], o[2], o[3]);
+      transform->RotateWXYZ(
+        vtkMath::DegreesFromRadians(2.0 * std::atan2(length, o[0])), o[1], o[2], o[3]);
     }
     if (mapper->GetScaling())
     {
@@ -602,8 +610,8 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
 
 /// The leaves of `node` that are drawn opaque: a block's visibility and opacity hold for the
 /// blocks under it that set none of their own.
-void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes,
-  bool visible, double opacity, std::vector<vtkDataObject*>& leaves)
+void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes, bool visible,
+  double opacity, std::vector<vtkDataObject*>& leaves)
 {
   if (!node)
   {

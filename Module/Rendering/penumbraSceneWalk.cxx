@@ -18,8 +18,8 @@
 #include "vtkImageSlice.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolume.h"
@@ -110,8 +110,7 @@ void SceneWalk::Leaf(
     return;
   }
   // A path's last matrix is the composed one; a plain actor's path carries none.
-  const glm::dmat4 matrix =
-    FromRowMajor(pathMatrix ? pathMatrix : actor->GetMatrix()->GetData());
+  const glm::dmat4 matrix = FromRowMajor(pathMatrix ? pathMatrix : actor->GetMatrix()->GetData());
   if (DrawsImposters(mapper))
   {
     this->Warn(owner, leaf,
@@ -133,8 +132,8 @@ void SceneWalk::Leaf(
   this->Blocks(actor, data, matrix, true, 1.0, part, surfaces);
 }
 
-void SceneWalk::Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix,
-  bool visible, double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
+void SceneWalk::Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix, bool visible,
+  double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
 {
   // Block attributes apply to a node and everything under it unless a child sets its own,
   // as vtkCompositePolyDataMapper2 applies them.
@@ -250,8 +249,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
     vtkDataArray* orientation = (mapper->*GlyphArrays::Orientation)(points);
     vtkDataArray* sourceIndex = (mapper->*GlyphArrays::SourceIndex)(points);
     auto mask = vtkBitArray::SafeDownCast((mapper->*GlyphArrays::Mask)(points));
-    const int orientationComponents =
-      settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
+    const int orientationComponents = settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
     if (orientation && orientation->GetNumberOfComponents() != orientationComponents)
     {
       return; // VTK reports it and draws nothing
@@ -291,8 +289,8 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
   }
   if (nonFinite)
   {
-    this->Warn(owner, actor,
-      "has glyphs whose orientation is not finite: those glyphs cast no shadow");
+    this->Warn(
+      owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
   }
 }
 
@@ -300,7 +298,8 @@ void SceneWalk::Warn(vtkObject* owner, vtkProp* prop, const std::string& reason)
 {
   if (this->Warned.insert({ prop, reason }).second)
   {
-    vtkWarningWithObjectMacro(owner, << prop->GetClassName() << " (" << prop << ") " << reason << ".");
+    vtkWarningWithObjectMacro(
+      owner, << prop->GetClassName() << " (" << prop << ") " << reason << ".");
   }
 }
 

@@ -55,12 +55,12 @@ public:
   std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
 
 private:
-  void Leaf(vtkProp* leaf, const double* pathMatrix, vtkObject* owner,
-    std::vector<DrawnSurface>& surfaces);
+  void Leaf(
+    vtkProp* leaf, const double* pathMatrix, vtkObject* owner, std::vector<DrawnSurface>& surfaces);
   void Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix, bool visible,
     double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces);
-  void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
-    vtkObject* owner, std::vector<DrawnSurface>& surfaces);
+  void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
+    std::vector<DrawnSurface>& surfaces);
   /// Warns once per prop and reason.
   void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
 

@@ -50,7 +50,8 @@ public:
       this->FXAA->Execute(renderer);
     }
     // Dual depth peeling draws volumes with the translucent props when asked to.
-    if (!translucent || !renderer->GetUseDepthPeeling() || !renderer->GetUseDepthPeelingForVolumes())
+    if (!translucent || !renderer->GetUseDepthPeeling() ||
+      !renderer->GetUseDepthPeelingForVolumes())
     {
       this->Volumes->Render(s);
       this->NumberOfRenderedProps += this->Volumes->GetNumberOfRenderedProps();
@@ -109,6 +110,7 @@ void vtkRendererSettingsPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkRendererSettingsPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Steps: camera, lights, opaque (hidden-line removal, SSAO), translucent (depth "
-                  "peeling, OIT), FXAA, volumes, overlays, as the renderer's settings ask\n";
+  os << indent
+     << "Steps: camera, lights, opaque (hidden-line removal, SSAO), translucent (depth "
+        "peeling, OIT), FXAA, volumes, overlays, as the renderer's settings ask\n";
 }

@@ -6,6 +6,7 @@
 #include "penumbraStageTimes.h"
 
 #include "vtkActor.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -28,6 +29,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
@@ -36,8 +38,6 @@
 #include "vtkRendererSettingsPass.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkFloatArray.h"
-#include "vtkPointData.h"
 #include "vtk_glew.h"
 
 #include "penumbraLightSamples.h"
@@ -121,7 +121,8 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   const glm::dvec3 inside = centre + 0.5 * towardsLight;
 
   std::array<Plane, 5> planes;
-  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane) {
+  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane)
+  {
     glm::dvec3 n = glm::cross(b - a, c - a);
     const double length = glm::length(n);
     if (!(length > 1e-12 * size * size))
@@ -170,8 +171,8 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
  * bounds lie outside it and every direction it is swept in (away from any point of the light)
  * leads further outside. Conservative: true may be a false alarm, never a missed shadow.
  */
-bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
-  const glm::dvec4& light, double radius, const glm::dmat4& worldToClip)
+bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dvec4& light,
+  double radius, const glm::dmat4& worldToClip)
 {
   const glm::dmat4 rows = glm::transpose(worldToClip);
   const glm::dvec4 planes[6] = { rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1],
@@ -185,8 +186,8 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
       continue;
     }
     // Largest signed distance of the box inside this plane (inside: dot(n, x) + w >= 0).
-    const glm::dvec3 furthest(n.x > 0 ? boxMax.x : boxMin.x, n.y > 0 ? boxMax.y : boxMin.y,
-      n.z > 0 ? boxMax.z : boxMin.z);
+    const glm::dvec3 furthest(
+      n.x > 0 ? boxMax.x : boxMin.x, n.y > 0 ? boxMax.y : boxMin.y, n.z > 0 ? boxMax.z : boxMin.z);
     const double boxReach = glm::dot(n, furthest);
     if (boxReach + plane.w >= 0.0)
     {
@@ -248,8 +249,8 @@ public:
   {
     vtkLight* Light = nullptr;
     int CollectionIndex = 0; ///< index in the renderer's light collection
-    int ShaderIndex = 0;     ///< index among switched-on lights: the N of lightColorN in VTK's shaders
-    int Layer = 0;           ///< layer of the LI buffer
+    int ShaderIndex = 0; ///< index among switched-on lights: the N of lightColorN in VTK's shaders
+    int Layer = 0;       ///< layer of the LI buffer
     glm::dvec4 World{ 0.0 }; ///< (position, 1) or (direction towards the light, 0)
     float Attenuation = 1.0f;
     /// How this light's layer is drawn; set by ChooseMethod, and by the cost model for
@@ -313,9 +314,8 @@ public:
     const std::size_t plateauBuffer = this->Plateau.Vertices->GetHandle()
       ? this->Plateau.Triangles.size() * sizeof(penumbra::PlateauVertex)
       : 0;
-    const std::size_t countingTexels = this->CentreCount->GetHandle()
-      ? pixels * (1 + this->SampleCounters->GetDepth())
-      : 0;
+    const std::size_t countingTexels =
+      this->CentreCount->GetHandle() ? pixels * (1 + this->SampleCounters->GetDepth()) : 0;
     return (texturePixels + plateauTexels + pixels * this->Layers + countingTexels) * 4 +
       plateauBuffer + this->Caches.GraphicsBufferBytes();
   }
@@ -326,10 +326,10 @@ public:
   {
     bool HavePlane = false;
     penumbra::ReceiverPlane Plane;
-    vtkProp* PlaneProp = nullptr;         ///< the marked actor, if the plane is one
-    bool Bounded = false;                 ///< the plane is an actor: plane coordinates bounds
+    vtkProp* PlaneProp = nullptr; ///< the marked actor, if the plane is one
+    bool Bounded = false;         ///< the plane is an actor: plane coordinates bounds
     glm::dvec2 Min{ 0.0 }, Max{ 0.0 };
-    double Tolerance = 0.0;               ///< distance still counted as on the plane
+    double Tolerance = 0.0; ///< distance still counted as on the plane
     /// The actor whose plane was last fitted, and when: refitted only when it, its mapper or its
     /// data change.
     vtkProp* FittedProp = nullptr;
@@ -350,7 +350,8 @@ public:
   } Plateau;
   /// Renders `light`'s plateaus over the receiver plane, then writes them into its LI layer at
   /// the pixels on the plane; returns the plateau triangles drawn.
-  vtkIdType DrawPlateaus(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light);
+  vtkIdType DrawPlateaus(
+    vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window, const ShadowLight& light);
   /// Draws the current plateau triangles into the plateau texture over [lo, lo + size].
   bool RenderPlateauTexture(vtkSoftShadowPass* self, vtkOpenGLRenderWindow* window,
     const glm::dvec2& lo, const glm::dvec2& size);
@@ -504,8 +505,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCountedLights: " << this->NumberOfCountedLights << "\n";
   os << indent << "NumberOfAveragedLights: " << this->NumberOfAveragedLights << "\n";
   os << indent << "NumberOfShadowingLights: " << this->NumberOfShadowingLights << "\n";
-  os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles
-     << "\n";
+  os << indent << "NumberOfShadowVolumeTriangles: " << this->NumberOfShadowVolumeTriangles << "\n";
   os << indent << "NumberOfZFailVolumes: " << this->NumberOfZFailVolumes << "\n";
   os << indent << "NumberOfPenumbraWedges: " << this->NumberOfPenumbraWedges << "\n";
   os << indent << "NumberOfFullViewportWedges: " << this->NumberOfFullViewportWedges << "\n";
@@ -542,9 +542,9 @@ void vtkSoftShadowPass::SetLightRadius(vtkLight* light, double radius)
   }
   if (!(radius >= 0.0) || !std::isfinite(radius))
   {
-    vtkGenericWarningMacro(
-      "vtkSoftShadowPass::SetLightRadius: radius " << radius << " is not a finite, non-negative "
-                                                   << "number; using 0 (hard shadows).");
+    vtkGenericWarningMacro("vtkSoftShadowPass::SetLightRadius: radius "
+      << radius << " is not a finite, non-negative "
+      << "number; using 0 (hard shadows).");
     radius = 0.0;
   }
   if (!light->GetInformation())
@@ -642,7 +642,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   using Stage = penumbra::StageTimes::Stage;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  auto window = renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
+  auto window =
+    renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
   internals.Lights.clear();
   internals.ApplyShadows = false;
   if (this->ShadowsEnabled && window)
@@ -683,9 +684,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
   // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-        [](const vtkInternals::ShadowLight& light) {
-          return !light.Is(vtkInternals::Technique::HardSamples);
-        }))
+        [](const vtkInternals::ShadowLight& light)
+        { return !light.Is(vtkInternals::Technique::HardSamples); }))
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.CopyDepth(window->GetState());
@@ -798,8 +798,9 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
   {
     if (this->WarnedLights.insert(light).second)
     {
-      vtkWarningWithObjectMacro(self, "Directional light " << light << " has an angular radius of "
-                                                           << radius << " degrees; clamped to 89.");
+      vtkWarningWithObjectMacro(self,
+        "Directional light " << light << " has an angular radius of " << radius
+                             << " degrees; clamped to 89.");
     }
     radius = 89.0;
   }
@@ -828,9 +829,9 @@ void vtkSoftShadowPass::vtkInternals::ChooseMethod(
     constexpr int maximumSamples = 256; // the shader's uniform array
     if (self->LightSamples > maximumSamples && !this->WarnedCountingSamples)
     {
-      vtkWarningWithObjectMacro(self, "Soft shadow volumes count at most " << maximumSamples
-                                  << " light samples; LightSamples " << self->LightSamples
-                                  << " is clamped for them.");
+      vtkWarningWithObjectMacro(self,
+        "Soft shadow volumes count at most " << maximumSamples << " light samples; LightSamples "
+                                             << self->LightSamples << " is clamped for them.");
       this->WarnedCountingSamples = true;
     }
     shadowLight.Method = Technique::SampleCounting;
@@ -996,8 +997,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   internals.Caches.BeginFrame();
   internals.Casters.clear();
-  for (const penumbra::DrawnSurface& surface :
-    internals.SceneWalk.Casters(s->GetRenderer(), this))
+  for (const penumbra::DrawnSurface& surface : internals.SceneWalk.Casters(s->GetRenderer(), this))
   {
     penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, this);
     if (mesh->Topology.Empty())
@@ -1024,9 +1024,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   }
 
   const bool plateaus = std::any_of(internals.Lights.begin(), internals.Lights.end(),
-    [](const vtkInternals::ShadowLight& light) {
-      return light.Is(vtkInternals::Technique::Plateaus);
-    });
+    [](const vtkInternals::ShadowLight& light)
+    { return light.Is(vtkInternals::Technique::Plateaus); });
   if (plateaus && !this->FindReceiverPlane(s->GetRenderer()))
   {
     if (!internals.Plateau.WarnedNoPlane)
@@ -1127,8 +1126,8 @@ std::vector<penumbra::CountingCost> vtkSoftShadowPass::vtkInternals::CountingCos
     }
     if (light.World.w != 0.0)
     {
-      const double distance = glm::length(0.5 * (caster->WorldMin + caster->WorldMax) -
-        glm::dvec3(light.World));
+      const double distance =
+        glm::length(0.5 * (caster->WorldMin + caster->WorldMax) - glm::dvec3(light.World));
       cost.AngularRadius = distance > light.SoftRadius ? light.SoftRadius / distance : 1e300;
     }
     else
@@ -1144,13 +1143,14 @@ bool vtkSoftShadowPass::vtkInternals::CountingSupported(vtkSoftShadowPass* self)
 {
   if (this->CountingSupport < 0)
   {
-    this->CountingSupport = GLEW_VERSION_4_4 ||
-      (GLEW_ARB_shader_image_load_store && GLEW_ARB_clear_texture);
+    this->CountingSupport =
+      GLEW_VERSION_4_4 || (GLEW_ARB_shader_image_load_store && GLEW_ARB_clear_texture);
     if (!this->CountingSupport)
     {
-      vtkWarningWithObjectMacro(self, "This OpenGL context has no image atomics or texture "
-                                      "clears (OpenGL 4.4): soft shadows average "
-                                      "LightSamples hard shadows instead of counting them.");
+      vtkWarningWithObjectMacro(self,
+        "This OpenGL context has no image atomics or texture "
+        "clears (OpenGL 4.4): soft shadows average "
+        "LightSamples hard shadows instead of counting them.");
     }
   }
   return this->CountingSupport != 0;
@@ -1236,10 +1236,9 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         {
           continue;
         }
-        this->NumberOfShadowVolumeTriangles +=
-          DrawShadowVolume(ostate, volumeProgram, *caster, light.VolumeKey(k),
-            light.Samples[k], internals.WorldToClip, internals.NearCorners, countInColour,
-            this->NumberOfZFailVolumes);
+        this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
+          light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
+          countInColour, this->NumberOfZFailVolumes);
       }
 
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -1430,7 +1429,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
 
   program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
-  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  const float viewport[2] = { static_cast<float>(this->Size[0]),
+    static_cast<float>(this->Size[1]) };
   program->SetUniform2f("viewportSize", viewport);
   program->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
   const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
@@ -1488,13 +1488,14 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
   const std::size_t sampleCount = light.CountingSamples.size();
   const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
   const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS, sampleCount);
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    penumbraCountingWedgeVS, wedgeFS.c_str(), "");
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraCountingWedgeVS, wedgeFS.c_str(), "");
   if (!program)
   {
     // Said once: from the next frame on such lights average the same samples.
-    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume wedge shader: "
-                                  "soft shadows average hard shadows instead.");
+    vtkErrorWithObjectMacro(self,
+      "Could not compile the soft shadow volume wedge shader: "
+      "soft shadows average hard shadows instead.");
     this->CountingSupport = 0;
     return false;
   }
@@ -1518,7 +1519,8 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
   this->DepthCopy->Activate();
 
   const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
-  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  const float viewport[2] = { static_cast<float>(this->Size[0]),
+    static_cast<float>(this->Size[1]) };
   program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
   program->SetUniformi("counters", 0);
   program->SetUniform2f("viewportSize", viewport);
@@ -1530,9 +1532,9 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
   for (const glm::dvec4& sample : light.CountingSamples)
   {
     const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
-    samples.insert(samples.end(), { static_cast<float>(position.x),
-      static_cast<float>(position.y), static_cast<float>(position.z),
-      static_cast<float>(sample.w) });
+    samples.insert(samples.end(),
+      { static_cast<float>(position.x), static_cast<float>(position.y),
+        static_cast<float>(position.z), static_cast<float>(sample.w) });
   }
   program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
   for (penumbra::CasterCache* caster : this->Casters)
@@ -1554,12 +1556,13 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
 
   // Resolve into the light's layer at every geometry pixel (the far-plane triangle passes
   // GL_GREATER exactly there): counters where a wedge reached, the centre's count elsewhere.
-  vtkShaderProgram* resolve = window->GetShaderCache()->ReadyShaderProgram(
-    penumbraResolveVS, resolveFS.c_str(), "");
+  vtkShaderProgram* resolve =
+    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, resolveFS.c_str(), "");
   if (!resolve)
   {
-    vtkErrorWithObjectMacro(self, "Could not compile the soft shadow volume resolve shader: "
-                                  "soft shadows average hard shadows instead.");
+    vtkErrorWithObjectMacro(self,
+      "Could not compile the soft shadow volume resolve shader: "
+      "soft shadows average hard shadows instead.");
     this->CountingSupport = 0;
     return false;
   }
@@ -1598,8 +1601,7 @@ void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIn
   this->Internals->DrawFullScreen(program, this->Internals->ResolveVAO);
 }
 
-void vtkSoftShadowPass::vtkInternals::DrawFullScreen(
-  vtkShaderProgram* program, FullScreenVAO& vao)
+void vtkSoftShadowPass::vtkInternals::DrawFullScreen(vtkShaderProgram* program, FullScreenVAO& vao)
 {
   if (this->FullScreenTriangle->GetHandle() == 0)
   {
@@ -1653,8 +1655,8 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
     }
     auto data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
     // The actor (matrix), its mapper (a new input) or the data itself.
-    const vtkMTimeType changed = std::max(
-      { actor->GetMTime(), actor->GetMapper()->GetMTime(), data ? data->GetMTime() : 0 });
+    const vtkMTimeType changed =
+      std::max({ actor->GetMTime(), actor->GetMapper()->GetMTime(), data ? data->GetMTime() : 0 });
     if (actor == plateau.FittedProp && changed <= plateau.FittedAt)
     {
       plateau.HavePlane = plateau.Bounded = true; // the fit below, kept from an earlier frame
@@ -1758,7 +1760,8 @@ bool vtkSoftShadowPass::vtkInternals::RenderPlateauTexture(vtkSoftShadowPass* se
   ostate->vtkglClearDepth(1.0);
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
   const float planeToClip[4] = { static_cast<float>(2.0 / size.x), static_cast<float>(2.0 / size.y),
-    static_cast<float>(-1.0 - 2.0 * lo.x / size.x), static_cast<float>(-1.0 - 2.0 * lo.y / size.y) };
+    static_cast<float>(-1.0 - 2.0 * lo.x / size.x),
+    static_cast<float>(-1.0 - 2.0 * lo.y / size.y) };
   program->SetUniform4f("planeToClip", planeToClip);
   plateau.Vertices->Upload(plateau.Triangles, vtkOpenGLBufferObject::ArrayBuffer);
   if (plateau.VAOProgram != program)
@@ -1880,7 +1883,8 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
   plateau.Depth->Activate();
   const glm::mat4 clipToPlane(
     glm::translate(glm::dmat4(1.0), -plane.Origin) * glm::inverse(this->WorldToClip));
-  const float viewport[2] = { static_cast<float>(this->Size[0]), static_cast<float>(this->Size[1]) };
+  const float viewport[2] = { static_cast<float>(this->Size[0]),
+    static_cast<float>(this->Size[1]) };
   const float planeToTexture[4] = { static_cast<float>(1.0 / size.x),
     static_cast<float>(1.0 / size.y), static_cast<float>(-lo.x / size.x),
     static_cast<float>(-lo.y / size.y) };
@@ -1937,7 +1941,9 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
   // Overlapping penumbrae add up: the buffer is clamped where it is used, and here. A value
   // that is not finite is a bug to expose, not to clamp away: it is returned as NaN.
   std::transform(data + light->Layer * pixels, data + (light->Layer + 1) * pixels,
-    values->GetPointer(0), [](float v) {
+    values->GetPointer(0),
+    [](float v)
+    {
       return std::isfinite(v) ? std::min(1.0f, std::max(0.0f, v))
                               : std::numeric_limits<float>::quiet_NaN();
     });
@@ -1951,8 +1957,8 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkSoftShadowPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   const auto& lights = this->Internals->Lights;
   if (lights.empty())
@@ -1975,8 +1981,8 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string&,
   return true;
 }
 
-bool vtkSoftShadowPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkSoftShadowPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,
   // directional and positional); only diffuse and specular are scaled, ambient stays.

@@ -98,10 +98,10 @@ public:
     /// the pixel. One volume pass and one wedge pass per light.
     METHOD_PENUMBRA_WEDGES = 3,
     /// Haines' plateaus, for a planar receiver (an actor marked with SetShadowPlane, or the
-    /// plane set with SetReceiverPlaneOrigin/Normal and UseReceiverPlaneOn): the hard drop shadow plus cones and sheets around its
-    /// outline, rendered straight down the plane's normal into a texture where the darkest
-    /// primitive wins. Fast and smooth, with an umbra too large (no inner penumbra). Pixels
-    /// off the plane get the hard shadow of the light's centre.
+    /// plane set with SetReceiverPlaneOrigin/Normal and UseReceiverPlaneOn): the hard drop shadow
+    /// plus cones and sheets around its outline, rendered straight down the plane's normal into a
+    /// texture where the darkest primitive wins. Fast and smooth, with an umbra too large (no inner
+    /// penumbra). Pixels off the plane get the hard shadow of the light's centre.
     METHOD_PLATEAUS = 4,
     /// Per-light-sample counting (Laine et al. 2005, Forest et al. 2008): the shadow-volume count
     /// of the light's centre plus, in one wedge per potential silhouette edge, each edge's change

@@ -55,14 +55,15 @@ bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
   const std::string problems = this->Topology.Report.Describe();
   if (!problems.empty())
   {
-    vtkWarningWithObjectMacro(owner, "Shadow caster " << data->GetClassName() << " (" << data
-                                                      << "): " << problems << ".");
+    vtkWarningWithObjectMacro(
+      owner, "Shadow caster " << data->GetClassName() << " (" << data << "): " << problems << ".");
   }
   if (this->Topology.Empty())
   {
-    vtkWarningWithObjectMacro(owner, "Shadow caster " << data->GetClassName() << " (" << data
-                                                      << ") has no surface triangles: it casts "
-                                                         "no shadow.");
+    vtkWarningWithObjectMacro(owner,
+      "Shadow caster " << data->GetClassName() << " (" << data
+                       << ") has no surface triangles: it casts "
+                          "no shadow.");
   }
   return true;
 }
@@ -175,13 +176,15 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
 {
   const int floatsPerVertex = 4 + attributeCount;
   const auto first = static_cast<std::uint32_t>(vertices.size() / floatsPerVertex);
-  auto emit = [&](const glm::dvec4& position) {
+  auto emit = [&](const glm::dvec4& position)
+  {
     const float xyzw[4] = { static_cast<float>(position.x), static_cast<float>(position.y),
       static_cast<float>(position.z), static_cast<float>(position.w) };
     vertices.insert(vertices.end(), xyzw, xyzw + 4);
     vertices.insert(vertices.end(), attributes, attributes + attributeCount);
   };
-  auto emitShape = [&](const auto& corners, const auto& triangles) {
+  auto emitShape = [&](const auto& corners, const auto& triangles)
+  {
     for (const glm::dvec4& corner : corners)
     {
       emit(corner);
@@ -215,7 +218,8 @@ glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
   return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
 }
 
-void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+void WedgeBuffer::Reset(
+  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
 {
   this->ObjectToWorld = objectToWorld;
   this->LightWorld = lightWorld;
@@ -358,8 +362,8 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
     const glm::vec3 centreNormal = glm::vec3(EdgeLightNormal(from, to, light));
     for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
     {
-      float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0,
-        0, 0, centreNormal.x, centreNormal.y, centreNormal.z };
+      float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0, 0,
+        0, centreNormal.x, centreNormal.y, centreNormal.z };
       for (std::uint32_t k = 0; k < 2 && first + k < edge.UseCount; ++k)
       {
         const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
@@ -495,7 +499,8 @@ std::size_t ShadowCaches::GraphicsBufferBytes() const
     for (const auto& volume : caster.second->Volumes)
     {
       const VolumeCache& v = volume.second;
-      bytes += v.Uploaded ? (v.SideCount() + v.CapCount() + v.DarkCapCount()) * sizeof(std::uint32_t) : 0;
+      bytes +=
+        v.Uploaded ? (v.SideCount() + v.CapCount() + v.DarkCapCount()) * sizeof(std::uint32_t) : 0;
     }
     for (const auto& wedges : caster.second->Wedges)
     {

@@ -21,8 +21,8 @@
 #include <glm/glm.hpp>
 
 #include <map>
-#include <set>
 #include <memory>
+#include <set>
 
 class vtkActor;
 class vtkDataObject;
@@ -119,8 +119,8 @@ struct WedgeBuffer
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius);
   /// Appends the wedge of edge from -> to (wedge coordinates), each vertex carrying `attributes`.
-  void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
-    int attributeCount);
+  void AppendEdge(
+    const glm::dvec3& from, const glm::dvec3& to, const float* attributes, int attributeCount);
   std::size_t IndexCount() const { return this->Indices.size(); }
   /// Bytes of the uploaded vertex and index buffers.
   std::size_t UploadedBytes() const

@@ -6,10 +6,12 @@
 // to the light crosses: every triangle occludes whatever its orientation, and for closed,
 // consistently oriented meshes the front faces alone count. This covers sides, caps, the dark-cap
 // fan, multiplicities and mirrored matrices at once.
-#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
+#include "penumbraCheck.h"
 #include "penumbraShadowVolume.h"
 
+#include "vtkCellArray.h"
+#include "vtkCubeSource.h"
 #include "vtkNew.h"
 #include "vtkParametricBoy.h"
 #include "vtkParametricFunctionSource.h"
@@ -18,9 +20,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkCellArray.h"
 #include "vtkSphereSource.h"
-#include "vtkCubeSource.h"
 #include "vtkTriangleFilter.h"
 
 #include <cmath>
@@ -120,7 +120,8 @@ int Winding(const CasterTopology& topo, const ShadowVolume& volume, const glm::d
 }
 
 /// Casting triangles crossed by the segment from q to the light, per the counting rule.
-int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
+int Occluders(
+  const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
 {
   const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - q : glm::dvec3(light) * 1e6;
   int count = 0;
@@ -132,8 +133,8 @@ int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dv
       continue;
     }
     const glm::uvec3& tri = topo.Triangles[t];
-    const double hit = RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y],
-      topo.Points[tri.z], nearEdge);
+    const double hit =
+      RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y], topo.Points[tri.z], nearEdge);
     if (hit >= 0.0 && hit <= 1.0)
     {
       ++count;
@@ -143,13 +144,14 @@ int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dv
 }
 
 /// Whether any non-degenerate triangle, whatever its orientation, blocks q from the light.
-bool AnyOccluder(const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
+bool AnyOccluder(
+  const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
 {
   const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - q : glm::dvec3(light) * 1e6;
   for (const glm::uvec3& tri : topo.Triangles)
   {
-    const double hit = RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y],
-      topo.Points[tri.z], nearEdge);
+    const double hit =
+      RayTriangle(q, toLight, topo.Points[tri.x], topo.Points[tri.y], topo.Points[tri.z], nearEdge);
     if (hit >= 0.0 && hit <= 1.0)
     {
       return true;
@@ -173,7 +175,8 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
     // Points around and behind the caster, where its shadow lies.
     glm::dvec3 q = lo + size * glm::dvec3(unit(rng), unit(rng), unit(rng));
     const glm::dvec3 away = light.w != 0.0 ? q - glm::dvec3(light) : -glm::dvec3(light);
-    q += glm::normalize(away) * glm::length(size) * std::uniform_real_distribution<double>(0, 1)(rng);
+    q +=
+      glm::normalize(away) * glm::length(size) * std::uniform_real_distribution<double>(0, 1)(rng);
     bool nearEdge = false;
     const int expected = Occluders(topo, light, q, nearEdge);
     const int winding = Winding(topo, volume, light, q, rng);
@@ -204,8 +207,9 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
     }
   }
   Check(compared > samples / 2, name + ": enough robust samples");
-  Check(mismatches == 0, name + ": volume winding equals occluder count (" +
-      std::to_string(mismatches) + " of " + std::to_string(compared) + " differ)");
+  Check(mismatches == 0,
+    name + ": volume winding equals occluder count (" + std::to_string(mismatches) + " of " +
+      std::to_string(compared) + " differ)");
 }
 
 CasterTopology FromSource(vtkPolyDataAlgorithm* source)
@@ -261,7 +265,8 @@ void TestClosedSphere(std::mt19937& rng)
     CheckVolume("sphere", topo, light, rng);
   }
   // A light inside a closed mesh: nothing outside it sees the light.
-  Check(!ShadowVolume::FrontFacesSuffice(topo, { 0.1, 0.05, -0.1, 1.0 }), "light inside: all faces count");
+  Check(!ShadowVolume::FrontFacesSuffice(topo, { 0.1, 0.05, -0.1, 1.0 }),
+    "light inside: all faces count");
   CheckVolume("light inside sphere", topo, { 0.1, 0.05, -0.1, 1.0 }, rng);
 }
 
@@ -272,7 +277,8 @@ void TestWelding(std::mt19937& rng)
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(cube->GetOutputPort());
   const CasterTopology topo = FromSource(triangles);
-  Check(topo.Points.size() == 8, "cube welds to 8 points (got " + std::to_string(topo.Points.size()) + ")");
+  Check(topo.Points.size() == 8,
+    "cube welds to 8 points (got " + std::to_string(topo.Points.size()) + ")");
   Check(topo.ClosedAndOriented, "welded cube is closed");
   Check(topo.Triangles.size() == 12, "cube has 12 triangles");
   for (const glm::dvec4& light : Lights(topo))
@@ -303,8 +309,8 @@ void TestOpenSheet(std::mt19937& rng)
 void TestNonManifoldAndInconsistent(std::mt19937& rng)
 {
   // Three fins on one edge, one wound the other way, plus a flipped neighbour.
-  const std::vector<glm::dvec3> points = { { 0, 0, 0 }, { 0, 0, 1 }, { 1, 0, 0.5 }, { -0.5, 0.8, 0.5 },
-    { -0.5, -0.8, 0.5 }, { 1, 1, 0.5 } };
+  const std::vector<glm::dvec3> points = { { 0, 0, 0 }, { 0, 0, 1 }, { 1, 0, 0.5 },
+    { -0.5, 0.8, 0.5 }, { -0.5, -0.8, 0.5 }, { 1, 1, 0.5 } };
   const std::vector<glm::uvec3> tris = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 2, 5 } };
   const CasterTopology topo = CasterTopology::Build(points, tris);
   Check(topo.Report.NonManifoldEdges == 1, "one non-manifold edge");
@@ -398,7 +404,8 @@ void TestDegenerateInput()
   vtkNew<vtkPolyData> empty;
   Check(CasterTopology::Build(empty).Empty(), "empty polydata gives no triangles");
   Check(CasterTopology::Build(nullptr).Empty(), "null polydata gives no triangles");
-  const ShadowVolume none = ShadowVolume::Build(CasterTopology::Build(empty), { 0, 1, 0, 1 }, false);
+  const ShadowVolume none =
+    ShadowVolume::Build(CasterTopology::Build(empty), { 0, 1, 0, 1 }, false);
   Check(none.Sides.empty() && none.LightCap.empty(), "empty caster casts nothing");
 }
 
@@ -427,8 +434,9 @@ void FuzzRandomMeshes(std::mt19937& rng)
       t = { rng() % pointCount, rng() % pointCount, rng() % pointCount };
     }
     const CasterTopology topo = CasterTopology::Build(points, tris);
-    const glm::dvec4 light = rng() % 2 ? glm::dvec4(3 * coord(rng), 3 * coord(rng), 3 * coord(rng), 1.0)
-                                       : glm::dvec4(coord(rng), coord(rng), coord(rng), 0.0);
+    const glm::dvec4 light = rng() % 2
+      ? glm::dvec4(3 * coord(rng), 3 * coord(rng), 3 * coord(rng), 1.0)
+      : glm::dvec4(coord(rng), coord(rng), coord(rng), 0.0);
     const ShadowVolume volume = ShadowVolume::Build(topo, light, rng() % 2 == 0);
     balanced += volume.SilhouetteIsBalanced(topo.Points.size());
     bool finite = true;

@@ -28,8 +28,8 @@ using penumbra::GlyphSettings;
 using penumbra_test::Check;
 
 /// Largest distance between `source` moved by `matrix` and the points VTK produced.
-double WorstDistance(vtkPolyData* source, const glm::dmat4& matrix, vtkPoints* expected,
-  vtkIdType offset = 0)
+double WorstDistance(
+  vtkPolyData* source, const glm::dmat4& matrix, vtkPoints* expected, vtkIdType offset = 0)
 {
   double worst = 0.0;
   for (vtkIdType i = 0; i < source->GetNumberOfPoints(); ++i)
@@ -127,8 +127,7 @@ void TestAgainstGlyph3D(std::mt19937& rng)
       const glm::dvec3 scale = penumbra::GlyphScale(settings, v, 3);
       glm::dmat4 matrix;
       allFinite &= penumbra::GlyphMatrix(settings, glm::make_vec3(position), v, scale, matrix);
-      worst = std::max(
-        worst, WorstDistance(cone, matrix, expected, i * cone->GetNumberOfPoints()));
+      worst = std::max(worst, WorstDistance(cone, matrix, expected, i * cone->GetNumberOfPoints()));
     }
     std::printf("     direction, scale by %s: worst distance %.2e\n", mode.Name, worst);
     Check(allFinite, "finite directions give matrices");
@@ -169,14 +168,15 @@ void TestAgainstTransform(std::mt19937& rng)
     const double axis = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     vtkNew<vtkTransform> turn;
     turn->Translate(position.x, position.y, position.z);
-    turn->RotateWXYZ(2.0 * std::atan2(axis, q[0]) * 180.0 / 3.14159265358979323846, q[1], q[2], q[3]);
+    turn->RotateWXYZ(
+      2.0 * std::atan2(axis, q[0]) * 180.0 / 3.14159265358979323846, q[1], q[2], q[3]);
     turn->Scale(scale.x, scale.y, scale.z);
     vtkNew<vtkPoints> turned;
     turn->TransformPoints(cone->GetPoints(), turned);
     worstQuaternion = std::max(worstQuaternion, WorstDistance(cone, matrix, turned));
   }
-  std::printf("     rotation angles: worst %.2e; quaternions: worst %.2e\n", worstRotation,
-    worstQuaternion);
+  std::printf(
+    "     rotation angles: worst %.2e; quaternions: worst %.2e\n", worstRotation, worstQuaternion);
   Check(worstRotation < 1e-6, "rotation angles as vtkTransform's RotateZ, RotateX, RotateY");
   Check(worstQuaternion < 1e-6, "quaternions as vtkTransform's RotateWXYZ");
 }

@@ -3,8 +3,8 @@
 // closed forms of the method: hard shadow at depth 0, penumbra width r h / (H - h) for a light of
 // radius r at height H over a caster edge at height h, growing with h, elongated for a light
 // near the horizon, and nothing non-finite on bad input.
-#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
+#include "penumbraCheck.h"
 #include "penumbraPlateaus.h"
 #include "penumbraShadowVolume.h"
 
@@ -39,7 +39,8 @@ double DepthAt(const std::vector<PlateauVertex>& triangles, const glm::dvec2& q)
     const double wa = 1.0 - wb - wc;
     if (wa >= -1e-9 && wb >= -1e-9 && wc >= -1e-9)
     {
-      best = std::min(best, wa * triangles[i].T + wb * triangles[i + 1].T + wc * triangles[i + 2].T);
+      best =
+        std::min(best, wa * triangles[i].T + wb * triangles[i + 1].T + wc * triangles[i + 2].T);
     }
   }
   return best;
@@ -48,21 +49,23 @@ double DepthAt(const std::vector<PlateauVertex>& triangles, const glm::dvec2& q)
 /// A horizontal square of side 1 centred above the origin at height h (y up), facing up.
 CasterTopology Square(double h)
 {
-  return CasterTopology::Build({ { -0.5, h, -0.5 }, { 0.5, h, -0.5 }, { 0.5, h, 0.5 }, { -0.5, h, 0.5 } },
+  return CasterTopology::Build(
+    { { -0.5, h, -0.5 }, { 0.5, h, -0.5 }, { 0.5, h, 0.5 }, { -0.5, h, 0.5 } },
     { { 0, 3, 2 }, { 0, 2, 1 } });
 }
 
-std::vector<PlateauVertex> Plateaus(const CasterTopology& topo, const glm::dvec4& light, double radius,
-  PlateauReport* report = nullptr)
+std::vector<PlateauVertex> Plateaus(const CasterTopology& topo, const glm::dvec4& light,
+  double radius, PlateauReport* report = nullptr)
 {
   ReceiverPlane plane;
   ReceiverPlane::Make(glm::dvec3(0.0), glm::dvec3(0, 1, 0), plane);
   const glm::dmat4 toWorld(1.0);
-  const glm::dvec4 lightObject(glm::dvec3(light) - (light.w != 0.0 ? topo.Origin : glm::dvec3(0.0)), light.w);
+  const glm::dvec4 lightObject(
+    glm::dvec3(light) - (light.w != 0.0 ? topo.Origin : glm::dvec3(0.0)), light.w);
   const ShadowVolume volume = ShadowVolume::Build(topo, lightObject, false, true);
   std::vector<PlateauVertex> triangles;
-  const PlateauReport r = BuildPlateaus(topo, volume,
-    glm::translate(toWorld, topo.Origin), light, radius, plane, triangles);
+  const PlateauReport r = BuildPlateaus(
+    topo, volume, glm::translate(toWorld, topo.Origin), light, radius, plane, triangles);
   if (report)
   {
     *report = r;
@@ -72,8 +75,8 @@ std::vector<PlateauVertex> Plateaus(const CasterTopology& topo, const glm::dvec4
 
 /// Where the depth along the ray from `start` in `direction` (plane coordinates) first reaches
 /// 1: the outer edge of the penumbra, found by bisection.
-double PenumbraEdge(const std::vector<PlateauVertex>& triangles, const glm::dvec2& start,
-  const glm::dvec2& direction)
+double PenumbraEdge(
+  const std::vector<PlateauVertex>& triangles, const glm::dvec2& start, const glm::dvec2& direction)
 {
   double lo = 0.0, hi = 10.0;
   for (int i = 0; i < 50; ++i)
@@ -96,14 +99,16 @@ void TestHardShadowAndWidth()
     // The plane basis is arbitrary: find the axis along which the shadow's edge lies (U, V
     // span the ground, so the hard shadow is a square in them too, possibly rotated 90 deg).
     Check(DepthAt(triangles, glm::dvec2(0.0)) == 0.0, "centre of the hard shadow at depth 0");
-    Check(DepthAt(triangles, glm::dvec2(0.9 * halfShadow, 0.0)) == 0.0, "hard shadow reaches its outline");
+    Check(DepthAt(triangles, glm::dvec2(0.9 * halfShadow, 0.0)) == 0.0,
+      "hard shadow reaches its outline");
     const double expected = r * h / (H - h);
     const double width = PenumbraEdge(triangles, glm::dvec2(halfShadow, 0.0), glm::dvec2(1, 0));
     std::printf("     h = %.0f: penumbra width %.4f, expected about %.4f\n", h, width, expected);
     Check(std::abs(width - expected) < 0.15 * expected, "penumbra width r h / (H - h)");
     const double half = DepthAt(triangles, glm::dvec2(halfShadow + 0.5 * width, 0.0));
     Check(std::abs(half - 0.5) < 0.1, "depth grows linearly across the sheet");
-    Check(DepthAt(triangles, glm::dvec2(halfShadow + 1.2 * width, 0.0)) == 1.0, "lit beyond the penumbra");
+    Check(DepthAt(triangles, glm::dvec2(halfShadow + 1.2 * width, 0.0)) == 1.0,
+      "lit beyond the penumbra");
   }
 }
 
@@ -121,14 +126,17 @@ void TestLowLightIsElongated()
   ReceiverPlane plane;
   ReceiverPlane::Make(glm::dvec3(0.0), glm::dvec3(0, 1, 0), plane);
   const glm::dvec2 far = plane.ToPlane(glm::dvec3(farEdge.x, 0, 0));
-  const glm::dvec2 towardsFar = plane.ToPlane(glm::dvec3(-1, 0, 0)) - plane.ToPlane(glm::dvec3(0.0));
+  const glm::dvec2 towardsFar =
+    plane.ToPlane(glm::dvec3(-1, 0, 0)) - plane.ToPlane(glm::dvec3(0.0));
   const glm::dvec2 side = plane.ToPlane(glm::dvec3(-shift, 0, 0.5));
-  const glm::dvec2 towardsSide = plane.ToPlane(glm::dvec3(0, 0, 1)) - plane.ToPlane(glm::dvec3(0.0));
+  const glm::dvec2 towardsSide =
+    plane.ToPlane(glm::dvec3(0, 0, 1)) - plane.ToPlane(glm::dvec3(0.0));
   const double along = PenumbraEdge(triangles, far, towardsFar);
   const double across = PenumbraEdge(triangles, side, towardsSide);
   std::printf("     penumbra along the light %.4f, across %.4f\n", along, across);
   Check(along > 2.5 * across, "a light near the horizon gives an elongated penumbra");
-  Check(std::abs(across - std::tan(2.0 * 3.14159265358979 / 180.0) / std::sin(elevation)) < 0.3 * across,
+  Check(std::abs(across - std::tan(2.0 * 3.14159265358979 / 180.0) / std::sin(elevation)) <
+      0.3 * across,
     "across the light, width h tan(radius) / sin(elevation)");
 }
 
@@ -136,7 +144,8 @@ void TestBadInput()
 {
   PlateauReport report;
   // A light below the caster's plane side: nothing; a caster above the light: skipped.
-  Check(Plateaus(Square(1.0), glm::dvec4(0, -3, 0, 1), 0.3).empty(), "light below the plane: no plateau");
+  Check(Plateaus(Square(1.0), glm::dvec4(0, -3, 0, 1), 0.3).empty(),
+    "light below the plane: no plateau");
   Plateaus(Square(6.0), glm::dvec4(0, 5, 0, 1), 0.3, &report);
   Check(report.SkippedAboveLight == 2 && report.Cones == 0, "caster above the light casts nothing");
   // A light at the height of the caster's top and a huge radius: finite output only.

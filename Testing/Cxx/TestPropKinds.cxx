@@ -195,7 +195,8 @@ void TestGlyphsByDirection()
   auto cone = Cone();
   CompareScenes(
     "glyph mapper, direction and size",
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       vtkNew<vtkGlyph3DMapper> mapper;
       mapper->SetInputData(points);
@@ -208,7 +209,8 @@ void TestGlyphsByDirection()
       actor->SetPosition(0.2, 0.1, -0.1); // the actor's matrix applies to every glyph
       r->AddActor(actor);
     },
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       vtkNew<vtkGlyph3D> glyphs;
       glyphs->SetInputData(points);
@@ -234,7 +236,8 @@ void TestGlyphsByRotation()
   auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
   CompareScenes(
     "glyph mapper, rotation, index, mask",
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       vtkNew<vtkGlyph3DMapper> mapper;
       mapper->SetInputData(points);
@@ -250,7 +253,8 @@ void TestGlyphsByRotation()
       auto actor = GlyphActor(mapper);
       r->AddActor(actor);
     },
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
       {
@@ -297,7 +301,8 @@ void TestMultiBlock()
 
   CompareScenes(
     "multiblock with hidden, empty, translucent blocks",
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       vtkNew<vtkCompositePolyDataMapper2> mapper;
       mapper->SetInputDataObject(blocks);
@@ -312,7 +317,8 @@ void TestMultiBlock()
       actor->GetProperty()->SetDiffuse(0.8);
       r->AddActor(actor);
     },
-    [&](vtkRenderer* r) {
+    [&](vtkRenderer* r)
+    {
       Ground(r);
       r->AddActor(MakeActor(sphere, 1, 1, 1));
       r->AddActor(MakeActor(box, 1, 1, 1));
@@ -330,7 +336,8 @@ void TestAssembly()
   auto groundSource = GroundSource(3.0);
   auto sphereSource = SphereSource(0.0, 0.0, 0.0, 0.6, 32, 16);
   auto boxSource = BoxSource(0.0, 0.0, 0.0, 0.7, 1.0, 0.7);
-  auto build = [&](vtkRenderer* r, bool flatten) {
+  auto build = [&](vtkRenderer* r, bool flatten)
+  {
     auto ground = MakeActor(groundSource, 0.85, 0.85, 0.8);
     auto sphere = MakeActor(sphereSource, 0.9, 0.3, 0.3);
     sphere->SetPosition(-0.9, 1.0, 0.0);
@@ -413,13 +420,13 @@ void TestWarnings()
   std::vector<std::string> warnings;
   vtkNew<vtkCallbackCommand> counter;
   counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* client, void* text) {
-    static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text));
-  });
+  counter->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
+    { static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text)); });
   view.Pass->AddObserver(vtkCommand::WarningEvent, counter);
   view.Render();
   view.Render();
-  auto count = [&](const std::string& needle) {
+  auto count = [&](const std::string& needle)
+  {
     return std::count_if(warnings.begin(), warnings.end(),
       [&](const std::string& w) { return w.find(needle) != std::string::npos; });
   };
@@ -432,8 +439,8 @@ void TestWarnings()
   Check(count("not finite") == 1, "glyphs with a NaN or infinite orientation: one warning");
   Check(warnings.size() == 3, "no other warning");
   const std::vector<float> visibility = view.Visibility();
-  const auto shadowed = std::count_if(
-    visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
+  const auto shadowed =
+    std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
   Check(shadowed > Width * Height / 50, "the rest of the scene still casts");
   CheckAgainstTruth("scene with props that cannot cast",
     CompareWithTruth(view.Window, view.Renderer, view.Pass, 0));

@@ -15,12 +15,12 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkSmartPointer.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
 #include <glm/glm.hpp>

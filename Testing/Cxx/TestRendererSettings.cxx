@@ -120,8 +120,8 @@ void TestSetting(const Setting& setting, const double viewport[4])
   setting.Apply(shadowed, true);
   const Image off = plainOff.Render(), on = plainOn.Render(), ours = shadowed.Render();
 
-  auto values = vtkFloatArray::SafeDownCast(
-    shadowed.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  auto values =
+    vtkFloatArray::SafeDownCast(shadowed.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
   const int w = ours.Size[0], h = ours.Size[1];
   Check(values && values->GetNumberOfValues() == vtkIdType(w) * h,
     setting.Name + ": a visibility image of the viewport's size");
@@ -129,12 +129,14 @@ void TestSetting(const Setting& setting, const double viewport[4])
   {
     return;
   }
-  auto lit = [&](int x, int y) {
+  auto lit = [&](int x, int y)
+  {
     for (int dy = -3; dy <= 3; ++dy)
     {
       for (int dx = -3; dx <= 3; ++dx)
       {
-        const int u = std::min(std::max(x + dx, 0), w - 1), v = std::min(std::max(y + dy, 0), h - 1);
+        const int u = std::min(std::max(x + dx, 0), w - 1),
+                  v = std::min(std::max(y + dy, 0), h - 1);
         const float value = values->GetValue(vtkIdType(v) * w + u);
         if (!(value >= 1.0f)) // NaN (background) counts as lit; shadow does not
         {
@@ -173,7 +175,8 @@ void TestSetting(const Setting& setting, const double viewport[4])
   std::printf("%-28s lit %6d px: pass vs VTK with it %.3f%%, pass vs VTK without %.3f%%, VTK "
               "with vs without %.3f%%; shadow %d px, %.0f%% of VTK's brightness\n",
     setting.Name.c_str(), litPixels, 100.0 * oursVsOn / litPixels, 100.0 * oursVsOff / litPixels,
-    100.0 * onVsOff / litPixels, shadowPixels, vtkInShadow > 0 ? 100.0 * oursInShadow / vtkInShadow : 0.0);
+    100.0 * onVsOff / litPixels, shadowPixels,
+    vtkInShadow > 0 ? 100.0 * oursInShadow / vtkInShadow : 0.0);
   Check(litPixels > w * h / 4, setting.Name + ": most of the view is lit");
   Check(onVsOff >= 0.005 * litPixels, setting.Name + ": the setting changes VTK's image");
   Check(oursVsOn <= 0.005 * litPixels, setting.Name + ": lit pixels as VTK draws them with it");
@@ -194,35 +197,41 @@ int main()
 {
   const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
   std::vector<Setting> settings;
-  settings.push_back({ "depth peeling", [](View& view, bool) {
-                        view.Renderer->SetUseDepthPeeling(true);
-                        view.Renderer->SetMaximumNumberOfPeels(8);
-                        view.Renderer->SetOcclusionRatio(0.0);
-                      } });
+  settings.push_back({ "depth peeling",
+    [](View& view, bool)
+    {
+      view.Renderer->SetUseDepthPeeling(true);
+      view.Renderer->SetMaximumNumberOfPeels(8);
+      view.Renderer->SetOcclusionRatio(0.0);
+    } });
   settings.push_back({ "FXAA", [](View& view, bool) { view.Renderer->SetUseFXAA(true); } });
-  settings.push_back({ "SSAO", [](View& view, bool) {
-                        view.Renderer->SetUseSSAO(true);
-                        view.Renderer->SetSSAORadius(0.4);
-                        view.Renderer->SetSSAOBias(0.01);
-                        view.Renderer->SetSSAOKernelSize(32);
-                      } });
-  settings.push_back({ "tone mapping around the pass", [](View& view, bool withPass) {
-                        vtkNew<vtkToneMappingPass> toneMapping;
-                        toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
-                        toneMapping->SetExposure(1.6);
-                        if (withPass)
-                        {
-                          toneMapping->SetDelegatePass(view.Pass);
-                        }
-                        else
-                        {
-                          // The pass's own delegate without the pass: vtkRenderStepsPass would
-                          // blend the translucent spheres without VTK's OIT (0.44% of pixels).
-                          vtkNew<vtkRendererSettingsPass> scene;
-                          toneMapping->SetDelegatePass(scene);
-                        }
-                        view.Renderer->SetPass(toneMapping);
-                      },
+  settings.push_back({ "SSAO",
+    [](View& view, bool)
+    {
+      view.Renderer->SetUseSSAO(true);
+      view.Renderer->SetSSAORadius(0.4);
+      view.Renderer->SetSSAOBias(0.01);
+      view.Renderer->SetSSAOKernelSize(32);
+    } });
+  settings.push_back({ "tone mapping around the pass",
+    [](View& view, bool withPass)
+    {
+      vtkNew<vtkToneMappingPass> toneMapping;
+      toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
+      toneMapping->SetExposure(1.6);
+      if (withPass)
+      {
+        toneMapping->SetDelegatePass(view.Pass);
+      }
+      else
+      {
+        // The pass's own delegate without the pass: vtkRenderStepsPass would
+        // blend the translucent spheres without VTK's OIT (0.44% of pixels).
+        vtkNew<vtkRendererSettingsPass> scene;
+        toneMapping->SetDelegatePass(scene);
+      }
+      view.Renderer->SetPass(toneMapping);
+    },
     false });
   for (const Setting& setting : settings)
   {

@@ -5,8 +5,8 @@
 // must equal the brute-force count of casting triangles on the segment p -> s, for closed,
 // open, non-manifold, non-orientable and mirrored casters, positional and directional lights.
 // A sign mutation of the edge term must make the check fail.
-#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
+#include "penumbraCheck.h"
 #include "penumbraLightSamples.h"
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
@@ -181,8 +181,8 @@ std::vector<Caster> MakeCasters(std::mt19937& rng)
   sphere->SetPhiResolution(8);
   casters.push_back({ "closed sphere", FromSource(sphere) });
   casters.push_back({ "mirrored, scaled sphere", FromSource(sphere),
-    glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, -0.1, 0.3)),
-      glm::dvec3(-1.0, 0.7, 1.3)) });
+    glm::scale(
+      glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, -0.1, 0.3)), glm::dvec3(-1.0, 0.7, 1.3)) });
   vtkNew<vtkConeSource> cone;
   cone->SetResolution(24);
   cone->SetHeight(1.6);
@@ -289,7 +289,8 @@ int main()
   TestCostModel();
   const std::vector<Caster> casters = MakeCasters(rng);
   const std::vector<std::pair<glm::dvec4, double>> lights = { { { 0.4, 0.3, 3.0, 1.0 }, 0.6 },
-    { { 0.2, 2.5, 1.0, 1.0 }, 0.9 }, { glm::dvec4(glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), 0.0), 0.3 } };
+    { { 0.2, 2.5, 1.0, 1.0 }, 0.9 },
+    { glm::dvec4(glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), 0.0), 0.3 } };
   int total = 0, totalNonZero = 0;
   for (const Caster& caster : casters)
   {
@@ -311,6 +312,7 @@ int main()
   int compared = 0, nonZero = 0;
   const int mutated =
     CountMismatches(casters[0], lights[0].first, lights[0].second, -1, 150, rng, compared, nonZero);
-  Check(mutated > 0, "a flipped edge term is detected (" + std::to_string(mutated) + " mismatches)");
+  Check(
+    mutated > 0, "a flipped edge term is detected (" + std::to_string(mutated) + " mismatches)");
   return penumbra_test::Finish();
 }

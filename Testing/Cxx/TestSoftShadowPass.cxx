@@ -207,7 +207,8 @@ void TestLightInsideClosedCaster()
 double SoftError(Scene& scene, vtkImageData* truth, vtkImageData* depth)
 {
   scene.Window->Render();
-  auto ours = vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  auto ours =
+    vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
   auto expected = vtkFloatArray::SafeDownCast(truth->GetPointData()->GetScalars());
   auto z = vtkFloatArray::SafeDownCast(depth->GetPointData()->GetScalars());
   double sum = 0;
@@ -307,8 +308,8 @@ SoftComparison CompareSoft(Scene& scene, int lightIndex = 0)
   return result;
 }
 
-void CheckSoft(const std::string& name, const SoftComparison& c, double meanTolerance,
-  double fractionTolerance)
+void CheckSoft(
+  const std::string& name, const SoftComparison& c, double meanTolerance, double fractionTolerance)
 {
   std::printf("     %s: %d px in shadow or penumbra, MAE %.4f, >0.1: %.2f%%\n", name.c_str(),
     c.Pixels, c.MeanError, 100.0 * c.FractionAbove01);
@@ -376,10 +377,11 @@ void TestWedgesHardCases()
   large.Renderer->SetWorldPoint(0, 0, 0, 1);
   large.Renderer->WorldToDisplay();
   large.Renderer->GetDisplayPoint(below);
-  auto visibility = vtkFloatArray::SafeDownCast(
-    large.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  const float centre = visibility->GetValue(
-    static_cast<vtkIdType>(below[1]) * large.Window->GetSize()[0] + static_cast<vtkIdType>(below[0]));
+  auto visibility =
+    vtkFloatArray::SafeDownCast(large.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  const float centre =
+    visibility->GetValue(static_cast<vtkIdType>(below[1]) * large.Window->GetSize()[0] +
+      static_cast<vtkIdType>(below[0]));
   std::printf("     visibility under the small sphere: %.3f\n", centre);
   Check(centre > 0.5 && centre < 0.99, "no umbra under a light larger than the caster");
 
@@ -407,7 +409,8 @@ void TestWedgeShapes()
 {
   // A torus (saddle-shaped silhouette), an open sheet, and two overlapping casters over a
   // non-planar receiver (a lying cylinder).
-  auto wedgeScene = [](Scene& scene) {
+  auto wedgeScene = [](Scene& scene)
+  {
     scene.Window->SetMultiSamples(0);
     scene.Light->SetPosition(-1, 5, 1.5);
     vtkSoftShadowPass::SetLightRadius(scene.Light, 0.5);
@@ -560,11 +563,14 @@ void TestWedgesTemporalStability()
     truth->SetRenderer(scene.Renderer);
     truth->SetSamplesPerLight(256);
     truth->Update();
-    auto ours = vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-    auto expected = vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
+    auto ours =
+      vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+    auto expected =
+      vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
     auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
     std::vector<float> o(ours->GetPointer(0), ours->GetPointer(0) + ours->GetNumberOfValues());
-    std::vector<float> t(expected->GetPointer(0), expected->GetPointer(0) + expected->GetNumberOfValues());
+    std::vector<float> t(
+      expected->GetPointer(0), expected->GetPointer(0) + expected->GetNumberOfValues());
     if (!previousOurs.empty())
     {
       for (std::size_t i = 0; i < o.size(); ++i)
@@ -605,8 +611,10 @@ void TestWedgesTemporalStability()
 /// Visibility of light 0 in the last frame, as a vector.
 std::vector<float> Visibility(Scene& scene)
 {
-  auto values = vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  return std::vector<float>(values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  auto values =
+    vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  return std::vector<float>(
+    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
 }
 
 void TestPlateaus()
@@ -625,7 +633,8 @@ void TestPlateaus()
   int warnings = 0;
   vtkNew<vtkCallbackCommand> counter;
   counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  counter->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   scene.Pass->AddObserver(vtkCommand::WarningEvent, counter);
 
   scene.Pass->SetMethodToHardVolumes();
@@ -635,7 +644,8 @@ void TestPlateaus()
   // Without a plane: one warning, and hard shadows.
   scene.Pass->SetMethodToPlateaus();
   scene.Window->Render();
-  Check(warnings == 1 && Visibility(scene) == hard, "plateaus without a plane: a warning, hard shadows");
+  Check(warnings == 1 && Visibility(scene) == hard,
+    "plateaus without a plane: a warning, hard shadows");
   Check(scene.Pass->GetNumberOfPlateauTriangles() == 0, "no plane, no plateau triangles");
 
   vtkSoftShadowPass::SetShadowPlane(ground, true);
@@ -664,8 +674,10 @@ void TestPlateaus()
     lighter += onGround && hard[i] < 0.5f && ours[i] > 0.01f;
     penumbra += onGround && hard[i] > 0.5f && ours[i] < 0.99f;
   }
-  std::printf("     off-plane pixels differing from hard: %d, on-plane lit inside the hard shadow: %d, "
-              "penumbra pixels outside the hard shadow: %d\n", offPlaneDifferent, lighter, penumbra);
+  std::printf(
+    "     off-plane pixels differing from hard: %d, on-plane lit inside the hard shadow: %d, "
+    "penumbra pixels outside the hard shadow: %d\n",
+    offPlaneDifferent, lighter, penumbra);
   Check(offPlaneDifferent == 0, "plateaus: pixels off the plane keep the hard shadow");
   Check(lighter < 20, "plateaus: the umbra is the hard shadow (outer penumbra only)");
   Check(penumbra > 200, "plateaus: a penumbra outside the hard shadow");
@@ -682,8 +694,9 @@ void TestPlateaus()
   {
     different += std::abs(given[i] - ours[i]) > 0.05f;
   }
-  Check(different < 50, "plateaus: a plane set on the pass equals the marked actor (" +
-      std::to_string(different) + " px differ)");
+  Check(different < 50,
+    "plateaus: a plane set on the pass equals the marked actor (" + std::to_string(different) +
+      " px differ)");
   scene.Pass->SetPlateauFalloffToLinear();
   CheckSoft("plateaus, linear falloff", CompareSoft(scene), 0.09, 0.25);
   Check(warnings == 1, "plateaus: no further warning");
@@ -740,8 +753,8 @@ void TestCachingAndHeadlights()
     scene.Renderer->GetActiveCamera()->Azimuth(10);
     scene.Window->Render();
   }
-  Check(scene.Pass->GetNumberOfSilhouetteUpdates() == updates,
-    "camera orbit does no silhouette work");
+  Check(
+    scene.Pass->GetNumberOfSilhouetteUpdates() == updates, "camera orbit does no silhouette work");
   scene.Light->SetPosition(-2, 6, 2.5);
   scene.Window->Render();
   Check(scene.Pass->GetNumberOfSilhouetteUpdates() > updates, "moving the light recomputes");
@@ -886,9 +899,10 @@ void TestViewportsLightsAndResize()
 
   window->Render();
   CheckAgainstTruth("left viewport", CompareWithTruth(window, renderers[0], passes[0], 0));
-  CheckAgainstTruth("right viewport, light 1", CompareWithTruth(window, renderers[1], passes[1], 0));
-  CheckAgainstTruth("right viewport, light 2 (directional)",
-    CompareWithTruth(window, renderers[1], passes[1], 1));
+  CheckAgainstTruth(
+    "right viewport, light 1", CompareWithTruth(window, renderers[1], passes[1], 0));
+  CheckAgainstTruth(
+    "right viewport, light 2 (directional)", CompareWithTruth(window, renderers[1], passes[1], 1));
   Check(passes[1]->GetNumberOfShadowingLights() == 2, "two shadowing lights");
 
   window->SetSize(260, 200);
@@ -932,10 +946,12 @@ void TestBadInput()
   int warnings = 0;
   vtkNew<vtkCallbackCommand> counter;
   counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  counter->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   scene.Pass->AddObserver(vtkCommand::WarningEvent, counter);
 
-  auto addData = [&](vtkPolyData* data) {
+  auto addData = [&](vtkPolyData* data)
+  {
     vtkNew<vtkTrivialProducer> producer;
     producer->SetOutput(data);
     vtkNew<vtkPolyDataMapper> mapper;

@@ -67,8 +67,9 @@ void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObjec
   ground->SetPoint1(4, -0.2, -4);
   ground->SetPoint2(-4, -0.2, 4);
   renderer->AddActor(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
-  keep.insert(keep.end(), { field.GetPointer(), contour.GetPointer(), seeds.GetPointer(),
-                            ball.GetPointer(), glyphs.GetPointer(), ground.GetPointer() });
+  keep.insert(keep.end(),
+    { field.GetPointer(), contour.GetPointer(), seeds.GetPointer(), ball.GetPointer(),
+      glyphs.GetPointer(), ground.GetPointer() });
 
   renderer->AddLight(KeyLight(-2, 6, 2, true));
   auto fill = KeyLight(3, 4, 1, false);
@@ -107,8 +108,8 @@ void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>
   floor->GetProperty()->SetInterpolationToPBR();
   floor->GetProperty()->SetRoughness(0.5);
   renderer->AddActor(floor);
-  keep.insert(keep.end(), { boy.GetPointer(), source.GetPointer(), roof.GetPointer(),
-                            ground.GetPointer() });
+  keep.insert(
+    keep.end(), { boy.GetPointer(), source.GetPointer(), roof.GetPointer(), ground.GetPointer() });
 
   renderer->AddLight(KeyLight(0.5, 8, 2.5, true));
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -154,8 +155,9 @@ void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& k
   curved->RotateZ(90);
   curved->SetPosition(0.2, -0.25, 1.6);
   renderer->AddActor(curved);
-  keep.insert(keep.end(), { ground.GetPointer(), box.GetPointer(), first.GetPointer(),
-                            second.GetPointer(), hump.GetPointer() });
+  keep.insert(keep.end(),
+    { ground.GetPointer(), box.GetPointer(), first.GetPointer(), second.GetPointer(),
+      hump.GetPointer() });
   auto light = KeyLight(-1.5, 5, 2, true);
   vtkSoftShadowPass::SetLightRadius(light, 0.7);
   renderer->AddLight(light);

@@ -39,8 +39,10 @@ struct Scene
 
 std::vector<float> Visibility(vtkSoftShadowPass* pass)
 {
-  auto values = vtkFloatArray::SafeDownCast(pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  return std::vector<float>(values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  auto values =
+    vtkFloatArray::SafeDownCast(pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
+  return std::vector<float>(
+    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
 }
 
 /// A scene in its window, with its light and a pass of `Samples` light samples.
@@ -220,39 +222,49 @@ vtkSmartPointer<vtkAlgorithm> Mobius()
 int main()
 {
   std::vector<Scene> scenes;
-  scenes.push_back({ "sphere and box", [](vtkRenderer* r) {
-                      Ground(r);
-                      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
-                      r->AddActor(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
-                    } });
-  scenes.push_back({ "open sheet, Moebius strip, mirrored", [](vtkRenderer* r) {
-                      Ground(r);
-                      auto sheet = MakeActor(GroundSource(0.6, 1.4), 0.9, 0.7, 0.3);
-                      sheet->SetPosition(-1.2, 0.0, 0.0);
-                      r->AddActor(sheet);
-                      auto mobius = MakeActor(Mobius(), 0.4, 0.8, 0.4);
-                      mobius->SetPosition(1.0, 1.3, -0.5);
-                      mobius->SetScale(-1.0, 1.0, 1.0); // mirrored
-                      r->AddActor(mobius);
-                    } });
-  scenes.push_back({ "overlapping casters", [](vtkRenderer* r) {
-                      Ground(r);
-                      r->AddActor(MakeActor(SphereSource(-0.3, 1.2, 0.0, 0.5, 32, 16), 0.9, 0.3, 0.3));
-                      r->AddActor(MakeActor(SphereSource(0.3, 0.8, 0.4, 0.5, 32, 16), 0.3, 0.9, 0.3));
-                      r->AddActor(MakeActor(BoxSource(0.2, 1.8, -0.3, 1.2, 0.1, 0.3), 0.3, 0.3, 0.9));
-                    } });
-  Scene directional{ "directional light, 4 degrees", [](vtkRenderer* r) {
-                      Ground(r);
-                      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
-                      r->AddActor(MakeActor(Mobius(), 0.4, 0.8, 0.4));
-                    } };
+  scenes.push_back({ "sphere and box",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
+      r->AddActor(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
+    } });
+  scenes.push_back({ "open sheet, Moebius strip, mirrored",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      auto sheet = MakeActor(GroundSource(0.6, 1.4), 0.9, 0.7, 0.3);
+      sheet->SetPosition(-1.2, 0.0, 0.0);
+      r->AddActor(sheet);
+      auto mobius = MakeActor(Mobius(), 0.4, 0.8, 0.4);
+      mobius->SetPosition(1.0, 1.3, -0.5);
+      mobius->SetScale(-1.0, 1.0, 1.0); // mirrored
+      r->AddActor(mobius);
+    } });
+  scenes.push_back({ "overlapping casters",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      r->AddActor(MakeActor(SphereSource(-0.3, 1.2, 0.0, 0.5, 32, 16), 0.9, 0.3, 0.3));
+      r->AddActor(MakeActor(SphereSource(0.3, 0.8, 0.4, 0.5, 32, 16), 0.3, 0.9, 0.3));
+      r->AddActor(MakeActor(BoxSource(0.2, 1.8, -0.3, 1.2, 0.1, 0.3), 0.3, 0.3, 0.9));
+    } });
+  Scene directional{ "directional light, 4 degrees",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
+      r->AddActor(MakeActor(Mobius(), 0.4, 0.8, 0.4));
+    } };
   directional.Directional = true;
   directional.Radius = 4.0;
   scenes.push_back(directional);
-  Scene eyeInPenumbra{ "eye inside a penumbra", [](vtkRenderer* r) {
-                        Ground(r);
-                        r->AddActor(MakeActor(BoxSource(0.0, 2.0, 0.0, 2.0, 0.1, 2.0), 0.6, 0.6, 0.9));
-                      } };
+  Scene eyeInPenumbra{ "eye inside a penumbra",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      r->AddActor(MakeActor(BoxSource(0.0, 2.0, 0.0, 2.0, 0.1, 2.0), 0.6, 0.6, 0.9));
+    } };
   // Under the slab's edge, looking across the ground: the eye and near plane in its penumbra.
   eyeInPenumbra.LightPosition[0] = 0.0;
   eyeInPenumbra.LightPosition[2] = 0.0;
@@ -264,13 +276,15 @@ int main()
   eyeInPenumbra.Focal[1] = 0.0;
   eyeInPenumbra.Focal[2] = -2.0;
   scenes.push_back(eyeInPenumbra);
-  Scene lightInBounds{ "light inside a caster's bounds", [](vtkRenderer* r) {
-                        Ground(r);
-                        auto arch = MakeActor(Mobius(), 0.8, 0.5, 0.3);
-                        arch->SetScale(2.5, 2.5, 2.5);
-                        arch->SetPosition(0.0, 2.0, 0.0);
-                        r->AddActor(arch);
-                      } };
+  Scene lightInBounds{ "light inside a caster's bounds",
+    [](vtkRenderer* r)
+    {
+      Ground(r);
+      auto arch = MakeActor(Mobius(), 0.8, 0.5, 0.3);
+      arch->SetScale(2.5, 2.5, 2.5);
+      arch->SetPosition(0.0, 2.0, 0.0);
+      r->AddActor(arch);
+    } };
   lightInBounds.LightPosition[0] = 0.3;
   lightInBounds.LightPosition[1] = 2.5;
   lightInBounds.LightPosition[2] = 0.2;

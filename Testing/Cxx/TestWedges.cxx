@@ -3,8 +3,8 @@
 // The reference is a Monte Carlo integral over the light's disk (the same gnomonic disk that
 // EdgeOcclusion integrates over) by ray casting against the caster: what is left between the
 // two is the one approximation of the method, a single silhouette seen from the light's centre.
-#include "penumbraCheck.h"
 #include "penumbraCasterTopology.h"
+#include "penumbraCheck.h"
 #include "penumbraLightSamples.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
@@ -139,8 +139,8 @@ void TestAgainstMonteCarlo()
   const CasterTopology box = Mesh(cube);
   // Light over the top face: every point of the light sees the same silhouette, so the method
   // is exact and only Monte Carlo noise is left.
-  CompareWithMonteCarlo("box, silhouette stable over the light", box, { 0.0, 3.0, 0.0 }, 0.3,
-    0.003, 0.02);
+  CompareWithMonteCarlo(
+    "box, silhouette stable over the light", box, { 0.0, 3.0, 0.0 }, 0.3, 0.003, 0.02);
   // Off-axis: part of the light sees a side face the centre does not (the single-silhouette
   // approximation, Akenine-Moller and Assarsson's Section 8). Stated tolerance: mean 0.01 and
   // max 0.15 (small light), mean 0.025 and max 0.35 (a light as large as the box).
@@ -182,7 +182,8 @@ void TestContinuityAndMonotonicity()
   }
   std::printf("     largest step over 1 mm: %.5f, ends at %.3f\n", largestStep, previous);
   Check(monotone, "visibility falls monotonically into the umbra");
-  Check(largestStep < 0.01, "visibility is continuous (no step above 0.01 per 1/1000 of the width)");
+  Check(
+    largestStep < 0.01, "visibility is continuous (no step above 0.01 per 1/1000 of the width)");
   Check(previous == 0.0, "umbra reached");
 
   // Across the shared side planes of neighbouring wedges, at a silhouette corner.
@@ -197,8 +198,9 @@ void TestContinuityAndMonotonicity()
   {
     const glm::dvec3 p(coordinate(rng), -1.2, coordinate(rng));
     const glm::dvec3 q = p + glm::dvec3(tiny(rng), 0.0, tiny(rng));
-    worstJump = std::max(worstJump, std::abs(WedgeVisibility(corner, cornerVolume, light, 0.8, p) -
-                                      WedgeVisibility(corner, cornerVolume, light, 0.8, q)));
+    worstJump = std::max(worstJump,
+      std::abs(WedgeVisibility(corner, cornerVolume, light, 0.8, p) -
+        WedgeVisibility(corner, cornerVolume, light, 0.8, q)));
   }
   std::printf("     largest change over 1e-5 around a box: %.2e\n", worstJump);
   Check(worstJump < 1e-3, "no cracks: continuous everywhere around a box's corners");
@@ -246,24 +248,26 @@ void TestDegenerateEdges()
   const glm::dvec3 p(0.3, -1, 0.2);
   bool finite = true;
   auto probe = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& q,
-                 const glm::dvec4& l, double r) {
+                 const glm::dvec4& l, double r)
+  {
     const double value = EdgeOcclusion(q, a, b, l, r);
     finite = finite && std::isfinite(value) && std::abs(value) <= 1.0;
     const Wedge wedge = Wedge::Build(a, b, l, r);
     for (const glm::dvec4& v : wedge.Vertices)
     {
-      finite = finite && (!wedge.Valid || (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)));
+      finite = finite &&
+        (!wedge.Valid || (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)));
     }
   };
-  probe({ 0, 0, 0 }, { 0, 0, 0 }, p, light, 0.5);      // zero-length edge
-  probe({ 0, 0, 0 }, { 0, 1, 0 }, p, light, 0.5);      // pointing at the light
+  probe({ 0, 0, 0 }, { 0, 0, 0 }, p, light, 0.5); // zero-length edge
+  probe({ 0, 0, 0 }, { 0, 1, 0 }, p, light, 0.5); // pointing at the light
   probe({ 0, 0, 0 }, { 0, 1e-12, 1e-12 }, p, light, 0.5);
   probe({ 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0, 0 }, light, 0.5); // receiver on the edge
   probe({ 0, 0, 0 }, { 1, 0, 0 }, { 0, 2, 0 }, light, 0.5);   // receiver at the light
-  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, light, 0.0);      // no radius
-  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, light, 50.0);     // light swallowing everything
-  probe({ 0, 0, 0 }, { 0, 1, 0 }, p, sun, 0.05);       // parallel to a directional light
-  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, sun, 1.5);        // a huge sun
+  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, light, 0.0);             // no radius
+  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, light, 50.0);            // light swallowing everything
+  probe({ 0, 0, 0 }, { 0, 1, 0 }, p, sun, 0.05);              // parallel to a directional light
+  probe({ 0, 0, 0 }, { 1, 0, 0 }, p, sun, 1.5);               // a huge sun
   Check(finite, "no NaN or out-of-range correction on degenerate edges");
   Check(!Wedge::Build({ 0, 0, 0 }, { 0, 1, 0 }, light, 0.5).Valid,
     "an edge pointing at the light has no wedge");
@@ -310,8 +314,8 @@ void TestLightPyramid()
   for (int trial = 0; trial < 200; ++trial)
   {
     // An edge on a line through a random point of the light's sphere.
-    const glm::dvec3 through = centre + radius * 0.9 *
-      glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+    const glm::dvec3 through = centre +
+      radius * 0.9 * glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
     const glm::dvec3 direction =
       glm::normalize(glm::dvec3(unit(rng) - 0.5, -1.0 - unit(rng), unit(rng) - 0.5));
     const glm::dvec3 a = through + (2.0 + 3.0 * unit(rng)) * direction;
@@ -325,8 +329,9 @@ void TestLightPyramid()
     ++built;
     for (int k = 0; k < 50; ++k)
     {
-      const glm::dvec3 x = centre + radius * std::cbrt(unit(rng)) *
-        glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+      const glm::dvec3 x = centre +
+        radius * std::cbrt(unit(rng)) *
+          glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
       const glm::dvec3 e = a + unit(rng) * (b - a);
       const glm::dvec3 p = x + (1.0 + 20.0 * unit(rng)) * (e - x);
       ++tried;

@@ -6,12 +6,12 @@
 #include "penumbraCheck.h"
 
 #include "vtkActor.h"
+#include "vtkAlgorithm.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRayTracedVisibility.h"
@@ -98,11 +98,14 @@ inline vtkSmartPointer<vtkCubeSource> BoxSource(
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
 struct Comparison
 {
-  int Compared = 0;    ///< pixels where both see the same surface
-  int Shadowed = 0;    ///< of those, in shadow according to the truth
-  int Boundary = 0;    ///< disagreements within one pixel of a truth shadow boundary
-  int Mismatched = 0;  ///< disagreements elsewhere: wrong shadows
-  double MismatchFraction() const { return this->Compared ? double(this->Mismatched) / this->Compared : 1.0; }
+  int Compared = 0;   ///< pixels where both see the same surface
+  int Shadowed = 0;   ///< of those, in shadow according to the truth
+  int Boundary = 0;   ///< disagreements within one pixel of a truth shadow boundary
+  int Mismatched = 0; ///< disagreements elsewhere: wrong shadows
+  double MismatchFraction() const
+  {
+    return this->Compared ? double(this->Mismatched) / this->Compared : 1.0;
+  }
 };
 
 /**
@@ -128,9 +131,11 @@ inline Comparison CompareWithTruth(
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const int w = size[0], h = size[1];
   std::vector<float> zbuffer(static_cast<size_t>(w) * h);
-  window->GetZbufferData(origin[0], origin[1], origin[0] + w - 1, origin[1] + h - 1, zbuffer.data());
+  window->GetZbufferData(
+    origin[0], origin[1], origin[0] + w - 1, origin[1] + h - 1, zbuffer.data());
   auto pass_ = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  auto true_ = vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
+  auto true_ = vtkFloatArray::SafeDownCast(
+    truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
   auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
   auto at = [w](int x, int y) { return static_cast<vtkIdType>(y) * w + x; };
   for (int y = 1; y + 1 < h; ++y)
@@ -177,7 +182,8 @@ inline Comparison CompareWithTruth(
 
 /// Checks a comparison against the stated tolerance: at most 0.2% of the compared pixels wrong
 /// away from shadow boundaries, and a scene that really has shadow in view.
-inline void CheckAgainstTruth(const std::string& name, const Comparison& c, double minShadowed = 0.01)
+inline void CheckAgainstTruth(
+  const std::string& name, const Comparison& c, double minShadowed = 0.01)
 {
   std::printf("     %s: compared %d px, shadowed %d, boundary %d, wrong %d (%.3f%%)\n",
     name.c_str(), c.Compared, c.Shadowed, c.Boundary, c.Mismatched, 100.0 * c.MismatchFraction());

@@ -40,7 +40,7 @@ using penumbra_test::Check;
 
 constexpr double LightPos[3] = { 0.6, 0.4, 4.0 };
 constexpr double LightRadius = 0.6;
-constexpr int Pixels = 256;     // truth image is Pixels x Pixels over [-HalfSize, HalfSize]^2
+constexpr int Pixels = 256; // truth image is Pixels x Pixels over [-HalfSize, HalfSize]^2
 constexpr double HalfSize = 3.0;
 
 /// Casters: a sphere, a box crossing the ground and a plank narrower than the light samples'
@@ -91,7 +91,8 @@ vtkSmartPointer<vtkPlanarSoftShadowFilter> MakeFilter(vtkAlgorithmOutput* caster
 
 /// The filter's intensity at pixel centres of the ground grid (1 where no triangle covers),
 /// by barycentric interpolation over its triangles.
-std::vector<float> Rasterize(vtkPolyData* shadow, int pixels, double half, double cx = 0.0, double cy = 0.0)
+std::vector<float> Rasterize(
+  vtkPolyData* shadow, int pixels, double half, double cx = 0.0, double cy = 0.0)
 {
   std::vector<float> field(static_cast<size_t>(pixels) * pixels, 1.0f);
   auto intensity = shadow->GetPointData()->GetArray("LightIntensity");
@@ -109,13 +110,16 @@ std::vector<float> Rasterize(vtkPolyData* shadow, int pixels, double half, doubl
       p[i][1] -= cy;
       v[i] = intensity->GetComponent(ids[i], 0);
     }
-    const double det = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+    const double det =
+      (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
     if (det == 0.0)
     {
       continue;
     }
-    const double xmin = std::min({ p[0][0], p[1][0], p[2][0] }), xmax = std::max({ p[0][0], p[1][0], p[2][0] });
-    const double ymin = std::min({ p[0][1], p[1][1], p[2][1] }), ymax = std::max({ p[0][1], p[1][1], p[2][1] });
+    const double xmin = std::min({ p[0][0], p[1][0], p[2][0] }),
+                 xmax = std::max({ p[0][0], p[1][0], p[2][0] });
+    const double ymin = std::min({ p[0][1], p[1][1], p[2][1] }),
+                 ymax = std::max({ p[0][1], p[1][1], p[2][1] });
     const int x0 = std::max(0, static_cast<int>(std::floor((xmin + half) / step - 0.5)));
     const int x1 = std::min(pixels - 1, static_cast<int>(std::ceil((xmax + half) / step - 0.5)));
     const int y0 = std::max(0, static_cast<int>(std::floor((ymin + half) / step - 0.5)));
@@ -125,13 +129,16 @@ std::vector<float> Rasterize(vtkPolyData* shadow, int pixels, double half, doubl
       for (int x = x0; x <= x1; ++x)
       {
         const double px = -half + (x + 0.5) * step, py = -half + (y + 0.5) * step;
-        const double b1 = ((px - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (py - p[0][1])) / det;
-        const double b2 = ((p[1][0] - p[0][0]) * (py - p[0][1]) - (px - p[0][0]) * (p[1][1] - p[0][1])) / det;
+        const double b1 =
+          ((px - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (py - p[0][1])) / det;
+        const double b2 =
+          ((p[1][0] - p[0][0]) * (py - p[0][1]) - (px - p[0][0]) * (p[1][1] - p[0][1])) / det;
         const double b0 = 1.0 - b1 - b2;
         const double eps = -1e-9;
         if (b0 >= eps && b1 >= eps && b2 >= eps)
         {
-          field[static_cast<size_t>(y) * pixels + x] = static_cast<float>(b0 * v[0] + b1 * v[1] + b2 * v[2]);
+          field[static_cast<size_t>(y) * pixels + x] =
+            static_cast<float>(b0 * v[0] + b1 * v[1] + b2 * v[2]);
         }
       }
     }
@@ -141,7 +148,8 @@ std::vector<float> Rasterize(vtkPolyData* shadow, int pixels, double half, doubl
 
 /// Ray-traced visibility of the ground from an orthographic camera looking straight down; -1
 /// where a caster hides the ground.
-std::vector<float> TraceTruth(Scene& scene, int pixels, double half, int rays, double cx = 0.0, double cy = 0.0)
+std::vector<float> TraceTruth(
+  Scene& scene, int pixels, double half, int rays, double cx = 0.0, double cy = 0.0)
 {
   auto window = penumbra_test::NewRenderWindow();
   window->SetSize(pixels, pixels);
@@ -249,7 +257,8 @@ int TestTruth()
   const double pixelArea = std::pow(2.0 * HalfSize / Pixels, 2);
   for (int samples : { 32, 64 })
   {
-    for (int pattern : { vtkPlanarSoftShadowFilter::SUNFLOWER, vtkPlanarSoftShadowFilter::POLAR_GRID })
+    for (int pattern :
+      { vtkPlanarSoftShadowFilter::SUNFLOWER, vtkPlanarSoftShadowFilter::POLAR_GRID })
     {
       for (bool refine : { true, false })
       {
@@ -259,27 +268,34 @@ int TestTruth()
         filter->SetRefine(refine);
         const auto t0 = std::chrono::steady_clock::now();
         filter->Update();
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const Errors e = Compare(truth, Rasterize(filter->GetOutput(), Pixels, HalfSize), pixelArea);
-        const std::string name = std::string(pattern == 0 ? "sunflower" : "polar") + " N=" +
-          std::to_string(samples) + (refine ? " refined" : " unrefined");
-        std::printf("     %s: %.3f s, %lld triangles; %d px (%d penumbra): MAE %.4f, penumbra MAE %.4f, "
-                    "|err| > 0.1: %.2f%%; shadow integral %.4f vs truth %.4f (%.2f%%); filter's own %.4f\n",
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const Errors e =
+          Compare(truth, Rasterize(filter->GetOutput(), Pixels, HalfSize), pixelArea);
+        const std::string name = std::string(pattern == 0 ? "sunflower" : "polar") +
+          " N=" + std::to_string(samples) + (refine ? " refined" : " unrefined");
+        std::printf(
+          "     %s: %.3f s, %lld triangles; %d px (%d penumbra): MAE %.4f, penumbra MAE %.4f, "
+          "|err| > 0.1: %.2f%%; shadow integral %.4f vs truth %.4f (%.2f%%); filter's own %.4f\n",
           name.c_str(), seconds, static_cast<long long>(filter->GetOutput()->GetNumberOfCells()),
-          e.Compared, e.Penumbra, e.Mae, e.PenumbraMae, 100.0 * e.Over01, e.Integral, e.TruthIntegral,
-          100.0 * (e.Integral / e.TruthIntegral - 1.0), filter->GetShadowIntegral());
+          e.Compared, e.Penumbra, e.Mae, e.PenumbraMae, 100.0 * e.Over01, e.Integral,
+          e.TruthIntegral, 100.0 * (e.Integral / e.TruthIntegral - 1.0),
+          filter->GetShadowIntegral());
         // The plank's shadow alone (ground y in [1.8, 2.7]): a part thinner than the samples'
         // spacing, whose N hard shadows are disjoint strips.
-        const Errors plank = Compare(truth, Rasterize(filter->GetOutput(), Pixels, HalfSize), pixelArea, 1.8, 2.7);
-        std::printf("       plank: MAE %.4f, shadow integral %.4f vs truth %.4f (%.1f%%)\n", plank.Mae,
-          plank.Integral, plank.TruthIntegral, 100.0 * (plank.Integral / plank.TruthIntegral - 1.0));
+        const Errors plank =
+          Compare(truth, Rasterize(filter->GetOutput(), Pixels, HalfSize), pixelArea, 1.8, 2.7);
+        std::printf("       plank: MAE %.4f, shadow integral %.4f vs truth %.4f (%.1f%%)\n",
+          plank.Mae, plank.Integral, plank.TruthIntegral,
+          100.0 * (plank.Integral / plank.TruthIntegral - 1.0));
         if (samples == 32 && refine)
         {
           Check(e.Compared > Pixels * Pixels / 2 && e.Penumbra > 2000, name + ": penumbra in view");
           Check(e.Mae < 0.01, name + ": MAE < 0.01");
           Check(e.PenumbraMae < 0.05, name + ": penumbra MAE < 0.05");
           Check(e.Over01 < 0.01, name + ": under 1% of pixels off by more than 0.1");
-          Check(std::abs(e.Integral / e.TruthIntegral - 1.0) < 0.04, name + ": shadow integral within 4%");
+          Check(std::abs(e.Integral / e.TruthIntegral - 1.0) < 0.04,
+            name + ": shadow integral within 4%");
           Check(std::abs(plank.Integral / plank.TruthIntegral - 1.0) < 0.15,
             name + ": thin plank's shadow integral within 15%");
         }
@@ -330,8 +346,10 @@ int TestTemporal()
   }
   meanFilter /= std::max(1, compared);
   meanTruth /= std::max(1, compared);
-  std::printf("     per-step change over %d steps of %.3f: filter max %.4f mean %.5f; truth max %.4f "
-              "mean %.5f\n", steps, dx, worstFilter, meanFilter, worstTruth, meanTruth);
+  std::printf(
+    "     per-step change over %d steps of %.3f: filter max %.4f mean %.5f; truth max %.4f "
+    "mean %.5f\n",
+    steps, dx, worstFilter, meanFilter, worstTruth, meanTruth);
   // N samples make a staircase whose steps bunch where several samples project alike, so the
   // largest step of N = 32 is about twice the truth's here (measured 1.96; it shrinks with N, see
   // Documentation/planar_filter.md).
@@ -348,10 +366,12 @@ struct Messages
   explicit Messages(vtkObject* object)
   {
     this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
-      auto self = static_cast<Messages*>(data);
-      ++(event == vtkCommand::WarningEvent ? self->Warnings : self->Errors);
-    });
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long event, void* data, void*)
+      {
+        auto self = static_cast<Messages*>(data);
+        ++(event == vtkCommand::WarningEvent ? self->Warnings : self->Errors);
+      });
     object->AddObserver(vtkCommand::WarningEvent, this->Callback);
     object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
   }
@@ -420,29 +440,37 @@ int TestBadInput()
   const double inf = std::numeric_limits<double>::infinity();
   auto triangle = Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 } });
   std::vector<Case> cases = {
-    { "empty input", vtkSmartPointer<vtkPolyData>::New(), { 0, 0, 5 }, 0.5, 16, true, false, false },
-    { "lines only", Mesh({ { 0, 0, 1 }, { 1, 0, 1 } }, { { 0, 1 } }, true), { 0, 0, 5 }, 0.5, 16, true, true, false },
+    { "empty input", vtkSmartPointer<vtkPolyData>::New(), { 0, 0, 5 }, 0.5, 16, true, false,
+      false },
+    { "lines only", Mesh({ { 0, 0, 1 }, { 1, 0, 1 } }, { { 0, 1 } }, true), { 0, 0, 5 }, 0.5, 16,
+      true, true, false },
     { "NaN and infinite points dropped",
-      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 }, { nan, 0, 1 }, { 0, inf, 1 } }, { { 0, 1, 2 }, { 0, 3, 4 } }),
+      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 }, { nan, 0, 1 }, { 0, inf, 1 } },
+        { { 0, 1, 2 }, { 0, 3, 4 } }),
       { 0, 0, 5 }, 0.5, 16, false, true, false },
     { "light below the plane", triangle, { 0, 0, -5 }, 0.5, 16, true, false, true },
     { "light on the plane", triangle, { 3, 0, 0 }, 0.5, 16, true, false, true },
     { "radius 0: hard shadow", triangle, { 0, 0, 5 }, 0.0, 16, false, false, false },
     { "one sample", triangle, { 0, 0, 5 }, 0.5, 1, false, false, false },
-    { "caster crossing the plane", Mesh({ { 0, 0, -1 }, { 1, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 } }),
-      { 0.2, 0.2, 5 }, 0.5, 16, false, false, false },
-    { "caster crossing the light's height", Mesh({ { 0, 0, 0.5 }, { 1, 0, 9 }, { 0, 1, 9 } }, { { 0, 1, 2 } }),
-      { 0.2, 0.2, 5 }, 0.5, 16, false, false, false },
+    { "caster crossing the plane",
+      Mesh({ { 0, 0, -1 }, { 1, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 } }), { 0.2, 0.2, 5 }, 0.5, 16,
+      false, false, false },
+    { "caster crossing the light's height",
+      Mesh({ { 0, 0, 0.5 }, { 1, 0, 9 }, { 0, 1, 9 } }, { { 0, 1, 2 } }), { 0.2, 0.2, 5 }, 0.5, 16,
+      false, false, false },
     { "caster lying on the plane", Mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }),
       { 0, 0, 5 }, 0.5, 16, true, false, false },
     { "degenerate triangles",
-      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 2, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 }, { 0, 0, 3 }, { 1, 1, 1 }, { 0, 1, 3 } }),
+      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 2, 0, 1 }, { 0, 1, 1 } },
+        { { 0, 1, 2 }, { 0, 0, 3 }, { 1, 1, 1 }, { 0, 1, 3 } }),
       { 0, 0, 5 }, 0.5, 16, false, false, false },
-    { "non-manifold fan", Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0.5, 1, 1.2 }, { 0.5, -1, 1.2 }, { 0.5, 0.2, 2 } },
-                            { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
+    { "non-manifold fan",
+      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0.5, 1, 1.2 }, { 0.5, -1, 1.2 }, { 0.5, 0.2, 2 } },
+        { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
       { 0, 0, 5 }, 0.5, 16, false, false, false },
-    { "invalid point ids", Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 }, { 0, 1, 7 } }),
-      { 0, 0, 5 }, 0.5, 16, false, true, false },
+    { "invalid point ids",
+      Mesh({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, { { 0, 1, 2 }, { 0, 1, 7 } }), { 0, 0, 5 },
+      0.5, 16, false, true, false },
   };
   for (const Case& c : cases)
   {
@@ -459,12 +487,15 @@ int TestBadInput()
       static_cast<long long>(out->GetNumberOfCells()), messages.Warnings, messages.Errors);
     Check(WellFormed(out), c.Name + ": output well formed");
     Check(empty == c.ExpectEmpty, c.Name + (c.ExpectEmpty ? ": empty output" : ": some shadow"));
-    Check((messages.Warnings > 0) == c.ExpectWarning, c.Name + (c.ExpectWarning ? ": warns" : ": no warning"));
-    Check((messages.Errors > 0) == c.ExpectError, c.Name + (c.ExpectError ? ": reports an error" : ": no error"));
+    Check((messages.Warnings > 0) == c.ExpectWarning,
+      c.Name + (c.ExpectWarning ? ": warns" : ": no warning"));
+    Check((messages.Errors > 0) == c.ExpectError,
+      c.Name + (c.ExpectError ? ": reports an error" : ": no error"));
     if (!empty && (c.Radius == 0.0 || c.Samples == 1))
     {
       auto range = out->GetPointData()->GetArray("LightIntensity")->GetRange();
-      Check(range[0] == 0.0 && range[1] == 0.0 && out->GetCellData()->GetArray("ShadowRegion")->GetRange()[1] == 0,
+      Check(range[0] == 0.0 && range[1] == 0.0 &&
+          out->GetCellData()->GetArray("ShadowRegion")->GetRange()[1] == 0,
         c.Name + ": all umbra, intensity 0");
     }
   }
@@ -488,7 +519,8 @@ int TestBadInput()
     filter->SetLightPosition(0, 0, 1);
     filter->SetLightRadius(0);
     filter->Update();
-    Check(std::abs(filter->GetUmbraArea() - 0.5) < 1e-6, "hard shadow from straight above: area 0.5");
+    Check(
+      std::abs(filter->GetUmbraArea() - 0.5) < 1e-6, "hard shadow from straight above: area 0.5");
   }
   // A zero plane normal is refused.
   {
@@ -498,7 +530,8 @@ int TestBadInput()
     filter->SetLightPosition(0, 0, 5);
     filter->SetPlaneNormal(0, 0, 0);
     filter->Update();
-    Check(messages.Errors > 0 && filter->GetOutput()->GetNumberOfCells() == 0 && WellFormed(filter->GetOutput()),
+    Check(messages.Errors > 0 && filter->GetOutput()->GetNumberOfCells() == 0 &&
+        WellFormed(filter->GetOutput()),
       "zero plane normal: error, empty output");
   }
   // Random triangle soups far from the origin: slivers, overlaps, parts below the plane and
@@ -519,7 +552,8 @@ int TestBadInput()
       for (int k = 0; k < 3; ++k)
       {
         ids.push_back(static_cast<vtkIdType>(points.size()));
-        points.push_back({ centre[0] + size * unit(rng), centre[1] + size * unit(rng), centre[2] + size * unit(rng) });
+        points.push_back({ centre[0] + size * unit(rng), centre[1] + size * unit(rng),
+          centre[2] + size * unit(rng) });
       }
       triangles.push_back(ids);
     }
@@ -544,7 +578,8 @@ int TestBadInput()
     filter->SetMaximumRefinementPoints(5000);
     const auto t0 = std::chrono::steady_clock::now();
     filter->Update();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("     128 samples, 4k-triangle sphere: %.2f s, %lld triangles\n", seconds,
       static_cast<long long>(filter->GetOutput()->GetNumberOfCells()));
     Check(seconds < 20.0 && WellFormed(filter->GetOutput()), "128 samples finish, well formed");

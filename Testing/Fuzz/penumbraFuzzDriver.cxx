@@ -166,19 +166,18 @@ void CubeCorners(ByteWriter& w)
 void Receivers(ByteWriter& w)
 {
   w.U8(4);
-  w.U8(0).U8(128).Scalar(0.5);  // beyond the middle of each edge
-  w.U8(0).U8(10).Scalar(2.0);   // beyond one end
+  w.U8(0).U8(128).Scalar(0.5);    // beyond the middle of each edge
+  w.U8(0).U8(10).Scalar(2.0);     // beyond one end
   w.U8(1).Point(0.25, -3.0, 0.5); // on the ground
-  w.U8(1).Lattice(0, 0, 0);     // inside the caster
-  w.U8(8).Point(0, 0, 0);       // light samples towards the origin
+  w.U8(1).Lattice(0, 0, 0);       // inside the caster
+  w.U8(8).Point(0, 0, 0);         // light samples towards the origin
 }
 
 std::vector<std::pair<std::string, Bytes>> Seeds()
 {
   // Closed cube (12 outward triangles) as raw triangles.
-  static const int cube[12][3] = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 },
-    { 0, 1, 4 }, { 1, 5, 4 }, { 2, 6, 3 }, { 3, 6, 7 }, { 0, 4, 2 }, { 2, 4, 6 },
-    { 1, 3, 5 }, { 3, 7, 5 } };
+  static const int cube[12][3] = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 }, { 0, 1, 4 },
+    { 1, 5, 4 }, { 2, 6, 3 }, { 3, 6, 7 }, { 0, 4, 2 }, { 2, 4, 6 }, { 1, 3, 5 }, { 3, 7, 5 } };
   std::vector<std::pair<std::string, Bytes>> seeds;
 
   ByteWriter raw = PositionalLight(0.5, 3.0, 0.25, 0.5);
@@ -211,16 +210,16 @@ std::vector<std::pair<std::string, Bytes>> Seeds()
   inside.U8(10);
   CubeCorners(inside);
   inside.U8(254).Special(penumbra::fuzz::TagNaN).Scalar(0).Scalar(0); // NaN point (index 8)
-  inside.U8(134).U8(1).U8(0).U8(0xff);                    // (1,1,1) + 1e-9 jitter (index 9)
+  inside.U8(134).U8(1).U8(0).U8(0xff); // (1,1,1) + 1e-9 jitter (index 9)
   inside.U16(16);
   for (const auto& t : cube)
   {
     inside.U8(t[0]).U8(t[1]).U8(t[2]);
   }
-  inside.U8(0).U8(1).U8(248);     // index 10: just past the end
-  inside.U8(0).U8(252).U8(1);     // 0xffffffff
-  inside.U8(8).U8(1).U8(2);       // NaN corner
-  inside.U8(9).U8(7).U8(6);       // welded onto corner 7: degenerate
+  inside.U8(0).U8(1).U8(248); // index 10: just past the end
+  inside.U8(0).U8(252).U8(1); // 0xffffffff
+  inside.U8(8).U8(1).U8(2);   // NaN corner
+  inside.U8(9).U8(7).U8(6);   // welded onto corner 7: degenerate
   Receivers(inside);
   seeds.emplace_back("raw-inside-malformed", inside.Bytes);
 
@@ -255,11 +254,11 @@ std::vector<std::pair<std::string, Bytes>> Seeds()
   bad.U8(0x20).U8(8); // float points
   CubeCorners(bad);
   bad.U8(5);
-  bad.U8(2 | (4 << 2)).U8(0).U8(2).U8(251).U8(1);        // quad naming point n
-  bad.U8(2 | (5 << 2)).U8(4).U8(5).U8(7).U8(250).U8(6);  // pentagon with id -1
-  bad.U8(3 | (4 << 2)).U8(0).U8(253).U8(1).U8(4).U8(5);  // strip with 2^32 + 1
-  bad.U8(2 | (3 << 2)).U8(253).U8(2).U8(1).U8(3);        // triangle with 2^32 + 2
-  bad.U8(2 | (3 << 2)).U8(1).U8(3).U8(5);                // one valid triangle
+  bad.U8(2 | (4 << 2)).U8(0).U8(2).U8(251).U8(1);       // quad naming point n
+  bad.U8(2 | (5 << 2)).U8(4).U8(5).U8(7).U8(250).U8(6); // pentagon with id -1
+  bad.U8(3 | (4 << 2)).U8(0).U8(253).U8(1).U8(4).U8(5); // strip with 2^32 + 1
+  bad.U8(2 | (3 << 2)).U8(253).U8(2).U8(1).U8(3);       // triangle with 2^32 + 2
+  bad.U8(2 | (3 << 2)).U8(1).U8(3).U8(5);               // one valid triangle
   Receivers(bad);
   seeds.emplace_back("regression-polydata-invalid-ids", bad.Bytes);
 

@@ -262,8 +262,9 @@ void CheckTopology(const CasterTopology& topo)
   {
     Require(IsFinite(p), "no NaN or Inf in topology points");
   }
-  Require(r.InputTriangles == topo.Triangles.size() + r.DegenerateTriangles +
-      r.NonFiniteTriangles + r.InvalidIndexTriangles,
+  Require(r.InputTriangles ==
+      topo.Triangles.size() + r.DegenerateTriangles + r.NonFiniteTriangles +
+        r.InvalidIndexTriangles,
     "every input triangle kept or counted as dropped");
   Require(topo.Points.size() + r.WeldedPoints + r.NonFinitePoints == r.InputPoints,
     "every input point kept, welded or counted as dropped");
@@ -272,8 +273,8 @@ void CheckTopology(const CasterTopology& topo)
     Require(t.x < topo.Points.size() && t.y < topo.Points.size() && t.z < topo.Points.size(),
       "topology triangles index existing points");
     Require(t.x != t.y && t.y != t.z && t.z != t.x, "topology triangles have three corners");
-    const glm::dvec3 n = glm::cross(topo.Points[t.y] - topo.Points[t.x],
-      topo.Points[t.z] - topo.Points[t.x]);
+    const glm::dvec3 n =
+      glm::cross(topo.Points[t.y] - topo.Points[t.x], topo.Points[t.z] - topo.Points[t.x]);
     Require(glm::dot(n, n) > 0.0, "topology triangles have an area");
     for (int k = 0; k < 3; ++k)
     {
@@ -319,8 +320,8 @@ void CheckIndices(
   }
 }
 
-void CheckVolume(const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec4& light,
-  bool withCaps)
+void CheckVolume(
+  const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec4& light, bool withCaps)
 {
   const std::size_t n = topo.Points.size();
   CheckIndices(volume.Sides, n, "side indices < 2N");
@@ -337,8 +338,8 @@ void CheckVolume(const CasterTopology& topo, const ShadowVolume& volume, const g
   Require(volume.CastingTriangles <= topo.Triangles.size(), "casting triangles counted once");
   if (withCaps)
   {
-    Require(volume.LightCap.size() == 3 * volume.CastingTriangles,
-      "light cap: the casting triangles");
+    Require(
+      volume.LightCap.size() == 3 * volume.CastingTriangles, "light cap: the casting triangles");
     Require(light.w != 0.0 || volume.DarkCap.empty(), "no dark cap for a directional light");
   }
   else
@@ -451,8 +452,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   light.w = positional ? 1.0 : 0.0;
   const double radius = DecodeScalar(in);
 
-  const CasterTopology topo =
-    (flags & 1) ? BuildPolyData(in, tolerance) : BuildRaw(in, tolerance);
+  const CasterTopology topo = (flags & 1) ? BuildPolyData(in, tolerance) : BuildRaw(in, tolerance);
   Require(topo.Points.size() <= MaxPoints, "point cap");
   CheckTopology(topo);
 
@@ -505,8 +505,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
       const Receiver& r = receivers[i];
       const glm::dvec3 onEdge = a + r.T * (b - a);
-      const glm::dvec3 away =
-        positional ? onEdge - glm::dvec3(local) : -glm::dvec3(local);
+      const glm::dvec3 away = positional ? onEdge - glm::dvec3(local) : -glm::dvec3(local);
       points[i] = r.Free ? r.Point : onEdge + r.Distance * away;
     }
     CheckWedgeAndOcclusion(a, b, local, radius, points);

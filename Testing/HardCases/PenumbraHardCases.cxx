@@ -32,10 +32,10 @@
 #include "../../Benchmarks/penumbraBenchSupport.h"
 #include "../../Benchmarks/penumbraMetrics.h"
 
+#include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageDifference.h"
-#include "vtkCamera.h"
 #include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -65,9 +65,9 @@ namespace
 using penumbra::bench::vtkCountingOutputWindow;
 
 constexpr double DefaultMAE[METHOD_COUNT] = { 0.05, 0.04, 0.04, 0.04 };
-constexpr double TemporalLimit = 0.005;  ///< share of pixels popping in the worst step
-constexpr double ReferenceLimit = 0.01;  ///< share of pixels off by > 0.1 from the reference
-constexpr double ImageThreshold = 10.0;  ///< vtkTesting's usual image-difference threshold
+constexpr double TemporalLimit = 0.005; ///< share of pixels popping in the worst step
+constexpr double ReferenceLimit = 0.01; ///< share of pixels off by > 0.1 from the reference
+constexpr double ImageThreshold = 10.0; ///< vtkTesting's usual image-difference threshold
 constexpr int TruthSamples = 256;
 
 struct Row
@@ -84,10 +84,10 @@ struct Row
 struct View
 {
   int Width = 0, Height = 0;
-  std::vector<float> Depth;                  ///< truth window depth
-  std::vector<float> ZBuffer;                ///< rasterized depth
+  std::vector<float> Depth;                   ///< truth window depth
+  std::vector<float> ZBuffer;                 ///< rasterized depth
   std::vector<std::vector<float>> Soft, Hard; ///< truth per shadowing light
-  std::vector<int> Lights;                   ///< light indices that shadow
+  std::vector<int> Lights;                    ///< light indices that shadow
   /// Per shadowing light: the surface faces the light's centre by more than 1 degree. Elsewhere
   /// VTK's shading gives the pixel no diffuse or specular light from it, so its visibility
   /// cannot change the image (and is undefined where the surface is edge-on to a point light).
@@ -97,7 +97,8 @@ struct View
 std::vector<float> Values(vtkImageData* image)
 {
   auto array = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  return std::vector<float>(array->GetPointer(0), array->GetPointer(0) + array->GetNumberOfValues());
+  return std::vector<float>(
+    array->GetPointer(0), array->GetPointer(0) + array->GetNumberOfValues());
 }
 
 /// Ray-traced truth of one renderer: `samples` per light, or the lights' centres when hard.
@@ -132,7 +133,8 @@ std::vector<std::vector<float>> Truth(
   }
   for (std::size_t i = 0; i < radii.size(); ++i)
   {
-    vtkSoftShadowPass::SetLightRadius(vtkLight::SafeDownCast(collection->GetItemAsObject(int(i))), radii[i]);
+    vtkSoftShadowPass::SetLightRadius(
+      vtkLight::SafeDownCast(collection->GetItemAsObject(int(i))), radii[i]);
   }
   return images;
 }
@@ -158,7 +160,8 @@ void ComputeFacing(vtkRenderer* renderer, View& view)
       world[p] = glm::dvec3(out[0], out[1], out[2]) / out[3];
     }
   }
-  const glm::dvec3 eye(camera->GetPosition()[0], camera->GetPosition()[1], camera->GetPosition()[2]);
+  const glm::dvec3 eye(
+    camera->GetPosition()[0], camera->GetPosition()[1], camera->GetPosition()[2]);
   const double minimumSine = std::sin(1.0 * 3.14159265358979 / 180.0);
   for (int index : view.Lights)
   {
@@ -180,7 +183,8 @@ void ComputeFacing(vtkRenderer* renderer, View& view)
         }
         // Every one-sided normal must face the light: on a crease next to a face that does not,
         // the pixel's own face cannot be told from the depth alone.
-        const glm::dvec3 toLight = light->GetPositional() ? glm::normalize(at - world[p]) : direction;
+        const glm::dvec3 toLight =
+          light->GetPositional() ? glm::normalize(at - world[p]) : direction;
         bool faces = true;
         for (const std::size_t dx : { p + 1, p - 1 })
         {
@@ -234,7 +238,8 @@ std::vector<View> TrueViews(CaseScene& scene)
 }
 
 /// The pass's visibility of every shadowing light of every renderer, and the rasterized depth.
-std::vector<std::vector<std::vector<float>>> PassVisibility(CaseScene& scene, std::vector<View>& views)
+std::vector<std::vector<std::vector<float>>> PassVisibility(
+  CaseScene& scene, std::vector<View>& views)
 {
   std::vector<std::vector<std::vector<float>>> result;
   for (std::size_t r = 0; r < scene.Renderers.size(); ++r)
@@ -343,8 +348,8 @@ double PoppingShare(const View& view, const std::vector<char>& mask,
         continue;
       }
       ++compared;
-      const double excess = std::abs(ours[l][p] - oursBefore[l][p]) -
-        std::abs(truth[l][p] - truthBefore[l][p]) - 0.05;
+      const double excess =
+        std::abs(ours[l][p] - oursBefore[l][p]) - std::abs(truth[l][p] - truthBefore[l][p]) - 0.05;
       popped += excess > 0.1;
     }
   }
@@ -375,7 +380,8 @@ double ReferenceShare(const std::vector<char>& mask, const std::vector<std::vect
 /// change).
 double LuminanceShare(const std::vector<unsigned char>& a, const unsigned char* b, int w, int h)
 {
-  auto lum = [](const unsigned char* rgb, std::size_t p) { return penumbra::metrics::Luminance8(rgb, p, 3); };
+  auto lum = [](const unsigned char* rgb, std::size_t p)
+  { return penumbra::metrics::Luminance8(rgb, p, 3); };
   std::size_t compared = 0, off = 0;
   for (int y = 1; y + 1 < h; ++y)
   {
@@ -403,7 +409,8 @@ double LuminanceShare(const std::vector<unsigned char>& a, const unsigned char* 
 }
 
 /// The frame through vtkRenderLargeImage at half the window size and magnification 2.
-double CompareWithTiles(CaseScene& scene, const std::vector<unsigned char>& direct, const std::string& path)
+double CompareWithTiles(
+  CaseScene& scene, const std::vector<unsigned char>& direct, const std::string& path)
 {
   const int w = scene.Window->GetSize()[0], h = scene.Window->GetSize()[1];
   scene.Window->SetSize(w / 2, h / 2);
@@ -454,7 +461,8 @@ bool FileExists(const std::string& path)
 }
 
 /// Compares the case's panel image with its baseline (or writes the baseline).
-void CheckImage(const Options& options, const std::string& name, vtkImageData* panel, CaseResult& result)
+void CheckImage(
+  const Options& options, const std::string& name, vtkImageData* panel, CaseResult& result)
 {
   if (options.Baselines.empty())
   {
@@ -553,7 +561,8 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
         Accumulate(row, judged, mask, visibility[r], m == HARD ? truthView.Hard : truthView.Soft);
         if (reference)
         {
-          row.Reference = std::max(row.Reference, ReferenceShare(mask, visibility[r], reference->Visibility[m][r]));
+          row.Reference = std::max(
+            row.Reference, ReferenceShare(mask, visibility[r], reference->Visibility[m][r]));
         }
         if (c.Temporal && frame > 0)
         {
@@ -619,8 +628,10 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
   const std::vector<char> firstMask = CompareMask(first);
   int origin[2], size[2];
   scene.Renderer()->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-  auto greyPanel = [&](vtkImageData* image, int column, const std::vector<std::vector<float>>& lights,
-                     const std::vector<std::vector<float>>* truth) {
+  auto greyPanel = [&](vtkImageData* image, int column,
+                     const std::vector<std::vector<float>>& lights,
+                     const std::vector<std::vector<float>>* truth)
+  {
     auto out = static_cast<unsigned char*>(image->GetScalarPointer());
     for (int y = 0; y < first.Height; ++y)
     {
@@ -649,8 +660,9 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
           rgb[0] = 255;
           rgb[1] = rgb[2] = 0;
         }
-        unsigned char* pixel =
-          out + 3 * ((static_cast<std::size_t>(y) + origin[1]) * Columns * w + column * w + x + origin[0]);
+        unsigned char* pixel = out +
+          3 *
+            ((static_cast<std::size_t>(y) + origin[1]) * Columns * w + column * w + x + origin[0]);
         for (int k = 0; k < 3; ++k)
         {
           pixel[k] = static_cast<unsigned char>(std::lround(rgb[k]));
@@ -773,7 +785,8 @@ int main(int argc, char* argv[])
     {
       std::fprintf(stderr,
         "usage: %s [--group N]... [--case NAME]... [--check] [--baselines DIR] "
-        "[--write-baselines] [--output DIR] [--report FILE.md] [--camera-offset D]\n", argv[0]);
+        "[--write-baselines] [--output DIR] [--report FILE.md] [--camera-offset D]\n",
+        argv[0]);
       return 2;
     }
   }
@@ -803,11 +816,13 @@ int main(int argc, char* argv[])
     const bool wanted = (options.Groups.empty() && options.Names.empty()) ||
       options.Groups.count(c.Group) || options.Names.count(c.Name);
     // A reference case runs whenever a case that needs it does.
-    const bool needed = std::any_of(AllCases().begin(), AllCases().end(), [&](const HardCase& o) {
-      return o.Reference == c.Name &&
-        ((options.Groups.empty() && options.Names.empty()) || options.Groups.count(o.Group) ||
-          options.Names.count(o.Name));
-    });
+    const bool needed = std::any_of(AllCases().begin(), AllCases().end(),
+      [&](const HardCase& o)
+      {
+        return o.Reference == c.Name &&
+          ((options.Groups.empty() && options.Names.empty()) || options.Groups.count(o.Group) ||
+            options.Names.count(o.Name));
+      });
     if (!wanted && !needed)
     {
       continue;
@@ -823,8 +838,8 @@ int main(int argc, char* argv[])
         c.Group, c.Name.c_str(), MethodName(m), row.Pixels, row.MAE(),
         row.Pixels ? 100.0 * row.Over01 / row.Pixels : 0.0, row.Leaks, row.NonFinite, row.Errors,
         row.Warnings, Format(100 * row.WorstStep, "%.2f%%").c_str(),
-        Format(100 * row.Reference, "%.2f%%").c_str(), ok ? "ok" : "FAIL", verdict.empty() ? "" : ": ",
-        verdict.c_str());
+        Format(100 * row.Reference, "%.2f%%").c_str(), ok ? "ok" : "FAIL",
+        verdict.empty() ? "" : ": ", verdict.c_str());
       if (report.is_open())
       {
         const std::string prefix = "known limitation: ";
@@ -841,8 +856,8 @@ int main(int argc, char* argv[])
         report << "| " << c.Group << " | " << c.Name << " | " << MethodName(m) << " | "
                << row.Pixels << " | " << Format(row.MAE(), "%.4f") << " | "
                << Format(row.Pixels ? 100.0 * row.Over01 / row.Pixels : 0.0, "%.2f%%") << " | "
-               << row.Leaks << " | " << row.NonFinite << " | " << row.Errors << " ("
-               << row.Warnings << ") | " << Format(100 * row.WorstStep, "%.2f%%") << " | "
+               << row.Leaks << " | " << row.NonFinite << " | " << row.Errors << " (" << row.Warnings
+               << ") | " << Format(100 * row.WorstStep, "%.2f%%") << " | "
                << Format(100 * row.Reference, "%.2f%%") << " | " << (ok ? "ok" : "**FAIL**")
                << (verdict.empty() ? "" : ": " + verdict) << " |\n";
       }

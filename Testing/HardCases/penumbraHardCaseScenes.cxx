@@ -206,7 +206,8 @@ vtkSmartPointer<vtkPolyData> HeightField(
 /// The scene of the far-coordinates cases, with every coordinate x mapped to scale * x + offset.
 void TransformedScene(CaseScene& scene, double scale, double offset)
 {
-  auto place = [&](vtkAlgorithm* source, double r, double g, double b) {
+  auto place = [&](vtkAlgorithm* source, double r, double g, double b)
+  {
     vtkNew<vtkTransform> transform;
     transform->Translate(offset, offset, offset);
     transform->Scale(scale, scale, scale);
@@ -308,7 +309,8 @@ vtkActor* MetaballIsosurface(CaseScene& scene)
   grid->SetSpacing(3.0 / (n - 1), 2.2 / (n - 1), 3.0 / (n - 1));
   vtkNew<vtkFloatArray> field;
   field->SetNumberOfValues(static_cast<vtkIdType>(n) * n * n);
-  const glm::dvec3 centres[4] = { { -0.5, 1.0, 0 }, { 0.5, 1.2, 0.2 }, { 0, 1.5, -0.5 }, { 0.1, 0.7, 0.6 } };
+  const glm::dvec3 centres[4] = { { -0.5, 1.0, 0 }, { 0.5, 1.2, 0.2 }, { 0, 1.5, -0.5 },
+    { 0.1, 0.7, 0.6 } };
   for (vtkIdType i = 0; i < field->GetNumberOfValues(); ++i)
   {
     double p[3];
@@ -316,7 +318,8 @@ vtkActor* MetaballIsosurface(CaseScene& scene)
     double value = 0;
     for (const glm::dvec3& c : centres)
     {
-      const double d2 = glm::dot(glm::dvec3(p[0], p[1], p[2]) - c, glm::dvec3(p[0], p[1], p[2]) - c);
+      const double d2 =
+        glm::dot(glm::dvec3(p[0], p[1], p[2]) - c, glm::dvec3(p[0], p[1], p[2]) - c);
       value += 0.2 / (d2 + 1e-3);
     }
     field->SetValue(i, static_cast<float>(value));
@@ -333,7 +336,8 @@ std::vector<HardCase> BuildCases()
 {
   std::vector<HardCase> cases;
   auto add = [&](const std::string& name, int group, const std::string& expected,
-               std::function<void(CaseScene&)> build) -> HardCase& {
+               std::function<void(CaseScene&)> build) -> HardCase&
+  {
     HardCase c;
     c.Name = name;
     c.Group = group;
@@ -346,28 +350,36 @@ std::vector<HardCase> BuildCases()
   const double inf = std::numeric_limits<double>::infinity();
 
   // 1. The eye in a shadow.
-  add("camera_in_shadow_volume", 1, "the eye under a roof, inside its volume: z-fail, the ground beyond lit",
-    [](CaseScene& s) {
+  add("camera_in_shadow_volume", 1,
+    "the eye under a roof, inside its volume: z-fail, the ground beyond lit",
+    [](CaseScene& s)
+    {
       RoofScene(s, 0.5);
       s.Camera(0, 1.0, 0, 4, 0.2, 4);
       s.Renderer()->GetActiveCamera()->SetClippingRange(0.05, 50);
     });
-  add("camera_in_penumbra_wedge", 1, "the eye inside the wedge of the roof's edge: penumbra unchanged",
-    [](CaseScene& s) {
+  add("camera_in_penumbra_wedge", 1,
+    "the eye inside the wedge of the roof's edge: penumbra unchanged",
+    [](CaseScene& s)
+    {
       RoofScene(s, 0.8);
       s.Camera(2.3, 1.5, 0, 3.5, 0, 3);
       s.Renderer()->GetActiveCamera()->SetClippingRange(0.05, 50);
     });
-  add("near_plane_cuts_volume_and_wedge", 1, "the near plane straddles the shadow boundary and its penumbra",
-    [](CaseScene& s) {
+  add("near_plane_cuts_volume_and_wedge", 1,
+    "the near plane straddles the shadow boundary and its penumbra",
+    [](CaseScene& s)
+    {
       RoofScene(s, 0.8);
       s.Camera(1.95, 0.8, 0, 1.95, 0.0, 3);
       s.Renderer()->GetActiveCamera()->SetClippingRange(0.3, 50);
     });
 
   // 2. Lights inside bounds and close to surfaces.
-  add("light_inside_caster_bounds", 2, "a light inside an open tube: lit disk inside, shadow outside",
-    [](CaseScene& s) {
+  add("light_inside_caster_bounds", 2,
+    "a light inside an open tube: lit disk inside, shadow outside",
+    [](CaseScene& s)
+    {
       s.Ground(6);
       vtkNew<vtkCylinderSource> tube;
       tube->SetCenter(0, 1.5, 0);
@@ -379,8 +391,10 @@ std::vector<HardCase> BuildCases()
       s.PointLight(0.2, 2.0, 0.1, 0.15);
       s.Camera(0, 7, 6, 0, 0.5, 0);
     });
-  add("light_close_to_surface", 2, "a light 0.05 above the ground: long grazing shadow, no acne around the light",
-    [](CaseScene& s) {
+  add("light_close_to_surface", 2,
+    "a light 0.05 above the ground: long grazing shadow, no acne around the light",
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Box(0.8, 0.15, 0, 0.3, 0.3, 0.3);
       s.Sphere(-0.6, 0.2, 0.5, 0.2);
@@ -390,7 +404,8 @@ std::vector<HardCase> BuildCases()
 
   // 3. Silhouette edges along light rays; faces edge-on to the light.
   add("edges_along_light_rays", 3, "a frustum whose side edges point 1 degree away from the light",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       // Lateral edges 1 degree off the rays from the light at (0, 6, 0): the side faces are
       // lit at grazing incidence.
@@ -404,7 +419,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.5, 0);
     });
   add("edges_parallel_directional", 3, "a directional light 2 degrees off a vertical box's edges",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Box(0, 1, 0, 0.6, 2, 0.6);
       const double tilt = 2.0 * 3.14159265358979 / 180.0;
@@ -412,7 +428,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(-1.2, 2.5, -2.2, 0, 0.3, 0);
     });
   add("light_in_face_plane", 3, "the light in the plane of a box's side face (edge-on)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Box(0, 0.6, 0, 0.6, 1.2, 0.6);
       s.PointLight(0.3, 4, 2, 0.3);
@@ -421,7 +438,8 @@ std::vector<HardCase> BuildCases()
 
   // 4. Vertices shared by many silhouette edges, acute corners.
   add("boxes_touching_at_corner", 4, "two welded boxes sharing one vertex",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       std::vector<glm::dvec3> p;
       std::vector<std::vector<vtkIdType>> q;
@@ -451,15 +469,18 @@ std::vector<HardCase> BuildCases()
       s.Camera(3, 4.5, 6, 0, 0.8, 0);
     });
   add("saddle", 4, "an open saddle surface: silhouette through a saddle point",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
-      auto saddle = HeightField(24, 1.2, [](double x, double z) { return 1.3 + 0.5 * (x * x - z * z); });
+      auto saddle =
+        HeightField(24, 1.2, [](double x, double z) { return 1.3 + 0.5 * (x * x - z * z); });
       s.AddData(saddle, 0.8, 0.6, 0.3);
       s.PointLight(-1, 6, 2, 0.4);
       s.Camera(3, 5, 5, 0, 0.8, 0);
     });
   add("bow_tie", 4, "two triangles touching at one vertex (non-manifold vertex)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       std::vector<glm::dvec3> p = { { 0, 1.2, 0 }, { -1, 1.1, -0.5 }, { -1, 1.3, 0.5 },
         { 1, 1.1, 0.5 }, { 1, 1.3, -0.5 } };
@@ -468,7 +489,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.5, 0);
     });
   add("acute_corner", 4, "a prism with a 10 degree corner",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       const double tan10 = std::tan(10.0 * 3.14159265358979 / 180.0);
       std::vector<glm::dvec3> p;
@@ -478,7 +500,8 @@ std::vector<HardCase> BuildCases()
         p.push_back({ 1.0, y, -1.1 * tan10 });
         p.push_back({ 1.0, y, 1.1 * tan10 });
       }
-      s.AddData(MakeMesh(p, { { 0, 2, 1 }, { 3, 4, 5 }, { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 2, 0, 3, 5 } }),
+      s.AddData(
+        MakeMesh(p, { { 0, 2, 1 }, { 3, 4, 5 }, { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 2, 0, 3, 5 } }),
         0.4, 0.8, 0.6);
       s.PointLight(-0.5, 6, 1.5, 0.4);
       s.Camera(1, 5, 4, 0.3, 0, 0);
@@ -486,7 +509,8 @@ std::vector<HardCase> BuildCases()
 
   // 5. Open, non-manifold and non-orientable casters.
   add("open_sheet_both_sides", 5, "a tilted open sheet seen from its unlit side",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkPlaneSource> sheet;
       sheet->SetOrigin(-1, 0.8, -1);
@@ -498,7 +522,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(4, 1.5, 3, 0, 0.8, 0);
     });
   add("clipped_isosurface", 5, "an isosurface clipped open by its extent (walls share outlines)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground(6);
       vtkNew<vtkRTAnalyticSource> wavelet;
       wavelet->SetWholeExtent(-8, 8, -8, 8, -8, 8);
@@ -513,7 +538,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(3, 4, 7, 0, 0.6, 0);
     });
   add("mesh_with_holes", 5, "a sphere with every seventh triangle removed: light through the holes",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkSphereSource> source;
       source->SetCenter(0, 1.2, 0);
@@ -543,23 +569,26 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.5, 0);
     });
   add("non_manifold_fins", 5, "three quads sharing one edge",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
-      std::vector<glm::dvec3> p = { { -1, 1.2, 0 }, { 1, 1.2, 0 }, { -1, 1.2, 0.8 }, { 1, 1.2, 0.8 },
-        { -1, 1.8, -0.4 }, { 1, 1.8, -0.4 }, { -1, 0.7, -0.5 }, { 1, 0.7, -0.5 } };
+      std::vector<glm::dvec3> p = { { -1, 1.2, 0 }, { 1, 1.2, 0 }, { -1, 1.2, 0.8 },
+        { 1, 1.2, 0.8 }, { -1, 1.8, -0.4 }, { 1, 1.8, -0.4 }, { -1, 0.7, -0.5 }, { 1, 0.7, -0.5 } };
       s.AddData(MakeMesh(p, { { 0, 1, 3, 2 }, { 0, 4, 5, 1 }, { 1, 7, 6, 0 } }), 0.7, 0.4, 0.8);
       s.PointLight(-0.5, 6, 2, 0.4);
       s.Camera(2.5, 4.5, 5, 0, 0.6, 0);
     });
   add("inconsistent_winding", 5, "a closed sphere with a third of its triangles flipped",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.AddData(InconsistentSphere(), 0.9, 0.5, 0.2);
       s.PointLight(-1, 6, 2, 0.4);
       s.Camera(2, 4, 5, 0, 0.6, 0);
     });
   add("mobius_strip", 5, "a Mobius strip (one-sided)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkParametricMobius> mobius;
       vtkActor* a = AddParametric(s, mobius, 48, 8, 0.3, 0.8, 0.4);
@@ -569,7 +598,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.6, 0);
     });
   add("klein_bottle", 5, "a self-intersecting Klein bottle",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkParametricKlein> klein;
       vtkActor* a = AddParametric(s, klein, 36, 36, 0.8, 0.7, 0.2);
@@ -579,7 +609,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.8, 0);
     });
   add("boy_surface", 5, "Boy's surface (non-orientable, closed, self-intersecting)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkParametricBoy> boy;
       vtkActor* a = AddParametric(s, boy, 40, 40, 0.6, 0.5, 0.9);
@@ -589,7 +620,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.8, 0);
     });
   add("split_normals", 5, "a faceted sphere whose points are duplicated along feature edges",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkSphereSource> sphere;
       sphere->SetCenter(0, 1.1, 0);
@@ -608,8 +640,10 @@ std::vector<HardCase> BuildCases()
 
   // 6. Degenerate input beside a good caster.
   HardCase& degenerate = add("degenerate_input", 6,
-    "warnings for empty, lines/verts-only, NaN/Inf, zero-area, duplicate, strips and polygons; the good shadows right",
-    [nan, inf](CaseScene& s) {
+    "warnings for empty, lines/verts-only, NaN/Inf, zero-area, duplicate, strips and polygons; the "
+    "good shadows right",
+    [nan, inf](CaseScene& s)
+    {
       s.Ground();
       s.Sphere(-1, 1, 0, 0.5);
       // One polydata with everything mixed: a box as strips and a pentagon, zero-area and
@@ -624,7 +658,8 @@ std::vector<HardCase> BuildCases()
         points->InsertNextPoint(q);
       }
       vtkNew<vtkCellArray> strips, polys, lines, verts;
-      const vtkIdType s1[] = { 4, 5, 6, 7 }, s2[] = { 1, 0, 3, 2 }, s3[] = { 0, 4, 2, 6, 3, 7, 1, 5, 0, 4 };
+      const vtkIdType s1[] = { 4, 5, 6, 7 }, s2[] = { 1, 0, 3, 2 },
+                      s3[] = { 0, 4, 2, 6, 3, 7, 1, 5, 0, 4 };
       strips->InsertNextCell(4, s1);
       strips->InsertNextCell(4, s2);
       strips->InsertNextCell(10, s3);
@@ -686,7 +721,8 @@ std::vector<HardCase> BuildCases()
 
   // 8. Actor matrices.
   add("non_uniform_scale", 8, "a sphere scaled (2, 0.5, 1) by its actor",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkActor* a = s.Sphere(0, 0, 0, 0.6);
       a->SetScale(2, 0.5, 1);
@@ -696,7 +732,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(2, 5, 5, 0, 0.5, 0);
     });
   add("negative_scale", 8, "mirrored actors (scale -1 on one axis, and on all three)",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkConeSource> cone;
       cone->SetResolution(16);
@@ -716,16 +753,17 @@ std::vector<HardCase> BuildCases()
 
   // 9. Light sizes and grazing incidence.
   add("light_larger_than_caster", 9, "a light of radius 1.5 over a sphere of radius 0.3: no umbra",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Sphere(0, 1.0, 0, 0.3);
       s.PointLight(0, 4, 0, 1.5);
       s.Camera(2, 4, 4, 0, 0.3, 0);
     });
-  add("tiny_light", 9, "radius 1e-4: the hard shadow",
-    [](CaseScene& s) { ClassicScene(s, 1e-4); });
+  add("tiny_light", 9, "radius 1e-4: the hard shadow", [](CaseScene& s) { ClassicScene(s, 1e-4); });
   add("grazing_directional", 9, "a directional light 4 degrees above the ground, 1 degree wide",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground(8);
       s.Box(-2, 0.3, 0, 0.4, 0.6, 0.4);
       s.Sphere(-1, 0.3, 1, 0.3);
@@ -734,8 +772,10 @@ std::vector<HardCase> BuildCases()
     });
 
   // 10. Contact and self-shadowing.
-  add("casters_touching_receiver", 10, "a box resting on the ground and a sphere touching it: no leak at the contact",
-    [](CaseScene& s) {
+  add("casters_touching_receiver", 10,
+    "a box resting on the ground and a sphere touching it: no leak at the contact",
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Box(0.6, 0.5, 0, 1.0, 1.0, 1.0);
       s.Sphere(-0.9, 0.6, 0.3, 0.6);
@@ -743,7 +783,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(3, 3, 5, 0, 0.3, 0);
     });
   add("torus_self_shadow", 10, "a tilted torus shadowing itself",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       vtkNew<vtkParametricTorus> torus;
       torus->SetRingRadius(0.8);
@@ -755,7 +796,8 @@ std::vector<HardCase> BuildCases()
       s.Camera(1.5, 4, 4, 0, 0.8, 0);
     });
   add("crumpled_sheet", 10, "an open sheet with random folds shadowing itself",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       std::mt19937 random(7);
       std::uniform_real_distribution<double> jitter(-0.25, 0.25);
@@ -764,21 +806,24 @@ std::vector<HardCase> BuildCases()
       {
         b = jitter(random);
       }
-      auto sheet = HeightField(32, 1.5, [&](double x, double z) {
-        double h = 1.2;
-        for (int k = 0; k < 8; ++k)
+      auto sheet = HeightField(32, 1.5,
+        [&](double x, double z)
         {
-          h += bumps[8 * k] * std::sin((1 + k) * x + bumps[8 * k + 1] * 10) *
-            std::cos((1 + k / 2) * z + bumps[8 * k + 2] * 10);
-        }
-        return h;
-      });
+          double h = 1.2;
+          for (int k = 0; k < 8; ++k)
+          {
+            h += bumps[8 * k] * std::sin((1 + k) * x + bumps[8 * k + 1] * 10) *
+              std::cos((1 + k / 2) * z + bumps[8 * k + 2] * 10);
+          }
+          return h;
+        });
       s.AddData(sheet, 0.7, 0.7, 0.9);
       s.PointLight(-2, 5, 1, 0.4);
       s.Camera(2, 5, 5, 0, 0.8, 0);
     });
   add("isosurface_folds", 10, "closed metaballs with creases and folds",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       MetaballIsosurface(s);
       s.PointLight(-2, 6, 1, 0.4);
@@ -787,7 +832,8 @@ std::vector<HardCase> BuildCases()
 
   // 11. Overlaps.
   add("overlapping_casters", 11, "three casters whose shadows overlap",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Sphere(-0.4, 1.6, 0, 0.45);
       s.Sphere(0.3, 1.0, 0.2, 0.4);
@@ -796,12 +842,14 @@ std::vector<HardCase> BuildCases()
       s.Camera(2.5, 4.5, 5, 0, 0.5, 0);
     });
   add("two_lights", 11, "two area lights over the same casters",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       ClassicScene(s, 0.4);
       s.PointLight(3, 5, 1, 0.3);
     });
   add("coloured_lights", 11, "red, green and blue lights: coloured shadows",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       ClassicScene(s, 0.3);
       s.PointLight(2, 5, -2, 0.3);
       s.PointLight(0, 6, 4, 0.3);
@@ -815,25 +863,28 @@ std::vector<HardCase> BuildCases()
     });
 
   // 12. Window situations.
-  HardCase& nonSquare = add("non_square_window", 12, "a wide window (240 x 100)",
-    [](CaseScene& s) { ClassicScene(s); });
+  HardCase& nonSquare = add(
+    "non_square_window", 12, "a wide window (240 x 100)", [](CaseScene& s) { ClassicScene(s); });
   nonSquare.Width = 240;
   nonSquare.Height = 100;
-  HardCase& resized = add("resized_window", 12, "resized between frames",
-    [](CaseScene& s) { ClassicScene(s); });
+  HardCase& resized =
+    add("resized_window", 12, "resized between frames", [](CaseScene& s) { ClassicScene(s); });
   resized.Frames = 2;
-  resized.Frame = [](CaseScene& s, int frame) {
+  resized.Frame = [](CaseScene& s, int frame)
+  {
     if (frame == 1)
     {
       s.Window->SetSize(260, 170);
     }
   };
   add("two_viewports", 12, "two viewports, their own cameras and lights",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Renderer()->SetViewport(0, 0, 0.5, 1);
       ClassicScene(s);
       vtkRenderer* right = s.AddRenderer(0.5, 0, 1, 1);
-      s.Add(s.Renderer()->GetActors()->GetLastActor()->GetMapper()->GetInputAlgorithm(), 0.3, 0.8, 0.5, right);
+      s.Add(s.Renderer()->GetActors()->GetLastActor()->GetMapper()->GetInputAlgorithm(), 0.3, 0.8,
+        0.5, right);
       vtkNew<vtkPlaneSource> plane;
       plane->SetOrigin(-3, 0, -3);
       plane->SetPoint1(3, 0, -3);
@@ -843,12 +894,14 @@ std::vector<HardCase> BuildCases()
       s.Camera(-2, 3, 4, 0.5, 0.4, 0, right);
     });
   add("onscreen_window", 12, "an on-screen window (Xvfb) instead of off-screen",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Window->SetOffScreenRendering(0);
       ClassicScene(s);
     });
   add("multisampling", 12, "an 8-sample multisampled window",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Window->SetMultiSamples(8);
       ClassicScene(s);
     });
@@ -858,8 +911,10 @@ std::vector<HardCase> BuildCases()
 
   // 13. Everything else VTK draws.
   add("translucent_volume_overlay", 13,
-    "a translucent sphere, a volume and a text overlay drawn as VTK draws them; a non-caster and a non-receiver",
-    [](CaseScene& s) {
+    "a translucent sphere, a volume and a text overlay drawn as VTK draws them; a non-caster and a "
+    "non-receiver",
+    [](CaseScene& s)
+    {
       ClassicScene(s);
       vtkActor* glass = s.Sphere(1.6, 1.2, -1.2, 0.5);
       glass->GetProperty()->SetOpacity(0.4);
@@ -877,7 +932,8 @@ std::vector<HardCase> BuildCases()
       for (int k = 0, i = 0; k < 16; ++k)
         for (int j = 0; j < 16; ++j)
           for (int l = 0; l < 16; ++l, ++i)
-            values[i] = static_cast<float>(std::sqrt((l - 7.5) * (l - 7.5) + (j - 7.5) * (j - 7.5) + (k - 7.5) * (k - 7.5)));
+            values[i] = static_cast<float>(
+              std::sqrt((l - 7.5) * (l - 7.5) + (j - 7.5) * (j - 7.5) + (k - 7.5) * (k - 7.5)));
       vtkNew<vtkSmartVolumeMapper> volumeMapper;
       volumeMapper->SetInputData(image);
       vtkNew<vtkPiecewiseFunction> opacity;
@@ -903,7 +959,8 @@ std::vector<HardCase> BuildCases()
   // 14. Temporal stability.
   HardCase& sweep = add("light_through_face_planes", 14,
     "a light stepping through the planes of two box faces: changes follow the truth's",
-    [](CaseScene& s) {
+    [](CaseScene& s)
+    {
       s.Ground();
       s.Box(0, 0.6, 0, 0.6, 1.2, 0.6);
       s.PointLight(0.3, 4, 0.3, 0.3);
@@ -911,27 +968,31 @@ std::vector<HardCase> BuildCases()
     });
   sweep.Frames = 9;
   sweep.Temporal = true;
-  sweep.Frame = [](CaseScene& s, int frame) {
+  sweep.Frame = [](CaseScene& s, int frame)
+  {
     const double x = 0.35 - 0.0125 * frame; // crosses x = z = 0.3 at frame 4
     vtkLight* light = vtkLight::SafeDownCast(s.Renderer()->GetLights()->GetItemAsObject(0));
     light->SetPosition(x, 4, x);
   };
-  HardCase& orbit = add("light_orbit_small_steps", 14, "a light orbiting in 1 degree steps over a torus and a box",
-    [](CaseScene& s) {
-      s.Ground();
-      vtkNew<vtkParametricTorus> torus;
-      torus->SetRingRadius(0.6);
-      torus->SetCrossSectionRadius(0.25);
-      vtkActor* a = AddParametric(s, torus, 32, 16, 0.8, 0.6, 0.3);
-      a->SetPosition(-0.6, 1.0, 0);
-      a->RotateX(70);
-      s.Box(1.0, 0.5, 0.3, 0.6, 1.0, 0.6);
-      s.PointLight(2, 5, 0, 0.4);
-      s.Camera(2, 5, 5, 0, 0.5, 0);
-    });
+  HardCase& orbit =
+    add("light_orbit_small_steps", 14, "a light orbiting in 1 degree steps over a torus and a box",
+      [](CaseScene& s)
+      {
+        s.Ground();
+        vtkNew<vtkParametricTorus> torus;
+        torus->SetRingRadius(0.6);
+        torus->SetCrossSectionRadius(0.25);
+        vtkActor* a = AddParametric(s, torus, 32, 16, 0.8, 0.6, 0.3);
+        a->SetPosition(-0.6, 1.0, 0);
+        a->RotateX(70);
+        s.Box(1.0, 0.5, 0.3, 0.6, 1.0, 0.6);
+        s.PointLight(2, 5, 0, 0.4);
+        s.Camera(2, 5, 5, 0, 0.5, 0);
+      });
   orbit.Frames = 6;
   orbit.Temporal = true;
-  orbit.Frame = [](CaseScene& s, int frame) {
+  orbit.Frame = [](CaseScene& s, int frame)
+  {
     const double angle = (30.0 + frame) * 3.14159265358979 / 180.0;
     vtkLight* light = vtkLight::SafeDownCast(s.Renderer()->GetLights()->GetItemAsObject(0));
     light->SetPosition(3 * std::cos(angle), 5, 3 * std::sin(angle));
@@ -948,7 +1009,8 @@ std::vector<HardCase> BuildCases()
   const std::string faces = "wedges use one silhouette, from the light's centre; while the light "
                             "is near the planes of the side faces, the penumbra around the base is "
                             "too wide (Documentation/wedges.md)";
-  auto known = [&](const std::string& name, const Allowance& allowance) {
+  auto known = [&](const std::string& name, const Allowance& allowance)
+  {
     for (HardCase& c : cases)
     {
       if (c.Name == name)
@@ -960,9 +1022,10 @@ std::vector<HardCase> BuildCases()
   known("saddle", { HARD, 1, -1, 0, speck });
   // Soft shadow volumes start from the centre's hard volume and inherit its speck.
   known("saddle", { AUTOMATIC, 1, -1, 0, speck });
-  known("klein_bottle", { AUTOMATIC, 1, -1, 0,
-    "one pixel where soft shadow volumes and averaging disagree by more than 0.5; not yet "
-    "explained (Documentation/wedges.md)" });
+  known("klein_bottle",
+    { AUTOMATIC, 1, -1, 0,
+      "one pixel where soft shadow volumes and averaging disagree by more than 0.5; not yet "
+      "explained (Documentation/wedges.md)" });
   known("crumpled_sheet", { HARD, 1, -1, 0, speck });
   known("crumpled_sheet", { WEDGES, 2, -1, 0, speck });
   known("clipped_isosurface", { WEDGES, 1, 0.07, 0, layered });

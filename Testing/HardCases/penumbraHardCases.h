@@ -24,9 +24,9 @@ namespace penumbra_hard
 /// The pass's methods, as the suite runs them (Automatic is one of these per light).
 enum MethodId
 {
-  HARD = 0,     ///< METHOD_HARD_VOLUMES, compared with the truth of the lights' centres
-  AVERAGED = 1, ///< METHOD_AVERAGED_HARD_SHADOWS with 16 samples
-  WEDGES = 2,   ///< METHOD_PENUMBRA_WEDGES
+  HARD = 0,      ///< METHOD_HARD_VOLUMES, compared with the truth of the lights' centres
+  AVERAGED = 1,  ///< METHOD_AVERAGED_HARD_SHADOWS with 16 samples
+  WEDGES = 2,    ///< METHOD_PENUMBRA_WEDGES
   AUTOMATIC = 3, ///< METHOD_AUTOMATIC, what a user gets by default
   METHOD_COUNT = 4
 };
@@ -57,11 +57,13 @@ struct CaseScene
   vtkRenderer* AddRenderer(double xmin, double ymin, double xmax, double ymax);
 
   /// A positional scene light with radius `radius` (0: point light), added to `renderer`.
-  vtkLight* PointLight(double x, double y, double z, double radius, vtkRenderer* renderer = nullptr);
+  vtkLight* PointLight(
+    double x, double y, double z, double radius, vtkRenderer* renderer = nullptr);
   /// A directional light from the direction (x, y, z), angular radius in degrees.
   vtkLight* DirectionalLight(double x, double y, double z, double degrees);
 
-  vtkActor* Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer = nullptr);
+  vtkActor* Add(
+    vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer = nullptr);
   vtkActor* AddData(vtkPolyData* data, double r, double g, double b);
   vtkActor* Ground(double half = 5.0, double height = 0.0);
   vtkActor* Sphere(double x, double y, double z, double radius, int resolution = 32);
