@@ -18,7 +18,8 @@ BUILD_DIR=${BUILD_DIR:-$ROOT/build}
 JOBS=${JOBS:-$(nproc)}
 
 PACKAGES=(build-essential cmake libvtk9-dev python3-vtk9 libglm-dev libembree-dev
-          xvfb xauth python3-numpy libpolyclipping-dev libcgal-dev libmpfr-dev python3-vedo)
+          xvfb xauth python3-numpy libpolyclipping-dev libcgal-dev libmpfr-dev python3-vedo
+          clang-format)
 # Only the benchmark needs these (its plot).
 BENCH_PACKAGES=(python3-matplotlib)
 # Only the libFuzzer run needs these (Clang and its fuzzer and sanitizer runtimes).
