@@ -2091,4 +2091,5 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
