@@ -2,6 +2,7 @@
 
 #include "vtkSoftShadowPassInternals.h"
 
+#include "penumbraReceiverShader.h"
 #include "penumbraSceneWalk.h"
 #include "penumbraStageTimes.h"
 
@@ -287,6 +288,8 @@ public:
   penumbra::ShadowCaches Caches;
   penumbra::SceneWalk SceneWalk;
   penumbra::StageTimes StageTimes;
+  /// Prop and problem of every shader edit warned about (once each).
+  std::set<std::string> WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
@@ -1957,49 +1960,65 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+namespace
 {
-  const auto& lights = this->Internals->Lights;
-  if (lights.empty())
-  {
-    return true;
-  }
-  std::ostringstream declarations;
-  declarations << penumbraReceiverDec << "uniform float penumbraAttenuation[" << lights.size()
-               << "];\n//VTK::Light::Dec";
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec", declarations.str(), false);
-
-  std::ostringstream factors;
+/// The shadowing lights as the receivers' shaders number them.
+template <typename ShadowLights>
+std::vector<penumbra::ReceiverLight> ReceiverLights(const ShadowLights& lights)
+{
+  std::vector<penumbra::ReceiverLight> receiverLights;
   for (const auto& light : lights)
   {
-    factors << "  float penumbraFactor" << light.ShaderIndex << " = penumbraLightFactor("
-            << light.Layer << ", penumbraAttenuation[" << light.Layer << "]);\n";
+    receiverLights.push_back({ light.ShaderIndex, light.Layer });
   }
-  factors << "//VTK::Light::Impl";
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl", factors.str(), false);
+  return receiverLights;
+}
+} // namespace
+
+bool vtkSoftShadowPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  const auto& lights = this->Internals->Lights;
+  if (!lights.empty() &&
+    !penumbra::InsertLightFactors(fragmentShader, penumbraReceiverDec, ReceiverLights(lights)))
+  {
+    this->WarnShaderEdit(mapper, prop,
+      "has no //VTK::Light::Dec and //VTK::Light::Impl tags (a vtkShaderProperty replacing "
+      "them?)");
+  }
   return true;
 }
 
 bool vtkSoftShadowPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,
-  // directional and positional); only diffuse and specular are scaled, ambient stays.
-  for (const auto& light : this->Internals->Lights)
+  const auto& lights = this->Internals->Lights;
+  if (lights.empty() || fragmentShader.find("penumbraLightFactor") == std::string::npos)
   {
-    const std::string i = std::to_string(light.ShaderIndex);
-    const std::string factor = "penumbraFactor" + i;
-    vtkShaderProgram::Substitute(fragmentShader, "diffuse += (df * lightColor" + i + ");",
-      "diffuse += (df * " + factor + " * lightColor" + i + ");", true);
-    vtkShaderProgram::Substitute(fragmentShader, "specular += (sf * lightColor" + i + ");",
-      "specular += (sf * " + factor + " * lightColor" + i + ");", true);
-    vtkShaderProgram::Substitute(fragmentShader, "radiance = lightColor" + i + ";",
-      "radiance = " + factor + " * lightColor" + i + ";", true);
-    vtkShaderProgram::Substitute(fragmentShader, "radiance = lightColor" + i + " * attenuation;",
-      "radiance = " + factor + " * lightColor" + i + " * attenuation;", true);
+    return true; // nothing inserted, already reported
+  }
+  const std::vector<int> missing =
+    penumbra::ScaleLightTerms(fragmentShader, ReceiverLights(lights));
+  if (!missing.empty())
+  {
+    this->WarnShaderEdit(mapper, prop,
+      "does not contain VTK 9.1's diffuse and specular statements for light " +
+        std::to_string(missing.front()) + " (another VTK version, or custom light code?)");
   }
   return true;
+}
+
+void vtkSoftShadowPass::WarnShaderEdit(
+  vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem)
+{
+  std::ostringstream what;
+  what << (prop ? prop->GetClassName() : "a prop") << " (" << prop << ", drawn by "
+       << (mapper ? mapper->GetClassName() : "a mapper") << ")";
+  if (this->Internals->WarnedShaderEdits.insert(what.str() + problem).second)
+  {
+    vtkWarningMacro(
+      "The fragment shader of " << what.str() << " " << problem << ": it is drawn unshadowed.");
+  }
 }
 
 bool vtkSoftShadowPass::SetShaderParameters(

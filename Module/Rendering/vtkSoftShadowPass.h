@@ -44,6 +44,7 @@
 #include "vtkPenumbraRenderingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkImageData;
 class vtkInformationDoubleKey;
@@ -321,6 +322,8 @@ private:
   void operator=(const vtkSoftShadowPass&) = delete;
 
   void RenderDelegate(const vtkRenderState* s);
+  /// Warns once per prop and problem that a receiver's shader could not be edited.
+  void WarnShaderEdit(vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem);
   void CollectShadowingLights(vtkRenderer* renderer);
   void UpdateShaderConfiguration();
   void AddReceiverKeys(const vtkRenderState* s);

@@ -30,6 +30,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShaderProperty.h"
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -379,6 +380,11 @@ void TestWarnings()
   View view;
   Ground(view.Renderer);
   view.Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16), 0.9, 0.3, 0.3));
+  // Its own light code in place of VTK's: it still casts, but cannot be shadowed.
+  auto selfLit = MakeActor(BoxSource(1.6, 0.3, -1.2, 0.5, 0.6, 0.5), 0.3, 0.6, 0.9);
+  selfLit->GetShaderProperty()->AddFragmentShaderReplacement(
+    "//VTK::Light::Impl", true, "  gl_FragData[0] = vec4(0.3, 0.6, 0.9, 1.0);\n", false);
+  view.Renderer->AddActor(selfLit);
 
   vtkNew<vtkPolyData> centres;
   vtkNew<vtkPoints> centrePoints;
@@ -437,7 +443,8 @@ void TestWarnings()
   Check(count("vtkOpenGLSphereMapper") == 1, "imposter spheres: one warning naming the mapper");
   Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
   Check(count("not finite") == 1, "glyphs with a NaN or infinite orientation: one warning");
-  Check(warnings.size() == 3, "no other warning");
+  Check(count("drawn unshadowed") == 1, "custom light code: one warning");
+  Check(warnings.size() == 4, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });

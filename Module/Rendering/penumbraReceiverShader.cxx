@@ -1,0 +1,77 @@
+#include "penumbraReceiverShader.h"
+
+#include <sstream>
+
+namespace penumbra
+{
+namespace
+{
+/// Replaces every occurrence of `what`; returns how many there were.
+int ReplaceAll(std::string& text, const std::string& what, const std::string& with)
+{
+  int count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos;
+       at = text.find(what, at + with.size()))
+  {
+    text.replace(at, what.size(), with);
+    ++count;
+  }
+  return count;
+}
+
+const char* const DeclarationsTag = "//VTK::Light::Dec";
+const char* const ImplementationTag = "//VTK::Light::Impl";
+} // namespace
+
+bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
+  const std::vector<ReceiverLight>& lights)
+{
+  if (fragmentShader.find(DeclarationsTag) == std::string::npos ||
+    fragmentShader.find(ImplementationTag) == std::string::npos)
+  {
+    return false;
+  }
+  std::ostringstream dec;
+  dec << declarations << "uniform float penumbraAttenuation[" << lights.size() << "];\n"
+      << DeclarationsTag;
+  ReplaceAll(fragmentShader, DeclarationsTag, dec.str());
+
+  std::ostringstream factors;
+  for (const ReceiverLight& light : lights)
+  {
+    factors << "  float penumbraFactor" << light.ShaderIndex << " = penumbraLightFactor("
+            << light.Layer << ", penumbraAttenuation[" << light.Layer << "]);\n";
+  }
+  factors << ImplementationTag;
+  ReplaceAll(fragmentShader, ImplementationTag, factors.str());
+  return true;
+}
+
+std::vector<int> ScaleLightTerms(
+  std::string& fragmentShader, const std::vector<ReceiverLight>& lights)
+{
+  std::vector<int> missing;
+  for (const ReceiverLight& light : lights)
+  {
+    // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,
+    // directional and positional); only diffuse and specular are scaled, ambient stays.
+    const std::string colour = "lightColor" + std::to_string(light.ShaderIndex);
+    const std::string factor = "penumbraFactor" + std::to_string(light.ShaderIndex) + " * ";
+    int edits = 0;
+    edits += ReplaceAll(fragmentShader, "diffuse += (df * " + colour + ");",
+      "diffuse += (df * " + factor + colour + ");");
+    edits += ReplaceAll(fragmentShader, "specular += (sf * " + colour + ");",
+      "specular += (sf * " + factor + colour + ");");
+    edits += ReplaceAll(
+      fragmentShader, "radiance = " + colour + ";", "radiance = " + factor + colour + ";");
+    edits += ReplaceAll(fragmentShader, "radiance = " + colour + " * attenuation;",
+      "radiance = " + factor + colour + " * attenuation;");
+    if (edits == 0 && fragmentShader.find("vec3 " + colour + ";") != std::string::npos)
+    {
+      missing.push_back(light.ShaderIndex);
+    }
+  }
+  return missing;
+}
+
+} // namespace penumbra
