@@ -2,6 +2,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -146,27 +148,39 @@ void BuildEdges(CasterTopology& topo)
     std::uint32_t A, B, Triangle;
     std::int32_t Sign;
   };
-  std::vector<HalfEdge> halfEdges;
-  halfEdges.reserve(topo.Triangles.size() * 3);
+  // Half-edges grouped by their smaller end with a counting sort (linear in the mesh), then
+  // each group (a vertex's few edges) sorted by the other end: a comparison sort of all of them
+  // cost most of a rebuild on time-varying data.
+  std::vector<std::uint32_t> groupStart(topo.Points.size() + 1, 0);
+  for (const glm::uvec3& tri : topo.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++groupStart[std::min(tri[k], tri[(k + 1) % 3]) + 1];
+    }
+  }
+  for (std::size_t v = 1; v < groupStart.size(); ++v)
+  {
+    groupStart[v] += groupStart[v - 1];
+  }
+  std::vector<HalfEdge> halfEdges(topo.Triangles.size() * 3);
+  std::vector<std::uint32_t> next(groupStart.begin(), groupStart.end() - 1);
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {
     const glm::uvec3& tri = topo.Triangles[t];
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
-      if (from < to)
-      {
-        halfEdges.push_back({ from, to, t, +1 });
-      }
-      else
-      {
-        halfEdges.push_back({ to, from, t, -1 });
-      }
+      const HalfEdge half = from < to ? HalfEdge{ from, to, t, +1 } : HalfEdge{ to, from, t, -1 };
+      halfEdges[next[half.A]++] = half;
     }
   }
-  std::sort(halfEdges.begin(), halfEdges.end(),
-    [](const HalfEdge& l, const HalfEdge& r)
-    { return l.A != r.A ? l.A < r.A : (l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle); });
+  for (std::size_t v = 0; v + 1 < groupStart.size(); ++v)
+  {
+    std::sort(halfEdges.begin() + groupStart[v], halfEdges.begin() + groupStart[v + 1],
+      [](const HalfEdge& l, const HalfEdge& r)
+      { return l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle; });
+  }
 
   topo.Uses.reserve(halfEdges.size());
   TopologyReport& report = topo.Report;
@@ -201,6 +215,167 @@ void BuildEdges(CasterTopology& topo)
   }
   topo.ClosedAndOriented = !topo.Edges.empty() && report.BoundaryEdges == 0 &&
     report.InconsistentEdges == 0 && report.NonManifoldEdges == 0;
+}
+
+/// Appends the triangles of `triangles` whose points `map` sends to three distinct finite
+/// points of topo.Points, counting the others in `report`.
+void AddTriangles(const std::vector<glm::uvec3>& triangles, const std::vector<std::uint32_t>& map,
+  CasterTopology& topo, TopologyReport& report)
+{
+  topo.Triangles.reserve(triangles.size());
+  for (const glm::uvec3& tri : triangles)
+  {
+    // Out-of-range indices (malformed input) are dropped and reported apart from NaN points.
+    if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size())
+    {
+      ++report.InvalidIndexTriangles;
+      continue;
+    }
+    if (map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
+    {
+      ++report.NonFiniteTriangles;
+      continue;
+    }
+    const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
+    const glm::dvec3 e1 = topo.Points[w.y] - topo.Points[w.x];
+    const glm::dvec3 e2 = topo.Points[w.z] - topo.Points[w.x];
+    const glm::dvec3 n = glm::cross(e1, e2);
+    // Zero-area triangles occlude nothing and have no facing; relative test keeps slivers.
+    // Written as !(area > ...) so that a NaN normal (inf - inf in the cross product of points
+    // near 1e300) counts as degenerate instead of passing every comparison.
+    const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
+    if (w.x == w.y || w.y == w.z || w.z == w.x || !(glm::dot(n, n) > 1e-28 * scale * scale))
+    {
+      ++report.DegenerateTriangles;
+      continue;
+    }
+    topo.Triangles.push_back(w);
+  }
+}
+
+/// The points in double, read straight from float or double storage.
+void ReadPoints(vtkPoints* pts, std::vector<glm::dvec3>& points)
+{
+  const std::size_t count = static_cast<std::size_t>(pts->GetNumberOfPoints());
+  points.resize(count);
+  vtkDataArray* data = pts->GetData();
+  if (auto floats = vtkFloatArray::FastDownCast(data))
+  {
+    const float* p = floats->GetPointer(0);
+    for (std::size_t i = 0; i < count; ++i, p += 3)
+    {
+      points[i] = glm::dvec3(p[0], p[1], p[2]);
+    }
+  }
+  else if (auto doubles = vtkDoubleArray::FastDownCast(data))
+  {
+    std::copy_n(reinterpret_cast<const glm::dvec3*>(doubles->GetPointer(0)), count, points.begin());
+  }
+  else
+  {
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      pts->GetPoint(static_cast<vtkIdType>(i), &points[i].x);
+    }
+  }
+}
+
+/// The triangles of a triangles-only cell array's connectivity; a triangle naming a point that
+/// does not exist is dropped (ids >= 2^32 would alias valid points once narrowed).
+template <typename ConnectivityArray>
+void ReadTriangles(ConnectivityArray* connectivity, vtkIdType pointCount,
+  std::vector<glm::uvec3>& triangles, TopologyReport& report)
+{
+  const auto* ids = connectivity->GetPointer(0);
+  const vtkIdType count = connectivity->GetNumberOfValues() / 3;
+  triangles.reserve(triangles.size() + static_cast<std::size_t>(count));
+  for (vtkIdType t = 0; t < count; ++t, ids += 3)
+  {
+    const vtkIdType a = ids[0], b = ids[1], c = ids[2];
+    if (a < 0 || b < 0 || c < 0 || a >= pointCount || b >= pointCount || c >= pointCount)
+    {
+      ++report.InvalidIndexTriangles;
+      continue;
+    }
+    triangles.emplace_back(a, b, c);
+  }
+}
+
+/// Keeps the points that `map` sends to themselves (finite, not welded into another), in
+/// order, and renumbers the triangles (already in mapped indices) to match.
+void KeepRepresentatives(CasterTopology& topo, const std::vector<std::uint32_t>& map)
+{
+  std::vector<std::uint32_t> renumber(topo.Points.size(), InvalidIndex);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < topo.Points.size(); ++i)
+  {
+    if (map[i] == i)
+    {
+      renumber[i] = static_cast<std::uint32_t>(kept);
+      topo.Points[kept++] = topo.Points[i];
+    }
+  }
+  topo.Points.resize(kept);
+  for (glm::uvec3& tri : topo.Triangles)
+  {
+    tri = glm::uvec3(renumber[tri.x], renumber[tri.y], renumber[tri.z]);
+  }
+}
+
+/// Welds the ends of topo's boundary edges closer than `tolerance`; when any merge, builds the
+/// triangles and edges again (counting the merged points in `report`).
+void WeldSeams(CasterTopology& topo, double tolerance, TopologyReport& report)
+{
+  std::vector<std::uint32_t> seamPoints;
+  std::vector<char> isSeam(topo.Points.size(), 0);
+  for (const Edge& edge : topo.Edges)
+  {
+    if (edge.Kind != EdgeKind::Boundary)
+    {
+      continue;
+    }
+    for (const std::uint32_t end : { edge.A, edge.B })
+    {
+      if (!isSeam[end])
+      {
+        isSeam[end] = 1;
+        seamPoints.push_back(end);
+      }
+    }
+  }
+  std::vector<glm::dvec3> seamPositions(seamPoints.size()), welded;
+  for (std::size_t i = 0; i < seamPoints.size(); ++i)
+  {
+    seamPositions[i] = topo.Points[seamPoints[i]];
+  }
+  const std::vector<std::uint32_t> seamMap = WeldPoints(seamPositions, tolerance, welded);
+  if (welded.size() == seamPoints.size())
+  {
+    return;
+  }
+  // Each seam point becomes the first seam point of its weld group.
+  std::vector<std::uint32_t> map(topo.Points.size());
+  for (std::size_t i = 0; i < map.size(); ++i)
+  {
+    map[i] = static_cast<std::uint32_t>(i);
+  }
+  std::vector<std::uint32_t> first(welded.size(), InvalidIndex);
+  for (std::size_t i = 0; i < seamPoints.size(); ++i)
+  {
+    std::uint32_t& group = first[seamMap[i]];
+    group = group == InvalidIndex ? seamPoints[i] : group;
+    map[seamPoints[i]] = group;
+  }
+  report.WeldedPoints += seamPoints.size() - welded.size();
+  const std::vector<glm::uvec3> triangles = std::move(topo.Triangles);
+  std::vector<glm::dvec3> points = std::move(topo.Points);
+  const glm::dvec3 origin = topo.Origin;
+  topo = CasterTopology();
+  topo.Origin = origin;
+  topo.Points = std::move(points);
+  AddTriangles(triangles, map, topo, report); // merged corners make some degenerate
+  KeepRepresentatives(topo, map);
+  BuildEdges(topo);
 }
 
 CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
@@ -244,39 +419,30 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   {
     relative[i] = points[i] - topo.Origin;
   }
-  const std::vector<std::uint32_t> map =
-    WeldPoints(relative, relativeWeldTolerance * diagonal, topo.Points);
-  report.WeldedPoints = points.size() - report.NonFinitePoints - topo.Points.size();
-
-  topo.Triangles.reserve(triangles.size());
-  for (const glm::uvec3& tri : triangles)
+  // Points are taken as they are indexed first. Only the ends of boundary edges can be seams
+  // (coincident points that split a surface): those alone are welded, and the triangles and
+  // edges built again if any merged. Data whose points are already shared (contour output, any
+  // closed mesh) pays for no welding at all; a triangle soup welds every point, as before.
+  std::vector<std::uint32_t> map(relative.size());
+  for (std::size_t i = 0; i < relative.size(); ++i)
   {
-    // Out-of-range indices (malformed input) are dropped and reported apart from NaN points.
-    if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size())
-    {
-      ++report.InvalidIndexTriangles;
-      continue;
-    }
-    if (map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
-    {
-      ++report.NonFiniteTriangles;
-      continue;
-    }
-    const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
-    const glm::dvec3 e1 = topo.Points[w.y] - topo.Points[w.x];
-    const glm::dvec3 e2 = topo.Points[w.z] - topo.Points[w.x];
-    const glm::dvec3 n = glm::cross(e1, e2);
-    // Zero-area triangles occlude nothing and have no facing; relative test keeps slivers.
-    // Written as !(area > ...) so that a NaN normal (inf - inf in the cross product of points
-    // near 1e300) counts as degenerate instead of passing every comparison.
-    const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
-    if (w.x == w.y || w.y == w.z || w.z == w.x || !(glm::dot(n, n) > 1e-28 * scale * scale))
-    {
-      ++report.DegenerateTriangles;
-      continue;
-    }
-    topo.Triangles.push_back(w);
+    map[i] = IsFinite(relative[i]) ? static_cast<std::uint32_t>(i) : InvalidIndex;
   }
+  topo.Points = std::move(relative);
+  AddTriangles(triangles, map, topo, report);
+  if (report.NonFinitePoints > 0)
+  {
+    KeepRepresentatives(topo, map); // no NaN or infinite point stays in the mesh
+  }
+  BuildEdges(topo);
+  const double tolerance = relativeWeldTolerance * diagonal;
+  if (topo.Report.BoundaryEdges > 0 && tolerance > 0.0)
+  {
+    WeldSeams(topo, tolerance, report);
+  }
+  report.BoundaryEdges = topo.Report.BoundaryEdges;
+  report.InconsistentEdges = topo.Report.InconsistentEdges;
+  report.NonManifoldEdges = topo.Report.NonManifoldEdges;
 
   if (!topo.Triangles.empty())
   {
@@ -293,7 +459,6 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
     topo.BoundsMax = rhi;
   }
   topo.Report = report;
-  BuildEdges(topo);
   return topo;
 }
 
@@ -342,11 +507,7 @@ CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTole
   if (input && input->GetPoints())
   {
     vtkPoints* pts = input->GetPoints();
-    points.resize(static_cast<std::size_t>(pts->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
-    {
-      pts->GetPoint(i, &points[static_cast<std::size_t>(i)].x);
-    }
+    ReadPoints(pts, points);
     report.SkippedVerts = static_cast<std::size_t>(input->GetNumberOfVerts());
     report.SkippedLines = static_cast<std::size_t>(input->GetNumberOfLines());
 
@@ -367,8 +528,22 @@ CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTole
       }
       return valid;
     };
+    vtkCellArray* cells = input->GetPolys();
+    if (cells->IsHomogeneous() == 3)
+    {
+      // Triangles only (contour and flying-edges output): the connectivity read directly.
+      if (cells->IsStorage64Bit())
+      {
+        ReadTriangles(cells->GetConnectivityArray64(), pointCount, triangles, report);
+      }
+      else
+      {
+        ReadTriangles(cells->GetConnectivityArray32(), pointCount, triangles, report);
+      }
+      cells = nullptr;
+    }
     auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+    for (polys->GoToFirstCell(); cells && !polys->IsDoneWithTraversal(); polys->GoToNextCell())
     {
       polys->GetCurrentCell(npts, ids);
       if (validIds(npts, ids))
