@@ -52,18 +52,21 @@ bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
 
   vtkSmartPointer<vtkPolyData> surface = SurfaceOf(data);
   this->Topology = CasterTopology::Build(surface);
+  // Data that changes every frame (a simulation played back) warns once, not every frame.
   const std::string problems = this->Topology.Report.Describe();
-  if (!problems.empty())
+  if (!problems.empty() && !this->WarnedProblems)
   {
-    vtkWarningWithObjectMacro(
-      owner, "Shadow caster " << data->GetClassName() << " (" << data << "): " << problems << ".");
+    vtkWarningWithObjectMacro(owner,
+      "Shadow caster " << data->GetClassName() << " (" << data << "): " << problems
+                       << (this->Generation > 1 ? " (not repeated for later versions)." : "."));
+    this->WarnedProblems = true;
   }
-  if (this->Topology.Empty())
+  if (this->Topology.Empty() && !this->WarnedEmpty)
   {
     vtkWarningWithObjectMacro(owner,
       "Shadow caster " << data->GetClassName() << " (" << data
-                       << ") has no surface triangles: it casts "
-                          "no shadow.");
+                       << ") has no surface triangles: it casts no shadow.");
+    this->WarnedEmpty = true;
   }
   return true;
 }

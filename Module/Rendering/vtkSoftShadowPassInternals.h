@@ -46,8 +46,11 @@ struct MeshCache
   vtkShaderProgram* VAOProgram = nullptr;
   bool Uploaded = false;
   bool Used = false;
+  bool WarnedProblems = false; ///< a mesh problem was reported once for this data object
+  bool WarnedEmpty = false;
 
-  /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`.
+  /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`,
+  /// once per data object and kind (problems, no triangles).
   bool Update(vtkDataObject* data, vtkObject* owner);
   /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
   /// binds the VAO for `program`.
