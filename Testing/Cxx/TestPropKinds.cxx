@@ -48,19 +48,13 @@ constexpr int Width = 400, Height = 250;
 struct View
 {
   vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkLight> Light;
+  vtkSmartPointer<vtkLight> Light = AddSceneLight(Renderer, -2.0, 6.0, 3.0);
   vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
   vtkNew<vtkSoftShadowPass> Pass;
 
   View()
   {
     this->Renderer->SetBackground(0.2, 0.2, 0.25);
-    this->Light->SetLightTypeToSceneLight();
-    this->Light->SetPositional(true);
-    this->Light->SetConeAngle(180);
-    this->Light->SetPosition(-2.0, 6.0, 3.0);
-    this->Light->SetFocalPoint(0, 0, 0);
-    this->Renderer->AddLight(this->Light);
     this->Window->SetSize(Width, Height);
     this->Window->SetMultiSamples(0);
     this->Window->AddRenderer(this->Renderer);

@@ -38,7 +38,7 @@ struct Image
 struct View
 {
   vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkLight> Light;
+  vtkSmartPointer<vtkLight> Light = AddSceneLight(Renderer, -2.0, 6.0, 3.0);
   vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
   vtkNew<vtkSoftShadowPass> Pass;
 
@@ -57,12 +57,6 @@ struct View
       vtkSoftShadowPass::SetCastsShadows(glass, false);
       this->Renderer->AddActor(glass);
     }
-    this->Light->SetLightTypeToSceneLight();
-    this->Light->SetPositional(true);
-    this->Light->SetConeAngle(180);
-    this->Light->SetPosition(-2.0, 6.0, 3.0);
-    this->Light->SetFocalPoint(0, 0, 0);
-    this->Renderer->AddLight(this->Light);
     this->Renderer->GetActiveCamera()->SetPosition(3.0, 4.0, 7.0);
     this->Renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.6, 0.0);
     this->Renderer->ResetCameraClippingRange();

@@ -10,6 +10,7 @@
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -60,6 +61,19 @@ inline vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, doubl
   actor->GetProperty()->SetAmbient(0.2);
   actor->GetProperty()->SetDiffuse(0.8);
   return actor;
+}
+
+/// A positional scene light at `position` shining all round (cone 180), added to `renderer`.
+inline vtkSmartPointer<vtkLight> AddSceneLight(vtkRenderer* renderer, double x, double y, double z)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetConeAngle(180);
+  light->SetPosition(x, y, z);
+  light->SetFocalPoint(0, 0, 0);
+  renderer->AddLight(light);
+  return light;
 }
 
 /// A square ground of half-width `half` in the plane y = height, 4 x 4 quads.
