@@ -34,6 +34,9 @@
 #include <array>
 #include <limits>
 
+#include <utility>
+#include <vector>
+
 using namespace penumbra_test;
 
 namespace
@@ -998,25 +1001,53 @@ void TestBadInput()
 
 } // namespace
 
-int main()
+/// The features, by name: ctest runs each as its own entry (SoftShadowPass.<name>), so that a
+/// failure names what broke; without an argument every one runs.
+const std::vector<std::pair<std::string, void (*)()>>& Features()
 {
-  TestClassic();
-  TestCameraInsideShadow();
-  TestVisibleCastersOnZFail();
-  TestAwkwardMeshes();
-  TestLightInsideClosedCaster();
-  TestAveragedHardShadows();
-  TestPenumbraWedges();
-  TestWedgesHardCases();
-  TestWedgeShapes();
-  TestWedgeCorners();
-  TestWedgesTemporalStability();
-  TestAutomaticOnLayeredOutlines();
-  TestPlateaus();
-  TestCachingAndHeadlights();
-  TestCompositing();
-  TestViewportsLightsAndResize();
-  TestDelegateChain();
-  TestBadInput();
+  static const std::vector<std::pair<std::string, void (*)()>> features = {
+    { "Classic", TestClassic },
+    { "CameraInsideShadow", TestCameraInsideShadow },
+    { "VisibleCastersOnZFail", TestVisibleCastersOnZFail },
+    { "AwkwardMeshes", TestAwkwardMeshes },
+    { "LightInsideClosedCaster", TestLightInsideClosedCaster },
+    { "AveragedHardShadows", TestAveragedHardShadows },
+    { "PenumbraWedges", TestPenumbraWedges },
+    { "WedgesHardCases", TestWedgesHardCases },
+    { "WedgeShapes", TestWedgeShapes },
+    { "WedgeCorners", TestWedgeCorners },
+    { "WedgesTemporalStability", TestWedgesTemporalStability },
+    { "AutomaticOnLayeredOutlines", TestAutomaticOnLayeredOutlines },
+    { "Plateaus", TestPlateaus },
+    { "CachingAndHeadlights", TestCachingAndHeadlights },
+    { "Compositing", TestCompositing },
+    { "ViewportsLightsAndResize", TestViewportsLightsAndResize },
+    { "DelegateChain", TestDelegateChain },
+    { "BadInput", TestBadInput },
+  };
+  return features;
+}
+
+int main(int argc, char* argv[])
+{
+  bool found = argc < 2;
+  for (const auto& feature : Features())
+  {
+    if (argc < 2 || feature.first == argv[1])
+    {
+      feature.second();
+      found = true;
+    }
+  }
+  if (!found)
+  {
+    std::fprintf(stderr, "unknown feature %s; the features are:", argv[1]);
+    for (const auto& feature : Features())
+    {
+      std::fprintf(stderr, " %s", feature.first.c_str());
+    }
+    std::fprintf(stderr, "\n");
+    return 2;
+  }
   return penumbra_test::Finish();
 }
