@@ -465,6 +465,9 @@ int main(int argc, char* argv[])
   }
 
   // --- c2. Where a frame's time goes: per-stage split, soft (as above) and hard. --------------
+  // The rows below are compared with the truth traced at this camera: put it back afterwards.
+  vtkNew<vtkCamera> tracedView;
+  tracedView->DeepCopy(camera);
   const std::string softSplit = StageSplit(shadows, window);
   const int countedLights = shadows->GetNumberOfCountedLights();
   const int averagedLights = shadows->GetNumberOfAveragedLights();
@@ -475,6 +478,8 @@ int main(int argc, char* argv[])
   const Timing hard = TimeFrames(window, camera, 3, options.Frames, 10.0);
   const std::string hardSplit = StageSplit(shadows, window);
   shadows->SetMethod(softMethod);
+  camera->DeepCopy(tracedView);
+  camera->Modified();
 
   // --- d. Report. ------------------------------------------------------------------------------
   std::printf("Penumbra demo: %dx%d, %lld triangles, %d shadowing light%s (radius %.2f)\n", width,
