@@ -2033,7 +2033,16 @@ bool vtkSoftShadowPass::SetShaderParameters(
     !prop->IsRenderingTranslucentPolygonalGeometry();
   program->SetUniformi("penumbraApply", apply ? 1 : 0);
   program->SetUniformi("penumbraLI", internals.LightIntensity->GetTextureUnit());
-  program->SetUniform2i("penumbraOrigin", internals.Origin);
+  // The LI buffer covers the viewport. A pass drawing into a framebuffer of its own (SSAO, depth
+  // peeling, tone mapping) puts the viewport at that framebuffer's origin, not the window's:
+  // take the origin of the viewport being drawn.
+  GLint viewport[4] = { internals.Origin[0], internals.Origin[1], 0, 0 };
+  if (internals.Window)
+  {
+    internals.Window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  }
+  const int origin[2] = { viewport[0], viewport[1] };
+  program->SetUniform2i("penumbraOrigin", origin);
   program->SetUniform2i("penumbraSize", internals.Size);
   std::vector<float> attenuation;
   for (const auto& light : internals.Lights)

@@ -231,9 +231,11 @@ int main()
   {
     TestSetting(setting, full);
   }
-  // A viewport away from the window's origin, with FXAA: the LI buffer is read at the
-  // viewport's pixels, not the window's.
+  // A viewport away from the window's origin: the LI buffer is read at the viewport's pixels,
+  // not the window's, also inside depth peeling's own framebuffers. (Not SSAO: VTK 9.1's own
+  // SSAO draws an offset viewport shifted and cropped, with or without this pass.)
   const double offset[4] = { 0.3, 0.2, 1.0, 1.0 };
   TestSetting({ "FXAA, offset viewport", settings[1].Apply }, offset);
+  TestSetting({ "depth peeling, offset viewport", settings[0].Apply }, offset);
   return penumbra_test::Finish();
 }
