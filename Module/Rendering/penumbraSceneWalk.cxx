@@ -15,6 +15,7 @@
 #include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
 #include "vtkGlyph3DMapper.h"
+#include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPolyData.h"
@@ -23,6 +24,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -94,11 +96,13 @@ void SceneWalk::Leaf(
   auto actor = vtkActor::SafeDownCast(leaf);
   if (!actor)
   {
-    if (vtkVolume::SafeDownCast(leaf))
+    auto volume = vtkVolume::SafeDownCast(leaf);
+    auto slice = vtkImageSlice::SafeDownCast(leaf);
+    if (volume && volume->GetMapper())
     {
       this->Warn(owner, leaf, "is drawn but casts no shadow: volumes do not cast");
     }
-    else if (vtkImageSlice::SafeDownCast(leaf))
+    else if (slice && slice->GetMapper())
     {
       this->Warn(owner, leaf, "is drawn but casts no shadow: image slices do not cast");
     }

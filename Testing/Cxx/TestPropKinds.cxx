@@ -22,6 +22,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
 #include "vtkLight.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
@@ -30,6 +33,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPropAssembly.h"
 #include "vtkShaderProperty.h"
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
@@ -346,11 +350,18 @@ void TestAssembly()
     assembly->SetPosition(0.3, -0.2, 0.1);
     assembly->RotateY(-20.0);
     assembly->SetScale(1.1);
+    // A vtkPropAssembly around the assembly and one more actor, at its own matrix.
+    auto extra = MakeActor(SphereSource(0.0, 0.0, 0.0, 0.35, 24, 12), 0.4, 0.8, 0.4);
+    extra->SetPosition(0.2, 1.7, -0.8);
     if (!flatten)
     {
-      r->AddActor(assembly);
+      vtkNew<vtkPropAssembly> props;
+      props->AddPart(assembly);
+      props->AddPart(extra);
+      r->AddViewProp(props);
       return;
     }
+    r->AddActor(extra);
     for (vtkActor* part : { ground.Get(), sphere.Get(), box.Get() })
     {
       vtkNew<vtkMatrix4x4> composed;
@@ -363,7 +374,7 @@ void TestAssembly()
     }
   };
   CompareScenes(
-    "assembly of ground, sphere and box", [&](vtkRenderer* r) { build(r, false); },
+    "prop assembly: an assembly and an actor", [&](vtkRenderer* r) { build(r, false); },
     [&](vtkRenderer* r) { build(r, true); });
 }
 
@@ -417,6 +428,17 @@ void TestWarnings()
   nanActor->SetPosition(0.0, 1.0, 0.0);
   view.Renderer->AddActor(nanActor);
 
+  vtkNew<vtkImageData> picture;
+  picture->SetDimensions(16, 16, 1);
+  picture->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(picture->GetScalarPointer()), 256, 200);
+  vtkNew<vtkImageActor> slice;
+  slice->GetMapper()->SetInputData(picture);
+  slice->SetPosition(-3.5, 0.01, -3.5);
+  slice->SetScale(0.05);
+  slice->RotateX(90.0);
+  view.Renderer->AddViewProp(slice);
+
   std::vector<std::string> warnings;
   vtkNew<vtkCallbackCommand> counter;
   counter->SetClientData(&warnings);
@@ -438,7 +460,8 @@ void TestWarnings()
   Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
   Check(count("not finite") == 1, "glyphs with a NaN or infinite orientation: one warning");
   Check(count("drawn unshadowed") == 1, "custom light code: one warning");
-  Check(warnings.size() == 4, "no other warning");
+  Check(count("image slices do not cast") == 1, "an image slice: one warning");
+  Check(warnings.size() == 5, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
