@@ -41,6 +41,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "penumbraCulling.h"
 #include "penumbraLightSamples.h"
 #include "penumbraPlateaus.h"
 #include "penumbraSampleCounting.h"
@@ -95,124 +96,6 @@ glm::dmat4 ToGlm(const vtkMatrix4x4* m)
     }
   }
   return result;
-}
-
-struct Plane
-{
-  glm::dvec3 Normal;
-  double Offset;
-  double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) - this->Offset; }
-};
-
-/**
- * Whether a caster's shadow volume may reach the near-plane rectangle (McGuire et al.): true when
- * the caster's bounds meet the convex hull of that rectangle and the light (for a directional
- * light, the rectangle swept towards it). Conservative: only separating planes of the hull are
- * tried, so "true" may be a false alarm, which costs z-fail but never correctness.
- */
-bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
-  const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners)
-{
-  const glm::dvec3 centre =
-    0.25 * (nearCorners[0] + nearCorners[1] + nearCorners[2] + nearCorners[3]);
-  const double size = glm::length(nearCorners[2] - nearCorners[0]);
-  const glm::dvec3 apex = light.w != 0.0 ? glm::dvec3(light) / light.w : glm::dvec3(0.0);
-  const glm::dvec3 towardsLight =
-    light.w != 0.0 ? apex - centre : glm::normalize(glm::dvec3(light)) * size;
-  const glm::dvec3 inside = centre + 0.5 * towardsLight;
-
-  std::array<Plane, 5> planes;
-  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane)
-  {
-    glm::dvec3 n = glm::cross(b - a, c - a);
-    const double length = glm::length(n);
-    if (!(length > 1e-12 * size * size))
-    {
-      return false; // light on the near plane, or swept parallel to it
-    }
-    n /= length;
-    plane = { n, glm::dot(n, a) };
-    if (plane.Distance(inside) < 0.0)
-    {
-      plane = { -n, -plane.Offset };
-    }
-    return plane.Distance(inside) > 1e-9 * size;
-  };
-  if (!makePlane(nearCorners[0], nearCorners[1], nearCorners[2], planes[0]))
-  {
-    return true;
-  }
-  for (int i = 0; i < 4; ++i)
-  {
-    const glm::dvec3& a = nearCorners[i];
-    const glm::dvec3& b = nearCorners[(i + 1) % 4];
-    const glm::dvec3 c = light.w != 0.0 ? apex : a + towardsLight;
-    if (!makePlane(a, b, c, planes[i + 1]))
-    {
-      return true;
-    }
-  }
-  const glm::dvec3 margin = 1e-6 * (boxMax - boxMin) + 1e-9 * size;
-  const glm::dvec3 lo = boxMin - margin, hi = boxMax + margin;
-  for (const Plane& plane : planes)
-  {
-    // The box corner furthest along the plane normal decides whether the box is all outside.
-    const glm::dvec3 furthest(plane.Normal.x > 0 ? hi.x : lo.x, plane.Normal.y > 0 ? hi.y : lo.y,
-      plane.Normal.z > 0 ? hi.z : lo.z);
-    if (plane.Distance(furthest) < 0.0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-/**
- * Whether a caster's shadow can reach the view: false when, for one frustum plane, the caster's
- * bounds lie outside it and every direction it is swept in (away from any point of the light)
- * leads further outside. Conservative: true may be a false alarm, never a missed shadow.
- */
-bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dvec4& light,
-  double radius, const glm::dmat4& worldToClip)
-{
-  const glm::dmat4 rows = glm::transpose(worldToClip);
-  const glm::dvec4 planes[6] = { rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1],
-    rows[3] - rows[1], rows[3] + rows[2], rows[3] - rows[2] };
-  for (const glm::dvec4& plane : planes)
-  {
-    const glm::dvec3 n(plane);
-    const double length = glm::length(n);
-    if (!(length > 0.0))
-    {
-      continue;
-    }
-    // Largest signed distance of the box inside this plane (inside: dot(n, x) + w >= 0).
-    const glm::dvec3 furthest(
-      n.x > 0 ? boxMax.x : boxMin.x, n.y > 0 ? boxMax.y : boxMin.y, n.z > 0 ? boxMax.z : boxMin.z);
-    const double boxReach = glm::dot(n, furthest);
-    if (boxReach + plane.w >= 0.0)
-    {
-      continue;
-    }
-    bool sweptOutside;
-    if (light.w != 0.0)
-    {
-      // Sweep directions b - q for b in the box, q in the light's sphere.
-      sweptOutside = boxReach <= glm::dot(n, glm::dvec3(light)) - radius * length;
-    }
-    else
-    {
-      // Sweep directions within the angular radius of the direction away from the light.
-      const glm::dvec3 away = -glm::normalize(glm::dvec3(light));
-      const double cosine = glm::dot(n, away) / length;
-      sweptOutside = cosine <= -std::sin(std::min(radius, 1.5707963267948966));
-    }
-    if (sweptOutside)
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
@@ -1049,7 +932,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     for (penumbra::CasterCache* caster : internals.Casters)
     {
       const double radius = light.World.w != 0.0 ? lightRadius : glm::radians(lightRadius);
-      if (!ShadowMayReachView(
+      if (!penumbra::ShadowMayReachView(
             caster->WorldMin, caster->WorldMax, light.World, radius, internals.WorldToClip))
       {
         caster->Culled.insert(light.Light);
@@ -1311,7 +1194,7 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     return 0;
   }
   const bool zFail =
-    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
+    penumbra::VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
   if (zFail)
   {
     volume.EnsureCaps(*caster.Mesh);
@@ -1394,7 +1277,7 @@ void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   // faces, which every ray meeting the wedge crosses once, skip points behind it.
   const glm::dvec3 grow(light.World.w != 0.0 ? light.SoftRadius : 0.0);
   const bool frontFaces = light.World.w != 0.0 && buffer.Fallbacks == 0 &&
-    !VolumeMayReachNearPlane(
+    !penumbra::VolumeMayReachNearPlane(
       caster.WorldMin - grow, caster.WorldMax + grow, light.World, this->NearCorners);
   ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
   ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);

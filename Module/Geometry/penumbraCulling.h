@@ -1,0 +1,41 @@
+/**
+ * @file penumbraCulling.h
+ * @brief What vtkSoftShadowPass decides per caster and light before drawing: whether its shadow
+ * volume may reach the near plane (z-fail needed) and whether its shadow may reach the view at
+ * all. Both are conservative: "true" may be a false alarm (some work for nothing), "false" is
+ * never wrong (TestCulling checks both by brute force).
+ */
+#ifndef penumbraCulling_h
+#define penumbraCulling_h
+
+#include "vtkPenumbraGeometryModule.h" // for export macro
+
+#include <glm/glm.hpp>
+
+#include <array>
+
+namespace penumbra
+{
+
+/**
+ * Whether a caster's shadow volume may reach the near-plane rectangle (McGuire et al.): true when
+ * the caster's bounds meet the convex hull of that rectangle and the light (for a directional
+ * light, the rectangle swept towards it). Only separating planes of the hull are tried, so "true"
+ * may be a false alarm, which costs z-fail but never correctness. The light is (position, 1) or
+ * (direction towards it, 0), world space like the box and the corners.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners);
+
+/**
+ * Whether a caster's shadow can reach the view: false when, for one frustum plane, the caster's
+ * bounds lie outside it and every direction it is swept in (away from any point of the light:
+ * a sphere of `radius` world units around a positional light, a cone of `radius` radians around
+ * a directional one) leads further outside.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool ShadowMayReachView(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dvec4& light, double radius, const glm::dmat4& worldToClip);
+
+} // namespace penumbra
+
+#endif

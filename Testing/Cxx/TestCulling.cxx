@@ -1,0 +1,196 @@
+// The pass's per-caster decisions (penumbraCulling) against brute force: whenever a decision
+// says "cannot" it must be true for every sampled point.
+// - VolumeMayReachNearPlane false: no point of the near rectangle (a 24 x 24 grid) lies in the
+//   box's shadow volume (the segment from the light, or the ray towards it, meets the box).
+// - ShadowMayReachView false: no point of the view frustum (500 random points) is shadowed by
+//   the box from any of 32 points of the light (its centre and points of its sphere or cone).
+// Random cameras, boxes and lights, positional and directional. The share of "may" answers that
+// brute force confirms is printed: the decisions cull something, not nothing.
+#include "penumbraCheck.h"
+#include "penumbraCulling.h"
+#include "penumbraLightSamples.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using penumbra_test::Check;
+
+namespace
+{
+/// Whether the segment a + t (b - a), t in [t0, t1], meets the box (slab test).
+bool SegmentHitsBox(const glm::dvec3& a, const glm::dvec3& b, double t0, double t1,
+  const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  const glm::dvec3 d = b - a;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (std::abs(d[k]) < 1e-300)
+    {
+      if (a[k] < lo[k] || a[k] > hi[k])
+      {
+        return false;
+      }
+      continue;
+    }
+    double u = (lo[k] - a[k]) / d[k], v = (hi[k] - a[k]) / d[k];
+    if (u > v)
+    {
+      std::swap(u, v);
+    }
+    t0 = std::max(t0, u);
+    t1 = std::min(t1, v);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Whether `p` lies in the box's shadow from the light point `q` ((position, 1) or (direction
+/// towards it, 0)).
+bool InShadow(const glm::dvec3& p, const glm::dvec4& q, const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  if (q.w != 0.0)
+  {
+    return SegmentHitsBox(glm::dvec3(q), p, 0.0, 1.0, lo, hi);
+  }
+  return SegmentHitsBox(p, p + glm::dvec3(q), 0.0, 1e9, lo, hi);
+}
+
+struct Case
+{
+  glm::dmat4 WorldToClip;
+  glm::dmat4 ClipToWorld;
+  std::array<glm::dvec3, 4> NearCorners;
+  glm::dvec3 Lo, Hi;
+  glm::dvec4 Light;
+  double Radius; ///< world units, or radians for a directional light
+};
+
+Case RandomCase(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Case c;
+  const glm::dvec3 eye(4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng));
+  const glm::dvec3 target(u(rng), u(rng), u(rng));
+  const double nearDistance = 0.05 + 0.5 * std::abs(u(rng));
+  const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0.0, 1.0, 0.0));
+  const glm::dmat4 projection =
+    glm::perspective(glm::radians(30.0 + 30.0 * std::abs(u(rng))), 1.5, nearDistance, 30.0);
+  c.WorldToClip = projection * view;
+  c.ClipToWorld = glm::inverse(c.WorldToClip);
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec4 ndc((i == 1 || i == 2) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, -1.0, 1.0);
+    const glm::dvec4 world = c.ClipToWorld * ndc;
+    c.NearCorners[i] = glm::dvec3(world) / world.w;
+  }
+  const glm::dvec3 centre(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+  const glm::dvec3 half(
+    0.1 + 0.6 * std::abs(u(rng)), 0.1 + 0.6 * std::abs(u(rng)), 0.1 + 0.6 * std::abs(u(rng)));
+  c.Lo = centre - half;
+  c.Hi = centre + half;
+  if (u(rng) > -0.4)
+  {
+    c.Light = glm::dvec4(5.0 * u(rng), 5.0 * u(rng), 5.0 * u(rng), 1.0);
+    c.Radius = 0.5 * std::abs(u(rng));
+  }
+  else
+  {
+    c.Light = glm::dvec4(glm::normalize(glm::dvec3(u(rng), u(rng), u(rng))), 0.0);
+    c.Radius = glm::radians(5.0 * std::abs(u(rng)));
+  }
+  return c;
+}
+
+/// Points of the light: its centre and others over its sphere (or cone of directions).
+std::vector<glm::dvec4> LightPoints(const Case& c, std::mt19937& rng)
+{
+  std::vector<glm::dvec4> points = { c.Light };
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (int i = 0; i < 31; ++i)
+  {
+    const glm::dvec3 r = glm::normalize(glm::dvec3(n(rng), n(rng), n(rng)));
+    if (c.Light.w != 0.0)
+    {
+      points.push_back(glm::dvec4(glm::dvec3(c.Light) + c.Radius * r, 1.0));
+    }
+    else
+    {
+      // A direction within the cone: tilted from the axis by at most the angular radius.
+      const glm::dvec3 axis(c.Light);
+      const glm::dvec3 side = glm::normalize(r - glm::dot(r, axis) * axis);
+      const double angle = c.Radius * std::abs(std::uniform_real_distribution<double>(0, 1)(rng));
+      points.push_back(glm::dvec4(std::cos(angle) * axis + std::sin(angle) * side, 0.0));
+    }
+  }
+  return points;
+}
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int nearNo = 0, nearNoWrong = 0, nearYes = 0, nearYesConfirmed = 0;
+  int viewNo = 0, viewNoWrong = 0;
+  for (int trial = 0; trial < 4000; ++trial)
+  {
+    const Case c = RandomCase(rng);
+
+    // z-pass safety: the centre's volume against the near rectangle.
+    bool reaches = false;
+    for (int i = 0; i <= 23 && !reaches; ++i)
+    {
+      for (int j = 0; j <= 23 && !reaches; ++j)
+      {
+        const double s = i / 23.0, t = j / 23.0;
+        const glm::dvec3 p = (1 - s) * (1 - t) * c.NearCorners[0] + s * (1 - t) * c.NearCorners[1] +
+          s * t * c.NearCorners[2] + (1 - s) * t * c.NearCorners[3];
+        reaches = InShadow(p, c.Light, c.Lo, c.Hi);
+      }
+    }
+    if (penumbra::VolumeMayReachNearPlane(c.Lo, c.Hi, c.Light, c.NearCorners))
+    {
+      ++nearYes;
+      nearYesConfirmed += reaches;
+    }
+    else
+    {
+      ++nearNo;
+      nearNoWrong += reaches;
+    }
+
+    // View reach: the whole light against points of the frustum.
+    if (!penumbra::ShadowMayReachView(c.Lo, c.Hi, c.Light, c.Radius, c.WorldToClip))
+    {
+      ++viewNo;
+      const std::vector<glm::dvec4> light = LightPoints(c, rng);
+      bool shadowed = false;
+      for (int k = 0; k < 500 && !shadowed; ++k)
+      {
+        const glm::dvec4 ndc(2 * unit(rng) - 1, 2 * unit(rng) - 1, 2 * unit(rng) - 1, 1.0);
+        const glm::dvec4 world = c.ClipToWorld * ndc;
+        const glm::dvec3 p = glm::dvec3(world) / world.w;
+        for (const glm::dvec4& q : light)
+        {
+          shadowed = shadowed || InShadow(p, q, c.Lo, c.Hi);
+        }
+      }
+      viewNoWrong += shadowed;
+    }
+  }
+  std::printf("     near plane: %d said cannot reach (%d wrong), %d said may (%d confirmed)\n",
+    nearNo, nearNoWrong, nearYes, nearYesConfirmed);
+  std::printf("     view: %d said cannot reach (%d wrong)\n", viewNo, viewNoWrong);
+  Check(nearNo > 100 && nearNoWrong == 0,
+    "z-pass is chosen only where no volume reaches the near plane");
+  Check(nearYesConfirmed > 0, "volumes that do reach the near plane are found");
+  Check(viewNo > 100 && viewNoWrong == 0, "a shadow is culled only where it cannot reach the view");
+  return penumbra_test::Finish();
+}
