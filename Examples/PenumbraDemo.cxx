@@ -18,9 +18,9 @@
 #include "vtkSoftShadowPass.h"
 
 // Shared with PenumbraBench (header-only): error metrics and VTK's shadow maps.
-#include "../Benchmarks/penumbraBenchSupport.h"
-#include "../Benchmarks/penumbraMetrics.h"
-#include "../Benchmarks/penumbraShadowMap.h"
+#include "penumbraBenchSupport.h"
+#include "penumbraMetrics.h"
+#include "penumbraShadowMap.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"

@@ -29,8 +29,8 @@
 // not compared for that light: VTK's shading gives them nothing from it, whatever the visibility.
 #include "penumbraHardCases.h"
 
-#include "../../Benchmarks/penumbraBenchSupport.h"
-#include "../../Benchmarks/penumbraMetrics.h"
+#include "penumbraBenchSupport.h"
+#include "penumbraMetrics.h"
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
