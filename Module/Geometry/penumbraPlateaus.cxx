@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace penumbra
@@ -125,6 +126,53 @@ bool ReceiverPlane::Make(const glm::dvec3& origin, const glm::dvec3& normal, Rec
   plane.Origin = origin;
   plane.Normal = normal / length;
   PlaneBasis(plane.Normal, plane.U, plane.V);
+  return true;
+}
+
+bool FitReceiverPlane(const std::vector<glm::dvec3>& points, PlaneFit& fit)
+{
+  std::vector<glm::dvec3> finite;
+  for (const glm::dvec3& p : points)
+  {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+    {
+      finite.push_back(p);
+    }
+  }
+  glm::dvec3 normal(0.0);
+  if (finite.size() >= 3)
+  {
+    const glm::dvec3 a = finite.front();
+    glm::dvec3 b = a;
+    for (const glm::dvec3& p : finite)
+    {
+      b = glm::distance(p, a) > glm::distance(b, a) ? p : b;
+    }
+    for (const glm::dvec3& p : finite)
+    {
+      const glm::dvec3 n = glm::cross(b - a, p - a);
+      normal = glm::dot(n, n) > glm::dot(normal, normal) ? n : normal;
+    }
+  }
+  glm::dvec3 centre(0.0);
+  for (const glm::dvec3& p : finite)
+  {
+    centre += p / static_cast<double>(finite.size());
+  }
+  if (!ReceiverPlane::Make(centre, normal, fit.Plane))
+  {
+    return false;
+  }
+  fit.Min = glm::dvec2(std::numeric_limits<double>::max());
+  fit.Max = -fit.Min;
+  fit.Thickness = 0.0;
+  for (const glm::dvec3& p : finite)
+  {
+    fit.Min = glm::min(fit.Min, fit.Plane.ToPlane(p));
+    fit.Max = glm::max(fit.Max, fit.Plane.ToPlane(p));
+    fit.Thickness = std::max(fit.Thickness, std::abs(fit.Plane.Height(p)));
+  }
+  fit.Extent = glm::length(fit.Max - fit.Min);
   return true;
 }
 

@@ -57,6 +57,23 @@ enum class PlateauFalloff
 };
 
 /// Light intensity (0 shadow, 1 lit) of plateau depth t in [0, 1].
+/// A receiver plane fitted to a flat actor's points (world space), and how far it reaches.
+struct PlaneFit
+{
+  ReceiverPlane Plane;
+  glm::dvec2 Min{ 0.0 }, Max{ 0.0 }; ///< the points' extent in the plane's coordinates
+  double Thickness = 0.0;            ///< largest distance of a point from the plane
+  double Extent = 0.0;               ///< diagonal of Min..Max
+};
+
+/**
+ * Fits the plane through three spread points (the first, the farthest from it, and the one
+ * farthest from their line), centred on the points' mean. Non-finite points are ignored.
+ * Returns false when the points span no plane (fewer than three, or all on a line).
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool FitReceiverPlane(
+  const std::vector<glm::dvec3>& points, PlaneFit& fit);
+
 VTKPENUMBRAGEOMETRY_EXPORT double PlateauIntensity(double t, PlateauFalloff falloff);
 
 /// A vertex of a plateau triangle: plane coordinates (U, V) and plateau depth T in [0, 1].

@@ -1554,36 +1554,10 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
     const glm::dmat4 toWorld = ToGlm(actor->GetMatrix());
     for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
     {
-      const glm::dvec3 p(toWorld * glm::dvec4(glm::make_vec3(points->GetPoint(i)), 1.0));
-      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
-      {
-        world.push_back(p);
-      }
+      world.emplace_back(toWorld * glm::dvec4(glm::make_vec3(points->GetPoint(i)), 1.0));
     }
-    // The plane through three spread points: the first, the farthest from it, and the one
-    // farthest from the line of those two.
-    glm::dvec3 normal(0.0);
-    if (world.size() >= 3)
-    {
-      const glm::dvec3 a = world.front();
-      glm::dvec3 b = a;
-      for (const glm::dvec3& p : world)
-      {
-        b = glm::distance(p, a) > glm::distance(b, a) ? p : b;
-      }
-      for (const glm::dvec3& p : world)
-      {
-        const glm::dvec3 n = glm::cross(b - a, p - a);
-        normal = glm::dot(n, n) > glm::dot(normal, normal) ? n : normal;
-      }
-    }
-    glm::dvec3 centre(0.0);
-    for (const glm::dvec3& p : world)
-    {
-      centre += p / static_cast<double>(world.size());
-    }
-    penumbra::ReceiverPlane plane;
-    if (!penumbra::ReceiverPlane::Make(centre, normal, plane))
+    penumbra::PlaneFit fit;
+    if (!penumbra::FitReceiverPlane(world, fit))
     {
       if (plateau.WarnedProps.insert(actor).second)
       {
@@ -1591,27 +1565,18 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
       }
       continue;
     }
-    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    double thickness = 0.0;
-    for (const glm::dvec3& p : world)
+    if (fit.Thickness > 1e-6 * fit.Extent && plateau.WarnedProps.insert(actor).second)
     {
-      lo = glm::min(lo, plane.ToPlane(p));
-      hi = glm::max(hi, plane.ToPlane(p));
-      thickness = std::max(thickness, std::abs(plane.Height(p)));
-    }
-    const double extent = glm::length(hi - lo);
-    if (thickness > 1e-6 * extent && plateau.WarnedProps.insert(actor).second)
-    {
-      vtkWarningMacro("Shadow plane " << actor << " is not flat (points up to " << thickness
+      vtkWarningMacro("Shadow plane " << actor << " is not flat (points up to " << fit.Thickness
                                       << " off its plane): plateaus use its best plane.");
     }
     plateau.HavePlane = plateau.Bounded = true;
-    plateau.Plane = plane;
+    plateau.Plane = fit.Plane;
     plateau.PlaneProp = plateau.FittedProp = actor;
     plateau.FittedAt = changed;
-    plateau.Min = lo;
-    plateau.Max = hi;
-    plateau.Tolerance = std::max(1e-5 * extent, 2.0 * thickness);
+    plateau.Min = fit.Min;
+    plateau.Max = fit.Max;
+    plateau.Tolerance = std::max(1e-5 * fit.Extent, 2.0 * fit.Thickness);
     return true;
   }
   return false;

@@ -5,6 +5,7 @@
 // near the horizon, and nothing non-finite on bad input.
 #include "penumbraCasterTopology.h"
 #include "penumbraCheck.h"
+#include "penumbraLightSamples.h"
 #include "penumbraPlateaus.h"
 #include "penumbraShadowVolume.h"
 
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <vector>
 
 using namespace penumbra;
 using penumbra_test::Check;
@@ -171,8 +173,41 @@ void TestBadInput()
 
 } // namespace
 
+/// The receiver-plane fit: a tilted grid, the same grid bent, collinear and too few points.
+void TestPlaneFit()
+{
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(0.2, 1.0, -0.3));
+  glm::dvec3 e1, e2;
+  penumbra::PlaneBasis(normal, e1, e2);
+  const glm::dvec3 origin(3.0, -1.0, 2.0);
+  std::vector<glm::dvec3> grid;
+  for (int i = 0; i <= 10; ++i)
+  {
+    for (int j = 0; j <= 10; ++j)
+    {
+      grid.push_back(origin + (i - 5.0) * 0.4 * e1 + (j - 5.0) * 0.3 * e2);
+    }
+  }
+  grid.push_back(glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
+  penumbra::PlaneFit fit;
+  Check(penumbra::FitReceiverPlane(grid, fit), "a tilted grid fits a plane");
+  Check(std::abs(std::abs(glm::dot(fit.Plane.Normal, normal)) - 1.0) < 1e-12 &&
+      std::abs(fit.Plane.Height(origin)) < 1e-12 && fit.Thickness < 1e-12,
+    "the grid's own plane, through its points, NaN ignored");
+  Check(std::abs(fit.Extent - std::sqrt(4.0 * 4.0 + 3.0 * 3.0)) < 1e-9,
+    "its extent is the grid's diagonal");
+  std::vector<glm::dvec3> bent = grid;
+  bent[60] += 0.25 * normal;
+  Check(penumbra::FitReceiverPlane(bent, fit) && fit.Thickness > 0.2,
+    "a bent grid fits, with its thickness reported");
+  Check(!penumbra::FitReceiverPlane({ origin, origin + e1, origin + 2.0 * e1 }, fit),
+    "collinear points fit no plane");
+  Check(!penumbra::FitReceiverPlane({ origin, origin + e1 }, fit), "two points fit no plane");
+}
+
 int main()
 {
+  TestPlaneFit();
   TestHardShadowAndWidth();
   TestLowLightIsElongated();
   TestBadInput();
