@@ -80,7 +80,7 @@ public:
   ///@}
 
   /// How shadows are computed for each shadowing light.
-  enum Method
+  enum Methods
   {
     /// Hard volumes for a light of radius 0. For an area light, soft shadow volumes or averaged
     /// hard shadows of the same LightSamples, which give the same image, whichever a cost model
