@@ -171,6 +171,14 @@ public:
   penumbra::ShadowCaches Caches;
   penumbra::SceneWalk SceneWalk;
   penumbra::StageTimes StageTimes;
+  /// The pass, for the warnings and errors the internals report.
+  vtkObject* Owner = nullptr;
+  /// Programs that did not build, reported once each.
+  std::set<std::string> FailedPrograms;
+  /// Readies one of the pass's shader programs. One that does not build is reported once, with
+  /// what the pass does instead (`instead`), and nullptr returned.
+  vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* window, const char* vertexShader,
+    const char* fragmentShader, const char* name, const char* instead);
   /// Prop and problem of every shader edit warned about (once each).
   std::set<std::string> WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
@@ -327,7 +335,7 @@ public:
   /// or back faces as the eye and near plane allow, in wedge coordinates. Adds its wedges and
   /// full-viewport ones to the counts.
   void DrawWedgeBuffer(vtkShaderProgram* program, const penumbra::CasterCache& caster,
-    penumbra::WedgeBuffer& buffer, const std::vector<penumbra::WedgeAttribute>& attributes,
+    penumbra::WedgeBuffer& buffer, const std::vector<penumbra::VertexAttribute>& attributes,
     const ShadowLight& light, const glm::dmat4& clipToWorld, vtkIdType& wedges,
     vtkIdType& fullViewport);
 
@@ -353,6 +361,7 @@ public:
 vtkSoftShadowPass::vtkSoftShadowPass()
   : Internals(new vtkInternals)
 {
+  this->Internals->Owner = this;
   vtkNew<vtkRendererSettingsPass> scene;
   this->SetDelegatePass(scene);
 }
@@ -1048,11 +1057,10 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = window->GetState();
 
-  vtkShaderProgram* volumeProgram = window->GetShaderCache()->ReadyShaderProgram(
-    penumbraShadowVolumeVS, penumbraShadowVolumeFS, "");
+  vtkShaderProgram* volumeProgram = internals.ReadyProgram(
+    window, penumbraShadowVolumeVS, penumbraShadowVolumeFS, "shadow-volume", "no shadow is drawn");
   if (!volumeProgram)
   {
-    vtkErrorMacro("Could not compile the shadow-volume shader.");
     return;
   }
 
@@ -1248,6 +1256,19 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 }
 } // namespace
 
+vtkShaderProgram* vtkSoftShadowPass::vtkInternals::ReadyProgram(vtkOpenGLRenderWindow* window,
+  const char* vertexShader, const char* fragmentShader, const char* name, const char* instead)
+{
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragmentShader, "");
+  if (!program && this->FailedPrograms.insert(name).second)
+  {
+    vtkErrorWithObjectMacro(
+      this->Owner, "Could not compile the " << name << " shader: " << instead << ".");
+  }
+  return program;
+}
+
 void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
 {
   ostate->PushFramebufferBindings();
@@ -1262,7 +1283,7 @@ void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
 
 void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
   const penumbra::CasterCache& caster, penumbra::WedgeBuffer& buffer,
-  const std::vector<penumbra::WedgeAttribute>& attributes, const ShadowLight& light,
+  const std::vector<penumbra::VertexAttribute>& attributes, const ShadowLight& light,
   const glm::dmat4& clipToWorld, vtkIdType& wedges, vtkIdType& fullViewport)
 {
   if (buffer.IndexCount() == 0)
@@ -1298,11 +1319,10 @@ void vtkSoftShadowPass::vtkInternals::DrawWedgeBuffer(vtkShaderProgram* program,
 void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   const ShadowLight& light, vtkIdType& wedges, vtkIdType& fullViewport)
 {
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraWedgeVS, penumbraWedgeFS, "");
+  vtkShaderProgram* program = this->ReadyProgram(
+    window, penumbraWedgeVS, penumbraWedgeFS, "penumbra wedge", "penumbra wedges are left out");
   if (!program)
   {
-    vtkGenericWarningMacro("Could not compile the penumbra wedge shader.");
     return;
   }
   vtkOpenGLState* ostate = window->GetState();
@@ -1333,8 +1353,8 @@ void vtkSoftShadowPass::vtkInternals::DrawWedges(vtkOpenGLRenderWindow* window,
   ostate->vtkglDisable(GL_CULL_FACE);
 
   // Cap by the part of the light above each visible point's own plane (GL_MIN).
-  vtkShaderProgram* horizon =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraHorizonFS, "");
+  vtkShaderProgram* horizon = this->ReadyProgram(window, penumbraResolveVS, penumbraHorizonFS,
+    "horizon cap", "the wedges' horizon cap is left out");
   if (horizon)
   {
     const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
@@ -1374,14 +1394,11 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
   const std::size_t sampleCount = light.CountingSamples.size();
   const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
   const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS, sampleCount);
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraCountingWedgeVS, wedgeFS.c_str(), "");
+  // From the next frame on such lights average the same samples.
+  vtkShaderProgram* program = this->ReadyProgram(window, penumbraCountingWedgeVS, wedgeFS.c_str(),
+    "soft shadow volume wedge", "soft shadows average hard shadows instead");
   if (!program)
   {
-    // Said once: from the next frame on such lights average the same samples.
-    vtkErrorWithObjectMacro(self,
-      "Could not compile the soft shadow volume wedge shader: "
-      "soft shadows average hard shadows instead.");
     this->CountingSupport = 0;
     return false;
   }
@@ -1442,13 +1459,10 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
 
   // Resolve into the light's layer at every geometry pixel (the far-plane triangle passes
   // GL_GREATER exactly there): counters where a wedge reached, the centre's count elsewhere.
-  vtkShaderProgram* resolve =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, resolveFS.c_str(), "");
+  vtkShaderProgram* resolve = this->ReadyProgram(window, penumbraResolveVS, resolveFS.c_str(),
+    "soft shadow volume resolve", "soft shadows average hard shadows instead");
   if (!resolve)
   {
-    vtkErrorWithObjectMacro(self,
-      "Could not compile the soft shadow volume resolve shader: "
-      "soft shadows average hard shadows instead.");
     this->CountingSupport = 0;
     return false;
   }
@@ -1476,11 +1490,10 @@ bool vtkSoftShadowPass::vtkInternals::DrawSampleCounting(vtkSoftShadowPass* self
 
 void vtkSoftShadowPass::DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity)
 {
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraResolveFS, "");
+  vtkShaderProgram* program = this->Internals->ReadyProgram(window, penumbraResolveVS,
+    penumbraResolveFS, "LI resolve", "shadows are not written into the LI buffer");
   if (!program)
   {
-    vtkErrorMacro("Could not compile the LI resolve shader.");
     return;
   }
   program->SetUniformf("lightIntensity", lightIntensity);
@@ -1498,16 +1511,8 @@ void vtkSoftShadowPass::vtkInternals::DrawFullScreen(vtkShaderProgram* program, 
       vao->Program = nullptr;
     }
   }
-  if (vao.Program != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    vao.VAO->ShaderProgramChanged();
-    vao.VAO->Bind();
-    vao.VAO->AddAttributeArray(
-      program, this->FullScreenTriangle, "ndCoordIn", 0, 2 * sizeof(float), VTK_FLOAT, 2, false);
-    vao.Program = program;
-  }
-  vao.VAO->Bind();
+  penumbra::BindVertexArray(
+    vao.VAO, program, vao.Program, this->FullScreenTriangle, { { "ndCoordIn", 0, 2 } });
   glDrawArrays(GL_TRIANGLES, 0, 3);
   vao.VAO->Release();
 }
@@ -1586,11 +1591,10 @@ bool vtkSoftShadowPass::vtkInternals::RenderPlateauTexture(vtkSoftShadowPass* se
   vtkOpenGLRenderWindow* window, const glm::dvec2& lo, const glm::dvec2& size)
 {
   PlateauState& plateau = this->Plateau;
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraPlateauVS, penumbraPlateauFS, "");
+  vtkShaderProgram* program = this->ReadyProgram(
+    window, penumbraPlateauVS, penumbraPlateauFS, "plateau", "plateaus are left out");
   if (!program)
   {
-    vtkErrorWithObjectMacro(self, "Could not compile the plateau shader.");
     return false;
   }
   const int resolution = self->GetPlateauResolution();
@@ -1615,16 +1619,9 @@ bool vtkSoftShadowPass::vtkInternals::RenderPlateauTexture(vtkSoftShadowPass* se
     static_cast<float>(-1.0 - 2.0 * lo.y / size.y) };
   program->SetUniform4f("planeToClip", planeToClip);
   plateau.Vertices->Upload(plateau.Triangles, vtkOpenGLBufferObject::ArrayBuffer);
-  if (plateau.VAOProgram != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    plateau.VAO->ShaderProgramChanged();
-    plateau.VAO->Bind();
-    plateau.VAO->AddAttributeArray(program, plateau.Vertices, "plateauVertex", 0,
-      sizeof(penumbra::PlateauVertex), VTK_FLOAT, 3, false);
-    plateau.VAOProgram = program;
-  }
-  plateau.VAO->Bind();
+  static_assert(sizeof(penumbra::PlateauVertex) == 3 * sizeof(float), "packed plateau vertices");
+  penumbra::BindVertexArray(
+    plateau.VAO, program, plateau.VAOProgram, plateau.Vertices, { { "plateauVertex", 0, 3 } });
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(plateau.Triangles.size()));
   plateau.VAO->Release();
   ostate->vtkglDepthMask(GL_FALSE);
@@ -1718,11 +1715,10 @@ vtkIdType vtkSoftShadowPass::vtkInternals::DrawPlateaus(
   }
 
   // Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
-  vtkShaderProgram* resolve =
-    window->GetShaderCache()->ReadyShaderProgram(penumbraResolveVS, penumbraPlateauResolveFS, "");
+  vtkShaderProgram* resolve = this->ReadyProgram(window, penumbraResolveVS,
+    penumbraPlateauResolveFS, "plateau resolve", "plateaus are left out");
   if (!resolve)
   {
-    vtkErrorWithObjectMacro(self, "Could not compile the plateau resolve shader.");
     return 0;
   }
   ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);

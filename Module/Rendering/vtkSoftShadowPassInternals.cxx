@@ -38,6 +38,27 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataObject* data)
 
 } // namespace
 
+void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
+  vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
+  const std::vector<VertexAttribute>& attributes)
+{
+  if (boundProgram != program)
+  {
+    // Releases the old VAO: must come before Bind.
+    vao->ShaderProgramChanged();
+    vao->Bind();
+    const VertexAttribute& last = attributes.back();
+    const std::size_t stride = (last.Offset + last.Components) * sizeof(float);
+    for (const VertexAttribute& attribute : attributes)
+    {
+      vao->AddAttributeArray(program, buffer, attribute.Name, attribute.Offset * sizeof(float),
+        stride, VTK_FLOAT, attribute.Components, false);
+    }
+    boundProgram = program;
+  }
+  vao->Bind();
+}
+
 bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
 {
   this->Used = true;
@@ -91,16 +112,7 @@ void MeshCache::Bind(vtkShaderProgram* program)
     this->Uploaded = true;
     this->VAOProgram = nullptr;
   }
-  if (this->VAOProgram != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    this->VAO->ShaderProgramChanged();
-    this->VAO->Bind();
-    this->VAO->AddAttributeArray(
-      program, this->Vertices, "vertexMC", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
-    this->VAOProgram = program;
-  }
-  this->VAO->Bind();
+  BindVertexArray(this->VAO, program, this->VAOProgram, this->Vertices, { { "vertexMC", 0, 4 } });
 }
 
 void MeshCache::ReleaseGraphicsResources()
@@ -246,7 +258,7 @@ void WedgeBuffer::AppendEdge(
   this->FullViewport += shape == WedgeShape::FullViewport;
 }
 
-void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<WedgeAttribute>& attributes)
+void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<VertexAttribute>& attributes)
 {
   if (!this->Uploaded)
   {
@@ -255,21 +267,7 @@ void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<WedgeAttribu
     this->Uploaded = true;
     this->VAOProgram = nullptr;
   }
-  if (this->VAOProgram != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    this->VAO->ShaderProgramChanged();
-    this->VAO->Bind();
-    const WedgeAttribute& last = attributes.back();
-    const size_t stride = (last.Offset + last.Components) * sizeof(float);
-    for (const WedgeAttribute& attribute : attributes)
-    {
-      this->VAO->AddAttributeArray(program, this->Buffer, attribute.Name,
-        attribute.Offset * sizeof(float), stride, VTK_FLOAT, attribute.Components, false);
-    }
-    this->VAOProgram = program;
-  }
-  this->VAO->Bind();
+  BindVertexArray(this->VAO, program, this->VAOProgram, this->Buffer, attributes);
   this->IndexBuffer->Bind();
 }
 
@@ -282,9 +280,9 @@ void WedgeBuffer::ReleaseGraphicsResources()
   this->Uploaded = false;
 }
 
-const std::vector<WedgeAttribute>& WedgeCache::Attributes()
+const std::vector<VertexAttribute>& WedgeCache::Attributes()
 {
-  static const std::vector<WedgeAttribute> attributes = { { "vertexMC", 0, 4 },
+  static const std::vector<VertexAttribute> attributes = { { "vertexMC", 0, 4 },
     { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 }, { "edgeWeight", 10, 1 } };
   return attributes;
 }
@@ -314,9 +312,9 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   return true;
 }
 
-const std::vector<WedgeAttribute>& CountingWedgeCache::Attributes()
+const std::vector<VertexAttribute>& CountingWedgeCache::Attributes()
 {
-  static const std::vector<WedgeAttribute> attributes = { { "vertexMC", 0, 4 },
+  static const std::vector<VertexAttribute> attributes = { { "vertexMC", 0, 4 },
     { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 }, { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 },
     { "faceSigns", 16, 2 }, { "centreNormal", 18, 3 } };
   return attributes;

@@ -82,13 +82,20 @@ struct VolumeCache
   std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }
 };
 
-/// A vertex attribute of a wedge buffer: its name in the shader, offset and size in floats.
-struct WedgeAttribute
+/// A vertex attribute in a buffer of floats: its name in the shader, offset and size in floats.
+struct VertexAttribute
 {
   const char* Name;
   int Offset;
   int Components;
 };
+
+/// Binds `vao` for `program`. When the program is not `boundProgram` (VTK's VAOs hold one
+/// program's attribute locations), the VAO is first released and pointed at `attributes` of
+/// `buffer`, floats packed up to the last attribute's end; `boundProgram` then remembers it.
+void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
+  vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
+  const std::vector<VertexAttribute>& attributes);
 
 /// Wedges of one caster for one light, as drawn: 8 outward triangles per edge over its 6
 /// vertices (a light pyramid's 6 over 5, or a full-viewport triangle), indexed, every vertex
@@ -117,7 +124,7 @@ struct WedgeBuffer
   glm::dvec4 LightInWedgeSpace() const;
   /// Uploads the vertices and indices if needed and binds the VAO and index buffer for
   /// `program`; DrawWedgeBuffer releases both.
-  void Bind(vtkShaderProgram* program, const std::vector<WedgeAttribute>& attributes);
+  void Bind(vtkShaderProgram* program, const std::vector<VertexAttribute>& attributes);
   void ReleaseGraphicsResources();
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius);
@@ -140,7 +147,7 @@ struct WedgeCache : WedgeBuffer
   std::size_t VolumeGeneration = ~std::size_t(0);
   /// position (4), edge from (3), edge to (3), weight (1)
   static constexpr int FloatsPerVertex = 11;
-  static const std::vector<WedgeAttribute>& Attributes();
+  static const std::vector<VertexAttribute>& Attributes();
 
   /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
   bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
@@ -162,7 +169,7 @@ struct CountingWedgeCache : WedgeBuffer
   /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2), the
   /// normal of the plane through the edge and the light's centre (3)
   static constexpr int FloatsPerVertex = 21;
-  static const std::vector<WedgeAttribute>& Attributes();
+  static const std::vector<VertexAttribute>& Attributes();
   /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
   /// radius or the counting rule changed; returns true when it did. The wedges themselves wait
   /// for BuildVertices, so that a light that ends up averaging never builds them.
