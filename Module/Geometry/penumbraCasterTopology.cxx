@@ -183,6 +183,7 @@ void BuildEdges(CasterTopology& topo)
   }
 
   topo.Uses.reserve(halfEdges.size());
+  topo.Edges.reserve(halfEdges.size() / 2 + 1); // about two uses an edge
   TopologyReport& report = topo.Report;
   for (std::size_t i = 0; i < halfEdges.size();)
   {
