@@ -63,8 +63,10 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkStreamTracer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkTubeFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -141,7 +143,8 @@ void Usage(const char* program)
     "                        the error is measured on included)\n"
     "  --max-seconds S       stop a method's timing once its timed frames pass S seconds\n"
     "                        (default 10; at least 1 frame; the frames column says how many)\n"
-    "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all)\n"
+    "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all of these)\n"
+    "                        and streamtubes (open stream tubes; not in the default)\n"
     "  --methods a,b,...     among none,shadowmap_1024,shadowmap_4096,hard_volumes,\n"
     "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges,\n"
     "                        plateaus, planar_filter_16, planar_filter_64 (default all of\n"
@@ -447,6 +450,49 @@ Scene MakeLarge()
   return scene;
 }
 
+/// Stream tubes through a swirling field over the plane: long, thin, open (uncapped) tubes, the
+/// everyday flow-visualization caster; every triangle of an open mesh casts.
+Scene MakeStreamTubes()
+{
+  Scene scene;
+  scene.Name = "streamtubes";
+  AddGround(scene);
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(33, 33, 13);
+  field->SetOrigin(-4.0, -4.0, 0.4);
+  field->SetSpacing(0.25, 0.25, 0.25);
+  vtkNew<vtkDoubleArray> velocity;
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < field->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    field->GetPoint(i, p);
+    velocity->InsertNextTuple3(-p[1] + 0.2 * p[0], p[0] + 0.2 * p[1], 0.4 * std::sin(p[0] + p[1]));
+  }
+  field->GetPointData()->SetVectors(velocity);
+  vtkNew<vtkPoints> seedPoints;
+  for (int i = 0; i < 24; ++i)
+  {
+    seedPoints->InsertNextPoint(0.4 + 3.2 * i / 23.0, 0.0, 1.0 + 1.6 * (i % 6) / 5.0);
+  }
+  vtkNew<vtkPolyData> seeds;
+  seeds->SetPoints(seedPoints);
+  vtkNew<vtkStreamTracer> tracer;
+  tracer->SetInputData(field);
+  tracer->SetSourceData(seeds);
+  tracer->SetIntegrationDirectionToBoth();
+  tracer->SetMaximumPropagation(30.0);
+  tracer->SetInitialIntegrationStep(0.2);
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputConnection(tracer->GetOutputPort());
+  tubes->SetRadius(0.06);
+  tubes->SetNumberOfSides(10);
+  tubes->CappingOff();
+  AddActor(scene, MakeActor(tubes, 0.35, 0.70, 0.55));
+  return scene;
+}
+
 bool MakeScene(const std::string& name, Scene& scene)
 {
   if (name == "classic")
@@ -457,6 +503,8 @@ bool MakeScene(const std::string& name, Scene& scene)
     scene = MakeGlyphs();
   else if (name == "large")
     scene = MakeLarge();
+  else if (name == "streamtubes")
+    scene = MakeStreamTubes();
   else
     return false;
   return true;
@@ -958,7 +1006,8 @@ int main(int argc, char* argv[])
   }
   for (const std::string& name : options.Scenes)
   {
-    if (name != "classic" && name != "isosurface" && name != "glyphs" && name != "large")
+    if (name != "classic" && name != "isosurface" && name != "glyphs" && name != "large" &&
+      name != "streamtubes")
     {
       std::fprintf(stderr, "%s: unknown scene %s\n", argv[0], name.c_str());
       return 2;
