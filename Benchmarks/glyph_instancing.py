@@ -16,8 +16,8 @@ from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkGlyph3D
 from vtkmodules.vtkFiltersSources import vtkConeSource, vtkPlaneSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkLight, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow)
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow)
 
 import penumbra
 
@@ -66,12 +66,7 @@ def scene(window, instanced, points, cone):
     actor = vtkActor()
     actor.SetMapper(mapper)
     renderer.AddActor(actor)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetConeAngle(180)
-    light.SetPosition(-2, 6, 3)
-    renderer.AddLight(light)
+    light = penumbra.add_light(renderer, (-2, 6, 3))
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToHardVolumes()
     renderer.SetPass(shadows)

@@ -16,8 +16,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
 import penumbra
 
@@ -51,12 +50,7 @@ def main():
     renderer = vtkRenderer()
     renderer.AddActor(actor)
     renderer.AddActor(gactor)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetConeAngle(180)
-    light.SetPosition(-e, 5 * e, e)
-    renderer.AddLight(light)
+    penumbra.add_light(renderer, (-e, 5 * e, e))
     window = vtkRenderWindow()
     window.SetSize(1024, 768)
     window.SetOffScreenRendering(1)

@@ -13,4 +13,4 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL fac
 from .vtkPenumbraRendering import *  # noqa: F401,F403
 from .vtkPenumbraRayTracing import *  # noqa: F401,F403
 from .vtkPenumbraFilters import *  # noqa: F401,F403
-from .shadows import disable_shadows, enable_shadows  # noqa: F401
+from .shadows import add_light, disable_shadows, enable_shadows  # noqa: F401

@@ -12,6 +12,8 @@ The plain VTK way, which this wraps:
 """
 import warnings
 
+from vtkmodules.vtkRenderingCore import vtkLight
+
 from .vtkPenumbraRendering import vtkSoftShadowPass
 
 METHODS = {
@@ -65,6 +67,20 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
                       "and camera lights do not, nor lights that are off); add a scene light",
                       stacklevel=2)
     return shadows
+
+
+def add_light(renderer, position, radius=0.0, focal_point=(0.0, 0.0, 0.0)):
+    """Adds a positional scene light shining all round (what casts shadows: headlights and camera
+    lights do not) of `radius` world units at `position`, and returns it."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetConeAngle(180)
+    light.SetPosition(*position)
+    light.SetFocalPoint(*focal_point)
+    vtkSoftShadowPass.SetLightRadius(light, radius)
+    renderer.AddLight(light)
+    return light
 
 
 def disable_shadows(renderer):

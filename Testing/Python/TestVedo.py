@@ -86,5 +86,9 @@ except ValueError:
     check(True, "an unknown method is refused")
 penumbra.disable_shadows(renderer)
 check(renderer.GetPass() is None, "disable_shadows takes the pass off")
+light = penumbra.add_light(renderer, (1, 4, 2), radius=0.3)
+check(light.GetPositional() and penumbra.vtkSoftShadowPass.GetLightRadius(light) == 0.3 and
+      penumbra.vtkSoftShadowPass.LightCastsShadows(light), "add_light: a positional scene light that casts")
+renderer.RemoveLight(light)
 plotter.close()
 sys.exit(1 if failures else 0)
