@@ -50,6 +50,7 @@
 #include "penumbraCountingResolveFS.h"
 #include "penumbraCountingWedgeFS.h"
 #include "penumbraCountingWedgeVS.h"
+#include "penumbraDepthPointDec.h"
 #include "penumbraHorizonFS.h"
 #include "penumbraPlateauFS.h"
 #include "penumbraPlateauResolveFS.h"
@@ -1259,8 +1260,11 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 vtkShaderProgram* vtkSoftShadowPass::vtkInternals::ReadyProgram(vtkOpenGLRenderWindow* window,
   const char* vertexShader, const char* fragmentShader, const char* name, const char* instead)
 {
+  // The pass's fragment shaders share one reconstruction of a pixel's point from depth.
+  std::string fragment = fragmentShader;
+  vtkShaderProgram::Substitute(fragment, "//PENUMBRA::DepthPoint::Dec", penumbraDepthPointDec);
   vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragmentShader, "");
+    window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragment.c_str(), "");
   if (!program && this->FailedPrograms.insert(name).second)
   {
     vtkErrorWithObjectMacro(

@@ -12,9 +12,7 @@
 // The depth test must run before this shader: a fragment it rejects must not count.
 layout(early_fragment_tests) in;
 
-uniform sampler2D depthTexture;
-uniform mat4 clipToWedge;   // NDC of this viewport to wedge coordinates
-uniform vec2 viewportSize;
+//PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;    // (centre, 1) or (direction towards the light, 0), wedge coordinates
 uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT]; // wedge coordinates, same w as lightWedge
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
@@ -43,10 +41,7 @@ void main()
     discard; // background
   }
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
-  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0,
-    depth * 2.0 - 1.0 - eyeDepthBias, 1.0);
-  vec4 point = clipToWedge * ndc;
-  vec3 p = point.xyz / point.w;
+  vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
 
   vec3 fromP = edgeFromVS - p;
   int multiplicity = int(faceSignsVS.x * faceWeight(faceNormal0VS, -fromP) +

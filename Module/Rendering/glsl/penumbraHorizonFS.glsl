@@ -4,20 +4,11 @@
 // caster's terminator the silhouette seen from the light's centre misses that self-occlusion,
 // so this pass caps the LI buffer (GL_MIN blending) with the fraction of the light's disk above
 // the visible point's geometric plane, its normal taken from the depth buffer.
-uniform sampler2D depthTexture;
-uniform mat4 clipToWedge;     // NDC of this viewport to coordinates centred on the light
-uniform vec2 viewportSize;
+//PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;      // (centre, 1) or (direction towards the light, 0)
 uniform float lightRadius;    // world units, or radians for a directional light
 
 const float pi = 3.14159265358979;
-
-vec3 pointAt(ivec2 pixel, float depth)
-{
-  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec4 point = clipToWedge * ndc;
-  return point.xyz / point.w;
-}
 
 /// Step to the neighbour on the same surface: the one closer in depth.
 vec3 tangent(ivec2 pixel, float depth, ivec2 step, vec3 p)
@@ -27,8 +18,9 @@ vec3 tangent(ivec2 pixel, float depth, ivec2 step, vec3 p)
   ivec2 backward = clamp(pixel - step, ivec2(0), size - 1);
   float dForward = texelFetch(depthTexture, forward, 0).r;
   float dBackward = texelFetch(depthTexture, backward, 0).r;
-  return abs(dForward - depth) < abs(depth - dBackward) ? pointAt(forward, dForward) - p
-                                                          : p - pointAt(backward, dBackward);
+  return abs(dForward - depth) < abs(depth - dBackward)
+    ? penumbraPointAt(forward, dForward, 0.0) - p
+    : p - penumbraPointAt(backward, dBackward, 0.0);
 }
 
 void main()
@@ -39,7 +31,7 @@ void main()
   {
     discard;
   }
-  vec3 p = pointAt(pixel, depth);
+  vec3 p = penumbraPointAt(pixel, depth, 0.0);
   // Screen x and y steps: their cross product faces the eye, the side that is seen.
   vec3 n = cross(tangent(pixel, depth, ivec2(1, 0), p), tangent(pixel, depth, ivec2(0, 1), p));
   if (dot(n, n) <= 0.0)

@@ -5,9 +5,7 @@
 // from the point, the light is a disk; the edge's correction is the part of triangle
 // (disk centre, projected edge) inside the disk minus the disk sector it spans. It is zero
 // outside the wedge, so the wedge only bounds the pixels worth evaluating.
-uniform sampler2D depthTexture;
-uniform mat4 clipToWedge;     // NDC of this viewport to wedge coordinates
-uniform vec2 viewportSize;
+//PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;      // (centre, 1) or (direction towards the light, 0), wedge coordinates
 uniform float lightRadius;    // world units, or radians for a directional light
 
@@ -106,8 +104,6 @@ void main()
   {
     discard; // background
   }
-  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec4 point = clipToWedge * ndc;
-  float occlusion = edgeOcclusion(point.xyz / point.w, edgeFromVS, edgeToVS);
+  float occlusion = edgeOcclusion(penumbraPointAt(pixel, depth, 0.0), edgeFromVS, edgeToVS);
   gl_FragData[0] = vec4(-edgeWeightVS * occlusion);
 }
