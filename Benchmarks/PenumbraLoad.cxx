@@ -741,8 +741,8 @@ Row RunMethod(const std::string& method, const Scene& scene, vtkRenderWindow* wi
   row.ShadowTriangles = pass->GetNumberOfShadowVolumeTriangles();
   row.Wedges = pass->GetNumberOfPenumbraWedges();
   row.FullViewportWedges = pass->GetNumberOfFullViewportWedges();
-  row.Culled = pass->GetNumberOfCulledShadows();
-  row.ZFail = pass->GetNumberOfZFailVolumes();
+  row.Culled = static_cast<int>(pass->GetNumberOfCulledShadows());
+  row.ZFail = static_cast<int>(pass->GetNumberOfZFailVolumes());
 
   // Visibility of every shadowing light at the starting view: finite, in [0, 1], and dark
   // somewhere (a light whose shadow never lands in view would be a broken scene or pass).

@@ -114,7 +114,7 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  int& zFailCount);
+  vtkIdType& zFailCount);
 
 } // namespace
 
@@ -1195,7 +1195,7 @@ constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  int& zFailCount)
+  vtkIdType& zFailCount)
 {
   penumbra::VolumeCache& volume = caster.Volumes[key];
   if (volume.Volume.CastingTriangles == 0)

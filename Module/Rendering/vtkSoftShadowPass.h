@@ -222,6 +222,7 @@ public:
 
   /**
    * Number of lights shadowed in the last frame, and the shadow-volume triangles drawn for them.
+   * Counts of lights are int, as VTK's; counts of casters, triangles and wedges are vtkIdType.
    */
   vtkGetMacro(NumberOfShadowingLights, int);
   vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
@@ -231,9 +232,9 @@ public:
   vtkGetMacro(NumberOfPenumbraWedges, vtkIdType);
   vtkGetMacro(NumberOfFullViewportWedges, vtkIdType);
   /// (caster, light) pairs skipped in the last frame because that shadow cannot reach the view.
-  vtkGetMacro(NumberOfCulledShadows, int);
+  vtkGetMacro(NumberOfCulledShadows, vtkIdType);
   /// Shadow volumes drawn with z-fail (caps) in the last frame; the rest used z-pass.
-  vtkGetMacro(NumberOfZFailVolumes, int);
+  vtkGetMacro(NumberOfZFailVolumes, vtkIdType);
   /// Plateau triangles (drop shadows, cones, sheets) drawn in the last frame.
   vtkGetMacro(NumberOfPlateauTriangles, vtkIdType);
   /// Lights whose soft shadows were counted (soft shadow volumes) in the last frame, and those
@@ -310,8 +311,8 @@ protected:
   int NumberOfAveragedLights = 0;
   int NumberOfShadowingLights = 0;
   vtkIdType NumberOfShadowVolumeTriangles = 0;
-  int NumberOfZFailVolumes = 0;
-  int NumberOfCulledShadows = 0;
+  vtkIdType NumberOfZFailVolumes = 0;
+  vtkIdType NumberOfCulledShadows = 0;
   vtkIdType NumberOfPenumbraWedges = 0;
   vtkIdType NumberOfFullViewportWedges = 0;
   vtkIdType NumberOfSilhouetteUpdates = 0;
