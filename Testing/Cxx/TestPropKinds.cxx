@@ -25,6 +25,7 @@
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
+#include "vtkLODActor.h"
 #include "vtkLight.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
@@ -379,6 +380,37 @@ void TestAssembly()
 }
 
 //------------------------------------------------------------------------------
+void TestLODActor()
+{
+  // A vtkLODActor (VTK may draw a coarser level while interacting): it casts from its full
+  // mapper's data, as the same data in a plain actor does.
+  auto sphere = SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16);
+  auto box = BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7);
+  CompareScenes(
+    "vtkLODActor",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ sphere, box })
+      {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputConnection(source->GetOutputPort());
+        vtkNew<vtkLODActor> actor;
+        actor->SetMapper(mapper);
+        actor->GetProperty()->SetAmbient(0.2);
+        actor->GetProperty()->SetDiffuse(0.8);
+        r->AddActor(actor);
+      }
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      r->AddActor(MakeActor(sphere, 1, 1, 1));
+      r->AddActor(MakeActor(box, 1, 1, 1));
+    });
+}
+
+//------------------------------------------------------------------------------
 /// What cannot cast warns once per prop and reason, over two frames, and the rest still shadows.
 void TestWarnings()
 {
@@ -477,6 +509,7 @@ int main()
   TestGlyphsByRotation();
   TestMultiBlock();
   TestAssembly();
+  TestLODActor();
   TestWarnings();
   return penumbra_test::Finish();
 }
