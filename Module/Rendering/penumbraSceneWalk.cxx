@@ -1,6 +1,7 @@
 #include "penumbraSceneWalk.h"
 
 #include "penumbraGlyphs.h"
+#include "penumbraMatrices.h"
 #include "vtkSoftShadowPass.h"
 
 #include "vtkActor.h"
@@ -17,7 +18,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
-#include "vtkMatrix4x4.h"
+#include "vtkMath.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -26,20 +27,12 @@
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 
 namespace penumbra
 {
 namespace
 {
-/// vtkMatrix4x4 is row-major; glm is column-major.
-glm::dmat4 FromRowMajor(const double* elements)
-{
-  return glm::transpose(glm::make_mat4(elements));
-}
-
 /// Reads the arrays vtkGlyph3DMapper itself reads (its protected Get*Array), through pointers
 /// to its members, so that array selection, Orient, SourceIndexing and Masking act as in VTK.
 struct GlyphArrays : vtkGlyph3DMapper
@@ -76,18 +69,17 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
     while (vtkAssemblyPath* path = prop->GetNextPath())
     {
       vtkAssemblyNode* node = path->GetLastNode();
-      vtkMatrix4x4* matrix = node ? node->GetMatrix() : nullptr;
       if (node && node->GetViewProp())
       {
-        this->Leaf(node->GetViewProp(), matrix ? matrix->GetData() : nullptr, owner, surfaces);
+        this->Leaf(node->GetViewProp(), node->GetMatrix(), owner, surfaces);
       }
     }
   }
   return surfaces;
 }
 
-void SceneWalk::Leaf(
-  vtkProp* leaf, const double* pathMatrix, vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
+  std::vector<DrawnSurface>& surfaces)
 {
   if (!leaf->GetVisibility())
   {
@@ -114,7 +106,7 @@ void SceneWalk::Leaf(
     return;
   }
   // A path's last matrix is the composed one; a plain actor's path carries none.
-  const glm::dmat4 matrix = FromRowMajor(pathMatrix ? pathMatrix : actor->GetMatrix()->GetData());
+  const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
   if (DrawsImposters(mapper))
   {
     this->Warn(owner, leaf,
@@ -132,18 +124,18 @@ void SceneWalk::Leaf(
   {
     return;
   }
+  auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::size_t part = 0;
-  this->Blocks(actor, data, matrix, true, 1.0, part, surfaces);
+  this->Blocks(actor, composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, data,
+    matrix, true, 1.0, part, surfaces);
 }
 
-void SceneWalk::Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix, bool visible,
-  double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
+void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attributes,
+  vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
+  std::vector<DrawnSurface>& surfaces)
 {
   // Block attributes apply to a node and everything under it unless a child sets its own,
   // as vtkCompositePolyDataMapper2 applies them.
-  auto composite = vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper());
-  vtkCompositeDataDisplayAttributes* attributes =
-    composite ? composite->GetCompositeDataDisplayAttributes() : nullptr;
   if (attributes && attributes->HasBlockVisibility(node))
   {
     visible = attributes->GetBlockVisibility(node);
@@ -158,7 +150,7 @@ void SceneWalk::Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& m
     {
       if (child)
       {
-        this->Blocks(actor, child, matrix, visible, opacity, part, surfaces);
+        this->Blocks(actor, attributes, child, matrix, visible, opacity, part, surfaces);
       }
       else
       {
@@ -267,9 +259,9 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
       std::size_t entry = 0;
       if (sourceIndex)
       {
-        const double value = glm::length(glm::dvec3(sourceIndex->GetComponent(id, 0),
-          sourceIndex->GetNumberOfComponents() > 1 ? sourceIndex->GetComponent(id, 1) : 0.0,
-          sourceIndex->GetNumberOfComponents() > 2 ? sourceIndex->GetComponent(id, 2) : 0.0));
+        // As VTK: the norm of the index tuple, clamped to the table.
+        const double value =
+          vtkMath::Norm(sourceIndex->GetTuple(id), sourceIndex->GetNumberOfComponents());
         entry = static_cast<std::size_t>(
           std::min(std::max(static_cast<int>(value), 0), static_cast<int>(sources.size()) - 1));
       }

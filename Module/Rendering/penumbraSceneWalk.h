@@ -25,8 +25,10 @@
 #include <vector>
 
 class vtkActor;
+class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
 class vtkGlyph3DMapper;
+class vtkMatrix4x4;
 class vtkObject;
 class vtkProp;
 class vtkRenderer;
@@ -55,10 +57,11 @@ public:
   std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
 
 private:
-  void Leaf(
-    vtkProp* leaf, const double* pathMatrix, vtkObject* owner, std::vector<DrawnSurface>& surfaces);
-  void Blocks(vtkActor* actor, vtkDataObject* node, const glm::dmat4& matrix, bool visible,
-    double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces);
+  void Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
+    std::vector<DrawnSurface>& surfaces);
+  void Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attributes, vtkDataObject* node,
+    const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
+    std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
   /// Warns once per prop and reason.

@@ -43,6 +43,7 @@
 
 #include "penumbraCulling.h"
 #include "penumbraLightSamples.h"
+#include "penumbraMatrices.h"
 #include "penumbraPlateaus.h"
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
@@ -85,19 +86,6 @@ vtkInformationKeyMacro(vtkSoftShadowPass, SHADOW_PLANE, Integer);
 
 namespace
 {
-
-glm::dmat4 ToGlm(const vtkMatrix4x4* m)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      result[column][row] = m->GetElement(row, column);
-    }
-  }
-  return result;
-}
 
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
@@ -1560,7 +1548,7 @@ bool vtkSoftShadowPass::FindReceiverPlane(vtkRenderer* renderer)
     }
     vtkPoints* points = data ? data->GetPoints() : nullptr;
     std::vector<glm::dvec3> world;
-    const glm::dmat4 toWorld = ToGlm(actor->GetMatrix());
+    const glm::dmat4 toWorld = penumbra::ToGlm(actor->GetMatrix());
     for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
     {
       world.emplace_back(toWorld * glm::dvec4(glm::make_vec3(points->GetPoint(i)), 1.0));
