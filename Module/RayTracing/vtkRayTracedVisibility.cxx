@@ -435,19 +435,11 @@ void CollectDataSet(
   meshes.push_back(std::move(mesh));
 }
 
-/// The input points a vtkGlyph3DMapper draws a glyph at: not hidden by its mask, and with a
-/// finite orientation (VTK's matrix of a NaN orientation draws nothing).
+/// The input points a vtkGlyph3DMapper draws a glyph at: not hidden by `mask` (if any), and
+/// with a finite orientation (VTK's matrix of a NaN orientation draws nothing).
 vtkSmartPointer<vtkDataSet> DrawnGlyphPoints(
-  vtkGlyph3DMapper* mapper, vtkDataSet* points, vtkDataArray* orientation)
+  vtkDataSet* points, vtkBitArray* mask, vtkDataArray* orientation)
 {
-  const char* maskName = nullptr;
-  if (vtkInformation* info = mapper->GetInputArrayInformation(vtkGlyph3DMapper::MASK))
-  {
-    maskName = info->Get(vtkDataObject::FIELD_NAME());
-  }
-  auto mask = mapper->GetMasking() && maskName
-    ? vtkBitArray::SafeDownCast(points->GetPointData()->GetAbstractArray(maskName))
-    : nullptr;
   auto drawn = [&](vtkIdType id)
   {
     if (mask && mask->GetValue(id) == 0)
@@ -503,8 +495,12 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   vtkDataArray* index = mapper->GetSourceIndexing()
     ? (indexName ? data->GetArray(indexName) : data->GetScalars())
     : nullptr;
+  const char* maskName = arrayName(vtkGlyph3DMapper::MASK);
+  auto mask = mapper->GetMasking() && maskName
+    ? vtkBitArray::SafeDownCast(data->GetAbstractArray(maskName))
+    : nullptr;
   const int sources = mapper->GetNumberOfInputConnections(1);
-  vtkSmartPointer<vtkDataSet> points = DrawnGlyphPoints(mapper, input, orientation);
+  vtkSmartPointer<vtkDataSet> points = DrawnGlyphPoints(input, mask, orientation);
   // The arrays again, on the points kept.
   auto same = [&points](vtkDataArray* array)
   { return array ? points->GetPointData()->GetArray(array->GetName()) : nullptr; };
@@ -669,17 +665,18 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   std::vector<vtkDataObject*> leaves;
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
     blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, 1.0, leaves);
+  auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
   for (vtkDataObject* leaf : leaves)
   {
-    if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+    auto points = vtkDataSet::SafeDownCast(leaf);
+    if (!glyphs)
     {
-      if (auto points = vtkDataSet::SafeDownCast(leaf))
-      {
-        CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, meshes);
-      }
-      continue;
+      CollectDataSet(leaf, matrix, casts, meshes);
     }
-    CollectDataSet(leaf, matrix, casts, meshes);
+    else if (points)
+    {
+      CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, meshes);
+    }
   }
 }
 
