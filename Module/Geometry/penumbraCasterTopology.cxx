@@ -415,21 +415,17 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   topo.Origin = 0.5 * lo + 0.5 * hi;
   const double diagonal = glm::length(hi - lo);
 
-  std::vector<glm::dvec3> relative(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    relative[i] = points[i] - topo.Origin;
-  }
   // Points are taken as they are indexed first. Only the ends of boundary edges can be seams
   // (coincident points that split a surface): those alone are welded, and the triangles and
   // edges built again if any merged. Data whose points are already shared (contour output, any
   // closed mesh) pays for no welding at all; a triangle soup welds every point, as before.
-  std::vector<std::uint32_t> map(relative.size());
-  for (std::size_t i = 0; i < relative.size(); ++i)
+  topo.Points.resize(points.size());
+  std::vector<std::uint32_t> map(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
   {
-    map[i] = IsFinite(relative[i]) ? static_cast<std::uint32_t>(i) : InvalidIndex;
+    topo.Points[i] = points[i] - topo.Origin;
+    map[i] = IsFinite(topo.Points[i]) ? static_cast<std::uint32_t>(i) : InvalidIndex;
   }
-  topo.Points = std::move(relative);
   AddTriangles(triangles, map, topo, report);
   if (report.NonFinitePoints > 0)
   {
