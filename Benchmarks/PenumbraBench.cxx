@@ -827,16 +827,13 @@ void WriteCsvRow(std::FILE* file, const Row& row, const ErrorStats& e)
 void WriteStageSplit(
   std::FILE* file, const Row& row, vtkSoftShadowPass* pass, vtkRenderWindow* window)
 {
-  pass->CollectStageTimesOn();
-  window->Render();
-  pass->CollectStageTimesOff();
+  const std::vector<double> ms = penumbra::bench::TimedStages(pass, window);
   std::fprintf(file, "%s,%s", row.Scene.c_str(), row.Method.c_str());
   std::printf("  %-15s stages:", "");
   for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
   {
-    const double ms = pass->GetStageCPUMilliseconds(stage);
-    std::fprintf(file, ",%.3f", ms);
-    std::printf(" %s %.1f ms", vtkSoftShadowPass::GetStageName(stage), ms);
+    std::fprintf(file, ",%.3f", ms[stage]);
+    std::printf(" %s %.1f ms", vtkSoftShadowPass::GetStageName(stage), ms[stage]);
   }
   std::fprintf(file, "\n");
   std::fflush(file);

@@ -145,15 +145,13 @@ bool ParseArguments(int argc, char* argv[], Options& options)
 /// end of each stage's GL work).
 std::string StageSplit(vtkSoftShadowPass* pass, vtkRenderWindow* window)
 {
-  pass->CollectStageTimesOn();
-  window->Render();
-  pass->CollectStageTimesOff();
+  const std::vector<double> ms = penumbra::bench::TimedStages(pass, window);
   std::string split;
   for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
   {
     char item[64];
     std::snprintf(item, sizeof(item), "%s%s %.1f ms", stage ? ", " : "",
-      vtkSoftShadowPass::GetStageName(stage), pass->GetStageCPUMilliseconds(stage));
+      vtkSoftShadowPass::GetStageName(stage), ms[stage]);
     split += item;
   }
   return split;

@@ -17,6 +17,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -100,6 +101,21 @@ private:
 };
 
 /// The non-empty items of a comma-separated list.
+/// One more frame with `pass`'s stage times on (the pipeline drained at each stage's end): the
+/// wall-clock milliseconds of each stage, in vtkSoftShadowPass's stage order.
+inline std::vector<double> TimedStages(vtkSoftShadowPass* pass, vtkRenderWindow* window)
+{
+  pass->CollectStageTimesOn();
+  window->Render();
+  pass->CollectStageTimesOff();
+  std::vector<double> ms;
+  for (int stage = 0; stage < vtkSoftShadowPass::NUMBER_OF_STAGES; ++stage)
+  {
+    ms.push_back(pass->GetStageCPUMilliseconds(stage));
+  }
+  return ms;
+}
+
 inline std::vector<std::string> SplitList(const std::string& text)
 {
   std::vector<std::string> items;
