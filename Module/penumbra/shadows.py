@@ -28,7 +28,6 @@ METHODS = {
 
 def _lights_of(renderer):
     lights = renderer.GetLights()
-    lights.InitTraversal()
     return [lights.GetItemAsObject(i) for i in range(lights.GetNumberOfItems())]
 
 

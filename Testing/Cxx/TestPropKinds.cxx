@@ -170,10 +170,11 @@ vtkSmartPointer<vtkPolyData> GlyphPoints()
   return poly;
 }
 
-/// An actor for a glyph mapper, lit as MakeActor's.
-vtkSmartPointer<vtkActor> GlyphActor(vtkMapper* mapper)
+/// An actor (of type A) drawing `mapper`, lit as MakeActor's, for mappers MakeActor does not make.
+template <typename A = vtkActor>
+vtkSmartPointer<A> LitActor(vtkMapper* mapper)
 {
-  auto actor = vtkSmartPointer<vtkActor>::New();
+  auto actor = vtkSmartPointer<A>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetAmbient(0.2);
   actor->GetProperty()->SetDiffuse(0.8);
@@ -205,7 +206,7 @@ void TestGlyphsByDirection()
       mapper->SetScaleArray("size");
       mapper->SetScaleModeToScaleByMagnitude();
       mapper->SetScaleFactor(0.8);
-      auto actor = GlyphActor(mapper);
+      auto actor = LitActor(mapper);
       actor->SetPosition(0.2, 0.1, -0.1); // the actor's matrix applies to every glyph
       r->AddActor(actor);
     },
@@ -250,7 +251,7 @@ void TestGlyphsByRotation()
       mapper->SetSourceIndexArray("index");
       mapper->MaskingOn();
       mapper->SetMaskArray("mask");
-      auto actor = GlyphActor(mapper);
+      auto actor = LitActor(mapper);
       r->AddActor(actor);
     },
     [&](vtkRenderer* r)
@@ -311,11 +312,7 @@ void TestMultiBlock()
       attributes->SetBlockOpacity(data(glass), 0.4);
       mapper->SetCompositeDataDisplayAttributes(attributes);
       mapper->ScalarVisibilityOff();
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(mapper);
-      actor->GetProperty()->SetAmbient(0.2);
-      actor->GetProperty()->SetDiffuse(0.8);
-      r->AddActor(actor);
+      r->AddActor(LitActor(mapper));
     },
     [&](vtkRenderer* r)
     {
@@ -395,11 +392,7 @@ void TestLODActor()
       {
         vtkNew<vtkPolyDataMapper> mapper;
         mapper->SetInputConnection(source->GetOutputPort());
-        vtkNew<vtkLODActor> actor;
-        actor->SetMapper(mapper);
-        actor->GetProperty()->SetAmbient(0.2);
-        actor->GetProperty()->SetDiffuse(0.8);
-        r->AddActor(actor);
+        r->AddActor(LitActor<vtkLODActor>(mapper));
       }
     },
     [&](vtkRenderer* r)
