@@ -3,6 +3,7 @@
 #include "penumbraShadowVolume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace penumbra
@@ -84,6 +85,86 @@ int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a, const EdgeFace* f
     multiplicity += faces[k].Sign * weight;
   }
   return multiplicity;
+}
+
+std::vector<HalfSpace> SilhouetteSector(const Wedge& wedge, const glm::dvec3& a,
+  const glm::dvec3& b, const EdgeFace* faces, int faceCount, bool frontFacesOnly, double margin)
+{
+  const glm::dvec3 edge = b - a;
+  const double length = glm::length(edge);
+  if (!wedge.Valid || faceCount != 2 || !(length > 0.0) || !std::isfinite(length))
+  {
+    return {};
+  }
+  // Every plane here contains the edge's line: work in the plane across it.
+  const glm::dvec3 d = edge / length;
+  const glm::dvec3 seed = std::abs(d.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(d, seed)), e2 = glm::cross(d, e1);
+  auto across = [&](const glm::dvec3& n)
+  {
+    const glm::dvec2 v(glm::dot(n, e1), glm::dot(n, e2));
+    const double l = glm::length(v);
+    return l > 0.0 ? v / l : glm::dvec2(0.0);
+  };
+  const glm::dvec2 f0 = across(faces[0].Normal), f1 = across(faces[1].Normal);
+  const double det = f0.x * f1.y - f0.y * f1.x;
+  if (!(std::abs(det) > 1e-9))
+  {
+    return {};
+  }
+  auto perpendicular = [](const glm::dvec2& n) { return glm::dvec2(-n.y, n.x); };
+  int found = 0;
+  glm::ivec2 chosen(0);
+  for (int s0 : { -1, 1 })
+  {
+    for (int s1 : { -1, 1 })
+    {
+      // The point across the edge with f0.x = s0 and f1.x = s1 lies inside this sector.
+      const glm::dvec2 x((s0 * f1.y - s1 * f0.y) / det, (s1 * f0.x - s0 * f1.x) / det);
+      const glm::dvec3 p = a + length * (x.x * e1 + x.y * e2);
+      if (MultiplicityFrom(p, a, faces, faceCount, frontFacesOnly) == 0)
+      {
+        continue;
+      }
+      // Sector and wedge meet in a cone of the plane: inside means h.x < 0 for all four. Its
+      // extreme rays lie on the lines, so some bisector of two of them is strictly inside.
+      const std::array<glm::dvec2, 4> bounds = { across(wedge.Normals[0]), across(wedge.Normals[1]),
+        -double(s0) * f0, -double(s1) * f1 };
+      std::vector<glm::dvec2> rays;
+      for (const glm::dvec2& h : bounds)
+      {
+        rays.push_back(perpendicular(h));
+        rays.push_back(-perpendicular(h));
+      }
+      bool meets = false;
+      for (std::size_t i = 0; i < rays.size() && !meets; ++i)
+      {
+        for (std::size_t j = i + 1; j < rays.size() && !meets; ++j)
+        {
+          const glm::dvec2 c = rays[i] + rays[j];
+          meets = glm::length(c) > 1e-9 &&
+            std::all_of(bounds.begin(), bounds.end(),
+              [&](const glm::dvec2& h) { return glm::dot(h, c) < -1e-9 * glm::length(c); });
+        }
+      }
+      if (meets)
+      {
+        ++found;
+        chosen = glm::ivec2(s0, s1);
+      }
+    }
+  }
+  if (found != 1)
+  {
+    return {};
+  }
+  std::vector<HalfSpace> halfSpaces;
+  for (int k = 0; k < 2; ++k)
+  {
+    const glm::dvec3 outward = -double(chosen[k]) * glm::normalize(faces[k].Normal);
+    halfSpaces.push_back({ outward, glm::dot(outward, a) + margin });
+  }
+  return halfSpaces;
 }
 
 double SideOfEdgePlane(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& throughLight)

@@ -24,6 +24,8 @@
 #define penumbraSampleCounting_h
 
 #include "penumbraCasterTopology.h"
+#include "penumbraConvexClip.h"
+#include "penumbraWedge.h"
 
 #include <glm/glm.hpp>
 
@@ -78,6 +80,19 @@ struct EdgeFace
  */
 VTKPENUMBRAGEOMETRY_EXPORT int MultiplicityFrom(const glm::dvec3& p, const glm::dvec3& a,
   const EdgeFace* faces, int faceCount, bool frontFacesOnly);
+
+/**
+ * Half-spaces outside which edge a -> b cannot change a sample's count inside its wedge. The
+ * planes of its two faces cut space around the edge's line into four dihedral sectors, in each
+ * of which MultiplicityFrom is constant; on a smooth mesh two of them are thin and hold every
+ * point that sees the edge as a silhouette. When the wedge meets exactly one sector of non-zero
+ * multiplicity, that sector's two planes, each pushed out by `margin` so that points on the
+ * caster's own faces near the edge stay well inside. Otherwise (one or more than two faces,
+ * faces in one plane, a light that both sectors see) none: the wedge alone bounds the edge.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT std::vector<HalfSpace> SilhouetteSector(const Wedge& wedge,
+  const glm::dvec3& a, const glm::dvec3& b, const EdgeFace* faces, int faceCount,
+  bool frontFacesOnly, double margin);
 
 /**
  * The normal of the plane through edge a -> b and a light point (x, y, z, 1), or parallel to a

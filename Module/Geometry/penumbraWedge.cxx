@@ -233,6 +233,16 @@ bool Wedge::Contains(const glm::dvec3& x, double tolerance) const
   return this->Valid;
 }
 
+std::vector<HalfSpace> Wedge::HalfSpaces() const
+{
+  std::vector<HalfSpace> halfSpaces;
+  for (int k = 0; k < 4; ++k)
+  {
+    halfSpaces.push_back({ this->Normals[k], this->Offsets[k] });
+  }
+  return halfSpaces;
+}
+
 const std::array<unsigned int, 24>& Wedge::Triangles()
 {
   // Vertices: 0 a, 1 b, 2 front-a, 3 front-b, 4 back-a, 5 back-b (2..5 at infinity).
@@ -313,6 +323,17 @@ bool LightPyramid::Contains(const glm::dvec3& x, double tolerance) const
     }
   }
   return this->Valid;
+}
+
+std::vector<HalfSpace> LightPyramid::HalfSpaces() const
+{
+  const glm::dvec3 apex(this->Vertices[0]);
+  std::vector<HalfSpace> halfSpaces;
+  for (const glm::dvec3& normal : this->Normals)
+  {
+    halfSpaces.push_back({ normal, glm::dot(normal, apex) });
+  }
+  return halfSpaces;
 }
 
 const std::array<unsigned int, 18>& LightPyramid::Triangles()

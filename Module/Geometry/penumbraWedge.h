@@ -20,11 +20,13 @@
 #ifndef penumbraWedge_h
 #define penumbraWedge_h
 
+#include "penumbraConvexClip.h"
 #include "vtkPenumbraGeometryModule.h" // for export macro
 
 #include <glm/glm.hpp>
 
 #include <array>
+#include <vector>
 
 namespace penumbra
 {
@@ -58,6 +60,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT Wedge
   static Wedge Build(
     const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius);
   bool Contains(const glm::dvec3& x, double tolerance = 0.0) const;
+  /// The four planes as half-spaces, for ClipBox.
+  std::vector<HalfSpace> HalfSpaces() const;
   /// The wedge's boundary as 8 outward triangles (indices into Vertices): front, back, two sides
   /// and the far end at infinity; a ray meets it once leaving, whatever its origin.
   static const std::array<unsigned int, 24>& Triangles();
@@ -84,6 +88,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT LightPyramid
   static LightPyramid Build(
     const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius);
   bool Contains(const glm::dvec3& x, double tolerance = 0.0) const;
+  /// The four side planes as half-spaces, for ClipBox.
+  std::vector<HalfSpace> HalfSpaces() const;
   /// Six outward triangles (indices into Vertices): four sides and the far end at infinity.
   static const std::array<unsigned int, 18>& Triangles();
 };

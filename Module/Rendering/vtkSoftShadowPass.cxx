@@ -173,6 +173,9 @@ public:
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
+  /// Holds every receiver (penumbra::StableReceiverBox): wedges are cut to it.
+  penumbra::Box ReceiverBox;
+  void UpdateReceiverBox();
   std::set<vtkLight*> WarnedLights;
 
   std::string ShaderConfiguration;
@@ -761,6 +764,24 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
   }
 }
 
+void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
+{
+  penumbra::Box current;
+  for (vtkProp* prop : this->Receivers)
+  {
+    const double* bounds = prop->GetBounds();
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds) ||
+      !std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+    {
+      this->ReceiverBox = penumbra::Box(); // a receiver of unknown extent: nothing to cut to
+      return;
+    }
+    current.Extend(
+      glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
+  }
+  this->ReceiverBox = penumbra::StableReceiverBox(this->ReceiverBox, current);
+}
+
 void vtkSoftShadowPass::RemoveReceiverKeys()
 {
   for (vtkProp* prop : this->Internals->Receivers)
@@ -881,6 +902,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   internals.Caches.BeginFrame();
   internals.Casters.clear();
+  internals.UpdateReceiverBox();
   for (const penumbra::DrawnSurface& surface : internals.SceneWalk.Casters(s->GetRenderer(), this))
   {
     penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, this);
@@ -976,14 +998,14 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     if (light.Is(Technique::PenumbraWedges))
     {
       caster->Wedges[light.Light].Update(*caster->Mesh, caster->Volumes[light.VolumeKey(0)],
-        caster->ObjectToWorld, light.World, light.SoftRadius);
+        caster->ObjectToWorld, light.World, light.SoftRadius, this->ReceiverBox);
     }
     if (light.Is(Technique::SampleCounting))
     {
       const bool frontFacesOnly = penumbra::ShadowVolume::FrontFacesSuffice(
         caster->Mesh->Topology, worldToObject * light.World);
       updates += caster->CountingWedges[light.Light].Update(*caster->Mesh, caster->ObjectToWorld,
-                   light.World, light.SoftRadius, frontFacesOnly)
+                   light.World, light.SoftRadius, frontFacesOnly, this->ReceiverBox)
         ? 1
         : 0;
     }

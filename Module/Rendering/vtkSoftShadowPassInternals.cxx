@@ -173,20 +173,46 @@ void VolumeCache::Upload()
 
 namespace
 {
+/// How far the silhouette sector's planes are pushed out, as a share of the receivers' box.
+constexpr double SectorMargin = 2e-3;
+
 /// What bounds one edge's wedge fragments (see AppendWedge).
 enum class WedgeShape
 {
-  Planes,      ///< a Wedge: four planes around the edge
-  Pyramid,     ///< a LightPyramid: the edge points at a positional light
-  FullViewport ///< no bound: a triangle over the viewport
+  Planes,       ///< a Wedge: four planes around the edge
+  Pyramid,      ///< a LightPyramid: the edge points at a positional light
+  FullViewport, ///< no bound of its own: the receivers' box, or a triangle over the viewport
+  Nothing       ///< the bound misses the receivers' box
 };
 
-/// Appends the wedge of edge from -> to (wedge coordinates) as 8 outward triangles. An edge with
-/// no wedge planes (its line passes through the light) gets its LightPyramid, or, where none
-/// exists, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
-/// back-face culling keeps: exact but costly. Every vertex carries `attributes`.
+/// Where an edge's fragments can be: its Wedge, or else its LightPyramid, as half-spaces.
+WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+  double radius, Wedge& wedge, std::vector<HalfSpace>& halfSpaces)
+{
+  wedge = Wedge::Build(from, to, light, radius);
+  if (wedge.Valid)
+  {
+    halfSpaces = wedge.HalfSpaces();
+    return WedgeShape::Planes;
+  }
+  const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
+  if (pyramid.Valid)
+  {
+    halfSpaces = pyramid.HalfSpaces();
+    return WedgeShape::Pyramid;
+  }
+  halfSpaces.clear();
+  return WedgeShape::FullViewport;
+}
+
+/// Appends one edge's fragments' bound, every vertex carrying `attributes`. With a receivers'
+/// box (wedge coordinates) it is the bound cut to the box (and to `sector`): a closed convex
+/// polyhedron. Without one, the wedge or pyramid whole, reaching to infinity, or, for an edge
+/// with neither, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
+/// back-face culling keeps: exact but costly.
 WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
-  double radius, const float* attributes, int attributeCount, std::vector<float>& vertices,
+  double radius, const Box& receivers, const EdgeFace* faces, bool frontFacesOnly,
+  const float* attributes, int attributeCount, std::vector<float>& vertices,
   std::vector<std::uint32_t>& indices)
 {
   const int floatsPerVertex = 4 + attributeCount;
@@ -200,31 +226,57 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
   };
   auto emitShape = [&](const auto& corners, const auto& triangles)
   {
-    for (const glm::dvec4& corner : corners)
+    for (const auto& corner : corners)
     {
-      emit(corner);
+      emit(glm::dvec4(corner));
     }
     for (unsigned int index : triangles)
     {
       indices.push_back(first + index);
     }
   };
-  const Wedge wedge = Wedge::Build(from, to, light, radius);
-  if (wedge.Valid)
+  Wedge wedge;
+  std::vector<HalfSpace> halfSpaces;
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, halfSpaces);
+  if (receivers.Valid)
+  {
+    if (faces && wedge.Valid)
+    {
+      // Pushed out by a fraction of the scene, well beyond the depth buffer's error, so that
+      // points on the caster's faces next to the edge stay inside.
+      const std::vector<HalfSpace> sector = SilhouetteSector(
+        wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
+      halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
+    }
+    const ConvexPolyhedron cut = ClipBox(receivers, halfSpaces);
+    if (cut.Empty())
+    {
+      return WedgeShape::Nothing;
+    }
+    std::vector<glm::dvec4> corners;
+    for (const glm::dvec3& p : cut.Points)
+    {
+      corners.emplace_back(p, 1.0);
+    }
+    emitShape(corners, cut.Triangles);
+    return shape;
+  }
+  if (shape == WedgeShape::Planes)
   {
     emitShape(wedge.Vertices, Wedge::Triangles());
-    return WedgeShape::Planes;
   }
-  const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
-  if (pyramid.Valid)
+  else if (shape == WedgeShape::Pyramid)
   {
+    const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
     emitShape(pyramid.Vertices, LightPyramid::Triangles());
-    return WedgeShape::Pyramid;
   }
-  const std::array<glm::dvec4, 3> viewport = { glm::dvec4(-1, -1, 0, 2), glm::dvec4(-1, 3, 0, 2),
-    glm::dvec4(3, -1, 0, 2) };
-  emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
-  return WedgeShape::FullViewport;
+  else
+  {
+    const std::array<glm::dvec4, 3> viewport = { glm::dvec4(-1, -1, 0, 2), glm::dvec4(-1, 3, 0, 2),
+      glm::dvec4(3, -1, 0, 2) };
+    emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
+  }
+  return shape;
 }
 } // namespace
 
@@ -233,27 +285,44 @@ glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
   return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
 }
 
-void WedgeBuffer::Reset(
-  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+bool WedgeBuffer::BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
+  double radius, const Box& receivers) const
+{
+  return this->ObjectToWorld == objectToWorld && this->LightWorld == lightWorld &&
+    this->Radius == radius && this->Receivers.Valid == receivers.Valid &&
+    this->Receivers.Min == receivers.Min && this->Receivers.Max == receivers.Max;
+}
+
+void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
+  double radius, const Box& receivers)
 {
   this->ObjectToWorld = objectToWorld;
   this->LightWorld = lightWorld;
   this->Radius = radius;
+  this->Receivers = receivers;
   this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
                                      : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   this->Vertices.clear();
   this->Indices.clear();
-  this->Wedges = this->Fallbacks = this->FullViewport = 0;
+  this->Wedges = this->Fallbacks = this->FullViewport = this->Skipped = 0;
   this->Uploaded = false;
 }
 
-void WedgeBuffer::AppendEdge(
-  const glm::dvec3& from, const glm::dvec3& to, const float* attributes, int attributeCount)
+void WedgeBuffer::AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
+  int attributeCount, const EdgeFace* faces, bool frontFacesOnly)
 {
-  const WedgeShape shape = AppendWedge(from, to, this->LightInWedgeSpace(), this->Radius,
-    attributes, attributeCount, this->Vertices, this->Indices);
-  // Pyramids and full-viewport triangles are both fallbacks: their caster's wedges are drawn by
-  // back faces.
+  Box receivers = this->Receivers;
+  receivers.Min -= this->Origin;
+  receivers.Max -= this->Origin;
+  const WedgeShape shape = AppendWedge(from, to, this->LightInWedgeSpace(), this->Radius, receivers,
+    faces, frontFacesOnly, attributes, attributeCount, this->Vertices, this->Indices);
+  if (shape == WedgeShape::Nothing)
+  {
+    ++this->Skipped;
+    return;
+  }
+  // Pyramids and edges with no bound of their own are both fallbacks: their caster's wedges are
+  // drawn by back faces.
   ++(shape == WedgeShape::Planes ? this->Wedges : this->Fallbacks);
   this->FullViewport += shape == WedgeShape::FullViewport;
 }
@@ -288,16 +357,17 @@ const std::vector<VertexAttribute>& WedgeCache::Attributes()
 }
 
 bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
-  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius)
+  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
+  const Box& receivers)
 {
   this->Used = true;
-  if (this->VolumeGeneration == centre.Generation && this->ObjectToWorld == objectToWorld &&
-    this->LightWorld == lightWorld && this->Radius == radius)
+  if (this->VolumeGeneration == centre.Generation &&
+    this->BuiltFor(objectToWorld, lightWorld, radius, receivers))
   {
     return false;
   }
   this->VolumeGeneration = centre.Generation;
-  this->Reset(objectToWorld, lightWorld, radius);
+  this->Reset(objectToWorld, lightWorld, radius, receivers);
   for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
   {
     const glm::dvec3 from =
@@ -321,21 +391,29 @@ const std::vector<VertexAttribute>& CountingWedgeCache::Attributes()
 }
 
 bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectToWorld,
-  const glm::dvec4& lightWorld, double radius, bool frontFacesOnly)
+  const glm::dvec4& lightWorld, double radius, bool frontFacesOnly, const Box& receivers)
 {
   this->Used = true;
-  if (this->MeshGeneration == mesh.Generation && this->ObjectToWorld == objectToWorld &&
-    this->LightWorld == lightWorld && this->Radius == radius &&
-    this->FrontFacesOnly == frontFacesOnly)
+  const bool sameSilhouette = this->MeshGeneration == mesh.Generation &&
+    this->BuiltFor(objectToWorld, lightWorld, radius, this->Receivers) &&
+    this->FrontFacesOnly == frontFacesOnly;
+  if (sameSilhouette && this->BuiltFor(objectToWorld, lightWorld, radius, receivers))
   {
+    return false;
+  }
+  // The receivers' box changes only the wedges, not which edges are potential silhouettes.
+  std::vector<std::uint32_t> potential = std::move(this->Potential);
+  this->Reset(objectToWorld, lightWorld, radius, receivers);
+  this->VerticesBuilt = false;
+  if (sameSilhouette)
+  {
+    this->Potential = std::move(potential);
     return false;
   }
   this->MeshGeneration = mesh.Generation;
   this->FrontFacesOnly = frontFacesOnly;
-  this->Reset(objectToWorld, lightWorld, radius);
   this->Potential =
     PotentialSilhouette(mesh.Topology, objectToWorld, lightWorld, radius, frontFacesOnly);
-  this->VerticesBuilt = false;
   return true;
 }
 
@@ -365,19 +443,23 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
     {
       float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0, 0,
         0, centreNormal.x, centreNormal.y, centreNormal.z };
-      for (std::uint32_t k = 0; k < 2 && first + k < edge.UseCount; ++k)
+      EdgeFace faces[2];
+      std::uint32_t faceCount = 0;
+      for (; faceCount < 2 && first + faceCount < edge.UseCount; ++faceCount)
       {
-        const EdgeUse& use = topo.Uses[edge.FirstUse + first + k];
+        const EdgeUse& use = topo.Uses[edge.FirstUse + first + faceCount];
         const glm::uvec3& tri = topo.Triangles[use.Triangle];
-        const glm::vec3 normal =
-          glm::vec3(flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]));
+        faces[faceCount] = { flip *
+            glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]),
+          static_cast<int>(flip) * use.Sign };
         for (int c = 0; c < 3; ++c)
         {
-          attributes[6 + 3 * k + c] = normal[c];
+          attributes[6 + 3 * faceCount + c] = static_cast<float>(faces[faceCount].Normal[c]);
         }
-        attributes[12 + k] = static_cast<float>(flip * use.Sign);
+        attributes[12 + faceCount] = static_cast<float>(faces[faceCount].Sign);
       }
-      this->AppendEdge(from, to, attributes, 17);
+      this->AppendEdge(
+        from, to, attributes, 17, faceCount == 2 ? faces : nullptr, this->FrontFacesOnly);
     }
   }
   this->VerticesBuilt = true;

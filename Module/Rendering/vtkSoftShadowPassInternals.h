@@ -10,6 +10,8 @@
 #define vtkSoftShadowPassInternals_h
 
 #include "penumbraCasterTopology.h"
+#include "penumbraConvexClip.h"
+#include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 
 #include "vtkNew.h"
@@ -97,9 +99,11 @@ void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
   vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
   const std::vector<VertexAttribute>& attributes);
 
-/// Wedges of one caster for one light, as drawn: 8 outward triangles per edge over its 6
-/// vertices (a light pyramid's 6 over 5, or a full-viewport triangle), indexed, every vertex
-/// carrying the edge's data for the fragment shader.
+/// Wedges of one caster for one light, as drawn, indexed, every vertex carrying the edge's data
+/// for the fragment shader. Each edge's wedge (or light pyramid) is cut to the receivers' box,
+/// where there is one, and drawn as the closed convex polyhedron left; without a box it is drawn
+/// whole, to infinity: 8 outward triangles over 6 vertices (a light pyramid's 6 over 5, or a
+/// full-viewport triangle).
 /// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
 /// caster's for a directional light), so float precision follows the light, not the world origin.
 struct WedgeBuffer
@@ -108,6 +112,8 @@ struct WedgeBuffer
   glm::dmat4 ObjectToWorld{ 0.0 };
   glm::dvec4 LightWorld{ 0.0 };
   double Radius = -1.0;
+  Box Receivers;                ///< world space; no receiver lies outside it
+  std::size_t Skipped = 0;      ///< edges whose wedge misses the receivers' box: nothing is drawn
   std::size_t Wedges = 0;       ///< edges with a proper wedge
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
@@ -126,11 +132,17 @@ struct WedgeBuffer
   /// `program`; DrawWedgeBuffer releases both.
   void Bind(vtkShaderProgram* program, const std::vector<VertexAttribute>& attributes);
   void ReleaseGraphicsResources();
+  /// Whether the buffer was built for these inputs.
+  bool BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
+    const Box& receivers) const;
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
-  void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius);
+  void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
+    const Box& receivers);
   /// Appends the wedge of edge from -> to (wedge coordinates), each vertex carrying `attributes`.
-  void AppendEdge(
-    const glm::dvec3& from, const glm::dvec3& to, const float* attributes, int attributeCount);
+  /// With `faces` (a two-faced edge of a counting wedge), the wedge is also cut to the sector
+  /// where the edge is a silhouette (penumbra::SilhouetteSector).
+  void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
+    int attributeCount, const EdgeFace* faces = nullptr, bool frontFacesOnly = false);
   std::size_t IndexCount() const { return this->Indices.size(); }
   /// Bytes of the uploaded vertex and index buffers.
   std::size_t UploadedBytes() const
@@ -149,9 +161,10 @@ struct WedgeCache : WedgeBuffer
   static constexpr int FloatsPerVertex = 11;
   static const std::vector<VertexAttribute>& Attributes();
 
-  /// Rebuilds when the silhouette, the actor's matrix, the light or its radius changed.
+  /// Rebuilds when the silhouette, the actor's matrix, the light, its radius or the receivers'
+  /// box changed.
   bool Update(const MeshCache& mesh, const VolumeCache& centre, const glm::dmat4& objectToWorld,
-    const glm::dvec4& lightWorld, double radius);
+    const glm::dvec4& lightWorld, double radius, const Box& receivers);
 };
 
 /// Potential-silhouette wedges of one caster for one light, for per-light-sample counting
@@ -171,10 +184,11 @@ struct CountingWedgeCache : WedgeBuffer
   static constexpr int FloatsPerVertex = 21;
   static const std::vector<VertexAttribute>& Attributes();
   /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
-  /// radius or the counting rule changed; returns true when it did. The wedges themselves wait
-  /// for BuildVertices, so that a light that ends up averaging never builds them.
+  /// radius or the counting rule changed, and drops the wedges when the receivers' box did too;
+  /// returns true when it found it again. The wedges themselves wait for BuildVertices, so that
+  /// a light that ends up averaging never builds them.
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
-    double radius, bool frontFacesOnly);
+    double radius, bool frontFacesOnly, const Box& receivers);
   void BuildVertices(const MeshCache& mesh);
 };
 

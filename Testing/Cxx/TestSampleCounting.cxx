@@ -7,9 +7,11 @@
 // A sign mutation of the edge term must make the check fail.
 #include "penumbraCasterTopology.h"
 #include "penumbraCheck.h"
+#include "penumbraConvexClip.h"
 #include "penumbraLightSamples.h"
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
+#include "penumbraWedge.h"
 
 #include "vtkConeSource.h"
 #include "vtkNew.h"
@@ -217,6 +219,158 @@ std::vector<Caster> MakeCasters(std::mt19937& rng)
   return casters;
 }
 
+/// Whether x is inside the closed convex mesh (on the inner side of every triangle's plane).
+bool InsidePolyhedron(const ConvexPolyhedron& shape, const glm::dvec3& x, double tolerance)
+{
+  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
+  {
+    const glm::dvec3& a = shape.Points[shape.Triangles[t]];
+    const glm::dvec3 n = glm::cross(
+      shape.Points[shape.Triangles[t + 1]] - a, shape.Points[shape.Triangles[t + 2]] - a);
+    if (glm::dot(n, x - a) > tolerance * glm::length(n))
+    {
+      return false;
+    }
+  }
+  return !shape.Empty();
+}
+
+double Volume(const ConvexPolyhedron& shape)
+{
+  double volume = 0.0;
+  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
+  {
+    volume +=
+      glm::dot(shape.Points[shape.Triangles[t]],
+        glm::cross(shape.Points[shape.Triangles[t + 1]], shape.Points[shape.Triangles[t + 2]])) /
+      6.0;
+  }
+  return volume;
+}
+
+/**
+ * The region the pass draws for a two-faced potential silhouette edge, its wedge cut to a box
+ * and to SilhouetteSector, must hold every point where the edge changes some sample's count.
+ * Points are thrown along rays from random light points through the edge, where the wedge is.
+ * `flipSector` reverses the sector's half-spaces: the mutation that must be caught. Returns the
+ * points outside that the edge changes; `volumeRatio` the cut region's volume over the wedge's.
+ */
+int CountRegionMisses(const Caster& caster, const glm::dvec4& light, double radius, bool flipSector,
+  std::mt19937& rng, int& changed, double& volumeRatio)
+{
+  const CasterTopology& topo = caster.Topology;
+  std::vector<glm::dvec3> world(topo.Points.size());
+  Box box;
+  box.Valid = true;
+  box.Min = glm::dvec3(1e300);
+  box.Max = glm::dvec3(-1e300);
+  for (std::size_t i = 0; i < world.size(); ++i)
+  {
+    world[i] = glm::dvec3(caster.ObjectToWorld * glm::dvec4(topo.Points[i], 1.0));
+    box.Min = glm::min(box.Min, world[i]);
+    box.Max = glm::max(box.Max, world[i]);
+  }
+  box.Min -= glm::dvec3(2.0);
+  box.Max += glm::dvec3(2.0);
+  const bool mirrored = glm::determinant(glm::dmat3(caster.ObjectToWorld)) < 0.0;
+  const bool frontOnly =
+    ShadowVolume::FrontFacesSuffice(topo, glm::inverse(caster.ObjectToWorld) * light);
+  const std::vector<glm::dvec4> samples =
+    SpreadLightSamples(light, light.w != 0.0 ? radius : glm::degrees(radius), 16, box.Min);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
+  int misses = 0;
+  double cutVolume = 0.0, wedgeVolume = 0.0;
+  for (std::uint32_t e : PotentialSilhouette(topo, caster.ObjectToWorld, light, radius, frontOnly))
+  {
+    const Edge& edge = topo.Edges[e];
+    if (edge.UseCount != 2)
+    {
+      continue;
+    }
+    const glm::dvec3 &a = world[edge.A], &b = world[edge.B];
+    EdgeFace faces[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const EdgeUse& use = topo.Uses[edge.FirstUse + k];
+      const glm::uvec3& tri = topo.Triangles[use.Triangle];
+      const double flip = mirrored ? -1.0 : 1.0;
+      faces[k] = { flip * glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]),
+        static_cast<int>(flip) * use.Sign };
+    }
+    const Wedge wedge = Wedge::Build(a, b, light, radius);
+    if (!wedge.Valid)
+    {
+      continue;
+    }
+    std::vector<HalfSpace> planes = wedge.HalfSpaces();
+    wedgeVolume += Volume(ClipBox(box, planes));
+    for (HalfSpace half : SilhouetteSector(wedge, a, b, faces, 2, frontOnly, 1e-6))
+    {
+      if (flipSector)
+      {
+        half = { -half.Normal, -half.Offset };
+      }
+      planes.push_back(half);
+    }
+    const ConvexPolyhedron region = ClipBox(box, planes);
+    cutVolume += Volume(region);
+    for (int trial = 0; trial < 40; ++trial)
+    {
+      const glm::dvec3 onEdge = a + unit(rng) * (b - a);
+      glm::dvec3 towardsLight;
+      const glm::dvec3 jitter(signedUnit(rng), signedUnit(rng), signedUnit(rng));
+      if (light.w != 0.0)
+      {
+        towardsLight = glm::dvec3(light) + radius * jitter - onEdge;
+      }
+      else
+      {
+        towardsLight = glm::dvec3(light) + std::tan(radius) * jitter;
+      }
+      const glm::dvec3 p = onEdge - (0.02 + 2.0 * unit(rng)) * glm::normalize(towardsLight);
+      const int m = MultiplicityFrom(p, a, faces, 2, frontOnly);
+      bool changes = false;
+      for (const glm::dvec4& s : samples)
+      {
+        changes = changes || (m != 0 && SampleCrossing(p, a, b, light, s) != 0);
+      }
+      changed += changes;
+      misses += changes && !InsidePolyhedron(region, p, 1e-9);
+    }
+  }
+  volumeRatio = wedgeVolume > 0.0 ? cutVolume / wedgeVolume : 1.0;
+  return misses;
+}
+
+void TestWedgeRegions(const std::vector<Caster>& casters,
+  const std::vector<std::pair<glm::dvec4, double>>& lights, std::mt19937& rng)
+{
+  for (const Caster& caster : casters)
+  {
+    for (const auto& light : lights)
+    {
+      int changed = 0;
+      double ratio = 1.0;
+      const int misses =
+        CountRegionMisses(caster, light.first, light.second, false, rng, changed, ratio);
+      std::printf("%-24s light w=%g: %d changing points, %d outside the cut wedge; cut volume "
+                  "%.2f of the wedge's\n",
+        caster.Name.c_str(), light.first.w, changed, misses, ratio);
+      Check(misses == 0, caster.Name + ": the cut wedge holds every point the edge changes");
+    }
+  }
+  int changed = 0;
+  double ratio = 1.0;
+  const int misses =
+    CountRegionMisses(casters[0], { 0.4, 0.3, 3.0, 1.0 }, 0.6, false, rng, changed, ratio);
+  Check(changed > 200 && ratio < 0.7,
+    "on the sphere the sector cuts the wedges (volume " + std::to_string(ratio) + ")");
+  const int flipped =
+    CountRegionMisses(casters[0], { 0.4, 0.3, 3.0, 1.0 }, 0.6, true, rng, changed, ratio);
+  Check(flipped > 0 && misses == 0,
+    "reversed sector half-spaces are detected (" + std::to_string(flipped) + " misses)");
+}
+
 void TestFacingOverLight()
 {
   const glm::dvec4 point(0, 0, 2, 1), direction(0, 0, 1, 0);
@@ -308,6 +462,7 @@ int main()
     }
   }
   Check(totalNonZero > total / 20, "enough occluded samples to test the edge terms");
+  TestWedgeRegions(casters, lights, rng);
   // The mutation: the edge term with the wrong sign must be caught.
   int compared = 0, nonZero = 0;
   const int mutated =

@@ -1,0 +1,212 @@
+#include "penumbraConvexClip.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra
+{
+
+namespace
+{
+using Polygon = std::vector<glm::dvec3>;
+
+/// The six outward, counter-clockwise faces of the box.
+std::vector<Polygon> BoxFaces(const Box& box)
+{
+  auto corner = [&](int i)
+  {
+    return glm::dvec3((i & 1) ? box.Max.x : box.Min.x, (i & 2) ? box.Max.y : box.Min.y,
+      (i & 4) ? box.Max.z : box.Min.z);
+  };
+  static const int faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+  std::vector<Polygon> polygons;
+  for (const auto& face : faces)
+  {
+    polygons.push_back({ corner(face[0]), corner(face[1]), corner(face[2]), corner(face[3]) });
+  }
+  return polygons;
+}
+
+/// The points in the plane's cut, ordered counter-clockwise seen from outside (along +normal).
+Polygon CapPolygon(Polygon points, const glm::dvec3& normal, double tolerance)
+{
+  Polygon unique;
+  for (const glm::dvec3& p : points)
+  {
+    if (std::none_of(unique.begin(), unique.end(),
+          [&](const glm::dvec3& q) { return glm::length(p - q) <= tolerance; }))
+    {
+      unique.push_back(p);
+    }
+  }
+  if (unique.size() < 3)
+  {
+    return {};
+  }
+  glm::dvec3 centre(0.0);
+  for (const glm::dvec3& p : unique)
+  {
+    centre += p;
+  }
+  centre /= static_cast<double>(unique.size());
+  const glm::dvec3 u = glm::normalize(unique[0] - centre);
+  const glm::dvec3 v = glm::cross(normal, u);
+  std::sort(unique.begin(), unique.end(),
+    [&](const glm::dvec3& a, const glm::dvec3& b)
+    {
+      return std::atan2(glm::dot(a - centre, v), glm::dot(a - centre, u)) <
+        std::atan2(glm::dot(b - centre, v), glm::dot(b - centre, u));
+    });
+  return unique;
+}
+
+/// Cuts every polygon by the half-space and closes the cut with a cap; false when nothing is left.
+bool Cut(std::vector<Polygon>& polygons, const HalfSpace& half, double tolerance)
+{
+  std::vector<Polygon> kept;
+  Polygon cut;
+  bool anyOutside = false;
+  for (const Polygon& polygon : polygons)
+  {
+    Polygon inside;
+    bool inPlane = true;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      const glm::dvec3& p = polygon[i];
+      const glm::dvec3& q = polygon[(i + 1) % polygon.size()];
+      const double sp = glm::dot(half.Normal, p) - half.Offset;
+      const double sq = glm::dot(half.Normal, q) - half.Offset;
+      anyOutside = anyOutside || sp > tolerance;
+      inPlane = inPlane && std::abs(sp) <= tolerance;
+      if (sp <= tolerance)
+      {
+        inside.push_back(p);
+        if (sp >= -tolerance)
+        {
+          cut.push_back(p);
+        }
+      }
+      if ((sp < -tolerance && sq > tolerance) || (sp > tolerance && sq < -tolerance))
+      {
+        const glm::dvec3 crossing = p + (q - p) * (sp / (sp - sq));
+        inside.push_back(crossing);
+        cut.push_back(crossing);
+      }
+    }
+    // A face in the plane is the cap's: kept, a ray would cross that face twice.
+    if (inside.size() >= 3 && !inPlane)
+    {
+      kept.push_back(std::move(inside));
+    }
+  }
+  if (!anyOutside)
+  {
+    return true; // the half-space holds all of it
+  }
+  Polygon cap = CapPolygon(std::move(cut), half.Normal, tolerance);
+  if (!cap.empty())
+  {
+    kept.push_back(std::move(cap));
+  }
+  polygons = std::move(kept);
+  return polygons.size() >= 4;
+}
+
+/// Shared points and fan triangles of the polygons, dropping slivers below `tolerance`.
+ConvexPolyhedron Triangulate(const std::vector<Polygon>& polygons, double tolerance)
+{
+  ConvexPolyhedron shape;
+  auto index = [&](const glm::dvec3& p)
+  {
+    for (std::size_t i = 0; i < shape.Points.size(); ++i)
+    {
+      if (glm::length(shape.Points[i] - p) <= tolerance)
+      {
+        return static_cast<std::uint32_t>(i);
+      }
+    }
+    shape.Points.push_back(p);
+    return static_cast<std::uint32_t>(shape.Points.size() - 1);
+  };
+  for (const Polygon& polygon : polygons)
+  {
+    std::vector<std::uint32_t> corners;
+    for (const glm::dvec3& p : polygon)
+    {
+      const std::uint32_t i = index(p);
+      if (corners.empty() || (corners.back() != i && corners.front() != i))
+      {
+        corners.push_back(i);
+      }
+    }
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k)
+    {
+      shape.Triangles.insert(shape.Triangles.end(), { corners[0], corners[k], corners[k + 1] });
+    }
+  }
+  return shape;
+}
+} // namespace
+
+bool Box::Contains(const Box& other) const
+{
+  return this->Valid && other.Valid && glm::all(glm::lessThanEqual(this->Min, other.Min)) &&
+    glm::all(glm::greaterThanEqual(this->Max, other.Max));
+}
+
+void Box::Extend(const glm::dvec3& min, const glm::dvec3& max)
+{
+  this->Min = this->Valid ? glm::min(this->Min, min) : min;
+  this->Max = this->Valid ? glm::max(this->Max, max) : max;
+  this->Valid = true;
+}
+
+Box StableReceiverBox(const Box& kept, const Box& current)
+{
+  const double size = current.Diagonal();
+  if (!current.Valid || !std::isfinite(size))
+  {
+    return {};
+  }
+  // A flat receiver (a ground plane) has a box of no thickness: grow it by its size, not by zero.
+  const glm::dvec3 floor(0.01 * size + 1e-300);
+  Box inner = current;
+  inner.Min -= floor;
+  inner.Max += floor;
+  if (kept.Contains(inner) && kept.Diagonal() <= 2.0 * size)
+  {
+    return kept;
+  }
+  Box grown = current;
+  grown.Min -= glm::dvec3(0.1 * size) + floor;
+  grown.Max += glm::dvec3(0.1 * size) + floor;
+  return grown;
+}
+
+ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)
+{
+  const double size = box.Diagonal();
+  if (!box.Valid || !(size > 0.0) || !std::isfinite(size))
+  {
+    return {};
+  }
+  const double tolerance = 1e-12 * size;
+  std::vector<Polygon> polygons = BoxFaces(box);
+  for (const HalfSpace& half : halfSpaces)
+  {
+    const double length = glm::length(half.Normal);
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(half.Offset))
+    {
+      continue;
+    }
+    const HalfSpace unit{ half.Normal / length, half.Offset / length };
+    if (!Cut(polygons, unit, tolerance))
+    {
+      return {};
+    }
+  }
+  return Triangulate(polygons, tolerance);
+}
+
+} // namespace penumbra

@@ -1,0 +1,69 @@
+/**
+ * @file penumbraConvexClip.h
+ * @brief A box cut by half-spaces, as a closed triangle mesh, without OpenGL.
+ *
+ * Wedges and shadow volumes reach to infinity, but no receiver lies outside the receivers'
+ * bounds: cutting a wedge to that box (Lloyd et al., "CC Shadow Volumes", 2004, clamp volumes to
+ * the receivers' extent the same way) and to the half-spaces where its edge can matter leaves a
+ * bounded convex polyhedron whose faces cover fewer pixels. Drawn like the wedge it replaces
+ * (front faces against the scene depth, or back faces), it still meets every ray into it once.
+ */
+#ifndef penumbraConvexClip_h
+#define penumbraConvexClip_h
+
+#include "vtkPenumbraGeometryModule.h" // for export macro
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace penumbra
+{
+
+/// The points x with dot(Normal, x) <= Offset.
+struct HalfSpace
+{
+  glm::dvec3 Normal{ 0.0 };
+  double Offset = 0.0;
+};
+
+/// A closed convex polyhedron as outward triangles over shared points.
+struct ConvexPolyhedron
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<std::uint32_t> Triangles; ///< three indices into Points per triangle
+  bool Empty() const { return this->Triangles.empty(); }
+};
+
+/// An axis-aligned box; Valid is false for the unbounded case (no box to cut to).
+struct Box
+{
+  bool Valid = false;
+  glm::dvec3 Min{ 0.0 }, Max{ 0.0 };
+
+  bool Contains(const Box& other) const;
+  double Diagonal() const { return this->Valid ? glm::length(this->Max - this->Min) : 0.0; }
+  /// Grows the box to hold [min, max] (the first call sets it).
+  void Extend(const glm::dvec3& min, const glm::dvec3& max);
+};
+
+/**
+ * The box to cut wedges to this frame: `kept` while it holds `current` and is not more than
+ * twice its size, so that receivers moving a little do not rebuild every wedge; else `current`
+ * grown by a tenth of its size on every side. Either way at least 1% larger than `current`, so
+ * that no receiver lies on a face of the box (where a cut face and the receiver would fight in
+ * the depth test). Invalid when `current` is.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT Box StableReceiverBox(const Box& kept, const Box& current);
+
+/**
+ * The box cut by every half-space. Empty when nothing of the box is left (or less than a sliver
+ * of 1e-12 of its size). Half-spaces with a zero or non-finite normal are ignored.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT ConvexPolyhedron ClipBox(
+  const Box& box, const std::vector<HalfSpace>& halfSpaces);
+
+} // namespace penumbra
+
+#endif

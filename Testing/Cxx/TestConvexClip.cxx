@@ -1,0 +1,224 @@
+// Unit tests of penumbra::ClipBox (penumbraConvexClip.h), without a window.
+//
+// Random boxes cut by random half-spaces must give closed, outward, convex meshes whose points
+// satisfy every half-space and whose volume matches a Monte Carlo estimate of the intersection;
+// a half-space that excludes the box must leave nothing, and one that holds it must change
+// nothing.
+#include "penumbraCheck.h"
+#include "penumbraConvexClip.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+
+using namespace penumbra;
+using penumbra_test::Check;
+
+namespace
+{
+
+bool InsideAll(const glm::dvec3& x, const Box& box, const std::vector<HalfSpace>& halfSpaces)
+{
+  if (glm::any(glm::lessThan(x, box.Min)) || glm::any(glm::greaterThan(x, box.Max)))
+  {
+    return false;
+  }
+  for (const HalfSpace& h : halfSpaces)
+  {
+    if (glm::dot(h.Normal, x) > h.Offset)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+double Volume(const ConvexPolyhedron& shape)
+{
+  double volume = 0.0;
+  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
+  {
+    const glm::dvec3 &a = shape.Points[shape.Triangles[t]],
+                     &b = shape.Points[shape.Triangles[t + 1]],
+                     &c = shape.Points[shape.Triangles[t + 2]];
+    volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  return volume;
+}
+
+/// Every directed edge has its reverse exactly once: a closed, consistently wound surface.
+bool Closed(const ConvexPolyhedron& shape)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ shape.Triangles[t + k], shape.Triangles[t + (k + 1) % 3] }];
+    }
+  }
+  for (const auto& entry : directed)
+  {
+    const auto reverse = directed.find({ entry.first.second, entry.first.first });
+    if (entry.second != 1 || reverse == directed.end() || reverse->second != 1)
+    {
+      return false;
+    }
+  }
+  return !directed.empty();
+}
+
+/// No point lies outside the plane of any triangle: convex, with outward triangles.
+bool ConvexOutward(const ConvexPolyhedron& shape, double tolerance)
+{
+  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
+  {
+    const glm::dvec3& a = shape.Points[shape.Triangles[t]];
+    const glm::dvec3 n = glm::cross(
+      shape.Points[shape.Triangles[t + 1]] - a, shape.Points[shape.Triangles[t + 2]] - a);
+    for (const glm::dvec3& p : shape.Points)
+    {
+      if (glm::dot(n, p - a) > tolerance * glm::length(n))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void TestRandomCuts(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int closed = 0, convex = 0, pointsInside = 0, volumesAgree = 0, nonEmpty = 0, empties = 0;
+  const int trials = 300;
+  for (int trial = 0; trial < trials; ++trial)
+  {
+    Box box;
+    box.Valid = true;
+    const glm::dvec3 centre(unit(rng), unit(rng), unit(rng));
+    const glm::dvec3 half(0.2 + std::abs(unit(rng)), 0.2 + std::abs(unit(rng)), 0.05);
+    box.Min = centre - half;
+    box.Max = centre + half;
+    std::vector<HalfSpace> halfSpaces;
+    const int count = 1 + trial % 7;
+    for (int k = 0; k < count; ++k)
+    {
+      const glm::dvec3 normal = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+      const glm::dvec3 through = centre + 0.6 * glm::dvec3(unit(rng), unit(rng), unit(rng)) * half;
+      halfSpaces.push_back({ normal, glm::dot(normal, through) });
+    }
+    const ConvexPolyhedron shape = ClipBox(box, halfSpaces);
+    // Monte Carlo volume of the intersection.
+    const int samples = 20000;
+    int inside = 0;
+    std::uniform_real_distribution<double> zeroOne(0.0, 1.0);
+    for (int s = 0; s < samples; ++s)
+    {
+      const glm::dvec3 x =
+        box.Min + glm::dvec3(zeroOne(rng), zeroOne(rng), zeroOne(rng)) * (box.Max - box.Min);
+      inside += InsideAll(x, box, halfSpaces);
+    }
+    const double boxVolume =
+      (box.Max.x - box.Min.x) * (box.Max.y - box.Min.y) * (box.Max.z - box.Min.z);
+    const double fraction = inside / static_cast<double>(samples);
+    const double estimate = fraction * boxVolume;
+    const double sigma = boxVolume * std::sqrt(std::max(fraction * (1 - fraction), 1e-4) / samples);
+    if (shape.Empty())
+    {
+      ++empties;
+      volumesAgree += estimate <= 4.0 * sigma;
+      continue;
+    }
+    ++nonEmpty;
+    closed += Closed(shape);
+    convex += ConvexOutward(shape, 1e-9);
+    bool allInside = true;
+    for (const glm::dvec3& p : shape.Points)
+    {
+      glm::dvec3 nudged = glm::clamp(p, box.Min, box.Max);
+      allInside = allInside && glm::length(nudged - p) < 1e-9;
+      for (const HalfSpace& h : halfSpaces)
+      {
+        allInside = allInside && glm::dot(h.Normal, p) <= h.Offset + 1e-9;
+      }
+    }
+    pointsInside += allInside;
+    volumesAgree += std::abs(Volume(shape) - estimate) <= 4.0 * sigma;
+  }
+  std::printf("%d cuts: %d non-empty, %d empty\n", trials, nonEmpty, empties);
+  Check(nonEmpty > trials / 3 && empties > 0, "the cuts cover both outcomes");
+  Check(closed == nonEmpty, "every cut is closed and consistently wound");
+  Check(convex == nonEmpty, "every cut is convex with outward triangles");
+  Check(pointsInside == nonEmpty, "every point satisfies the box and every half-space");
+  Check(volumesAgree == trials,
+    "volumes match Monte Carlo within 4 sigma (" + std::to_string(volumesAgree) + " of " +
+      std::to_string(trials) + ")");
+}
+
+void TestSpecialCases()
+{
+  Box box;
+  box.Valid = true;
+  box.Min = glm::dvec3(-1.0);
+  box.Max = glm::dvec3(2.0, 1.0, 1.0);
+  const ConvexPolyhedron whole = ClipBox(box, {});
+  Check(Closed(whole) && std::abs(Volume(whole) - 12.0) < 1e-12, "no half-space: the box");
+  Check(ClipBox(box, { { { 1, 0, 0 }, -1.5 } }).Empty(), "a half-space beside the box: nothing");
+  const ConvexPolyhedron held = ClipBox(box, { { { 1, 0, 0 }, 5.0 } });
+  Check(std::abs(Volume(held) - 12.0) < 1e-12 && held.Points.size() == 8,
+    "a half-space that holds the box changes nothing");
+  const ConvexPolyhedron faceOn = ClipBox(box, { { { 1, 0, 0 }, 2.0 } });
+  Check(Closed(faceOn) && faceOn.Triangles.size() == 36,
+    "a plane on a face of the box leaves one face there, not two");
+  const ConvexPolyhedron halfBox = ClipBox(box, { { { 2, 0, 0 }, 1.0 } });
+  Check(Closed(halfBox) && std::abs(Volume(halfBox) - 6.0) < 1e-12,
+    "an unnormalized normal cuts where its plane is");
+  Check(ClipBox(Box{}, {}).Empty(), "no box: nothing");
+  const ConvexPolyhedron ignored = ClipBox(
+    box, { { { 0, 0, 0 }, 1.0 }, { { std::nan(""), 0, 0 }, 0.0 }, { { 1, 0, 0 }, INFINITY } });
+  Check(std::abs(Volume(ignored) - 12.0) < 1e-12, "zero, NaN and infinite half-spaces are ignored");
+  const ConvexPolyhedron sliver = ClipBox(box, { { { 1, 0, 0 }, -1.0 + 1e-14 } });
+  Check(sliver.Empty(), "a cut thinner than 1e-12 of the box leaves nothing");
+}
+
+void TestStableReceiverBox()
+{
+  Box ground;
+  ground.Extend(glm::dvec3(-5, -5, 0), glm::dvec3(5, 5, 0));
+  const Box first = StableReceiverBox(Box{}, ground);
+  Check(first.Contains(ground) && first.Min.z < -0.1 && first.Max.z > 0.1,
+    "a flat receiver gets a box with thickness around it");
+  Box moved = ground;
+  moved.Min.x += 0.3;
+  moved.Max.x += 0.3;
+  const Box second = StableReceiverBox(first, moved);
+  Check(second.Min == first.Min && second.Max == first.Max,
+    "a receiver moving within the kept box keeps it (no rebuild)");
+  Box far = ground;
+  far.Min.x += 20.0;
+  far.Max.x += 20.0;
+  const Box third = StableReceiverBox(first, far);
+  Check(third.Contains(far) && !(third.Min == first.Min), "one that leaves it gets a new box");
+  Box small;
+  small.Extend(glm::dvec3(-0.1), glm::dvec3(0.1));
+  Check(StableReceiverBox(first, small).Diagonal() < 0.5, "a much smaller scene gets a new box");
+  Check(!StableReceiverBox(first, Box{}).Valid, "no receivers' box: no box to cut to");
+  Box infinite;
+  infinite.Extend(glm::dvec3(-INFINITY), glm::dvec3(1.0));
+  Check(!StableReceiverBox(first, infinite).Valid, "an infinite box: no box to cut to");
+}
+
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(11);
+  TestSpecialCases();
+  TestStableReceiverBox();
+  TestRandomCuts(rng);
+  return penumbra_test::Finish();
+}
