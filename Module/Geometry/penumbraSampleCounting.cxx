@@ -214,19 +214,22 @@ int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b
 
 bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
 {
-  double wedges = 0.0, silhouettes = 0.0;
+  double potential = 0.0, weighted = 0.0, silhouettes = 0.0;
   for (const CountingCost& caster : casters)
   {
-    const double spread = std::pow(std::max(caster.AngularRadius, 0.0) / 0.016, 0.75);
-    wedges += static_cast<double>(caster.PotentialEdges) * (std::isfinite(spread) ? spread : 1e300);
-    silhouettes += static_cast<double>(caster.SilhouetteEdges);
+    const double spread = std::pow(std::max(caster.AngularRadius, 0.0) / 0.016, 0.68);
+    const double weight = std::max(static_cast<double>(caster.SilhouetteEdges), 1.0);
+    potential += static_cast<double>(caster.PotentialEdges);
+    weighted += weight * (std::isfinite(spread) ? spread : 1e300);
+    silhouettes += weight;
   }
-  if (wedges == 0.0)
+  if (potential == 0.0)
   {
     return true; // nothing to draw beyond the centre's volume
   }
-  const double perSample = 9.6 / std::max(samples, 1) + 0.4;
-  return wedges * perSample < std::max(silhouettes, 1.0);
+  const double edges = std::pow(potential / silhouettes, 0.53);
+  const double perSample = std::pow(16.0 / std::max(samples, 1), 0.48);
+  return 0.67 * edges * (weighted / silhouettes) * perSample < 1.0;
 }
 
 } // namespace penumbra

@@ -131,13 +131,18 @@ struct CountingCost
 
 /**
  * Whether counting `samples` light samples (one volume pass and the potential silhouette's
- * wedges) should take less time than averaging as many hard shadows (one volume pass each). Both
- * give the same image, so a wrong guess costs time, never accuracy. The model is fitted to the
- * benchmark on llvmpipe at 1024x768 (Documentation/results.md): a wedge's fill grows with the
- * penumbra, about as the angular radius to the power 0.75, and counting's per-pixel loop with
- * the samples, while averaging's cost is proportional to the samples:
+ * wedges, cut to the receivers and to the edges' silhouette sectors) should take less time than
+ * averaging as many hard shadows (one volume pass each). Both give the same image, so a wrong
+ * guess costs time, never accuracy. Fitted to the benchmark on llvmpipe at 1024x768
+ * (Documentation/results.md, 16 rows: four scenes, two radii, 16 and 64 samples): the ratio
+ * grows with the potential silhouette P against the centre silhouette S, and with the light's
+ * angular radius rho (the penumbra, and how many edges cross the light seen from a pixel), and
+ * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
+ * a wedge reaches):
  *
- *   counting / averaging = sum P (rho / 0.016)^0.75 / sum S  x  (9.6 / N + 0.4).
+ *   counting / averaging = 0.67 (P / S)^0.53 (rho / 0.016)^0.68 (16 / N)^0.48,
+ *
+ * P and S summed over the casters, rho averaged over them weighted by S.
  */
 VTKPENUMBRAGEOMETRY_EXPORT bool CountingIsCheaper(
   const std::vector<CountingCost>& casters, int samples);
