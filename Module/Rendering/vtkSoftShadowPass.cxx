@@ -1,6 +1,6 @@
 #include "vtkSoftShadowPass.h"
 
-#include "vtkSoftShadowPassInternals.h"
+#include "penumbraShadowCaches.h"
 
 #include "penumbraReceiverShader.h"
 #include "penumbraSceneWalk.h"

@@ -1,4 +1,4 @@
-#include "vtkSoftShadowPassInternals.h"
+#include "penumbraShadowCaches.h"
 
 #include "vtkActor.h"
 #include "vtkDataSetSurfaceFilter.h"

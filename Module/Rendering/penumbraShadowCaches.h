@@ -1,13 +1,14 @@
 /**
- * @class   vtkSoftShadowPassInternals
- * @brief   Caches of vtkSoftShadowPass: caster meshes, their shadow volumes per light, GPU buffers.
+ * @file    penumbraShadowCaches.h
+ * @brief   What vtkSoftShadowPass keeps between frames: caster meshes, and per caster and light
+ *          its shadow volumes and wedges, on the CPU and in GPU buffers.
  *
  * Everything here is rebuilt only when its inputs change: a mesh when its data's MTime moves, a
  * volume when the light seen from the caster's object space (or the mesh) changes. A camera
  * orbit therefore costs no CPU geometry work and no upload.
  */
-#ifndef vtkSoftShadowPassInternals_h
-#define vtkSoftShadowPassInternals_h
+#ifndef penumbraShadowCaches_h
+#define penumbraShadowCaches_h
 
 #include "penumbraCasterTopology.h"
 #include "penumbraConvexClip.h"
