@@ -334,8 +334,6 @@ private:
   void RenderDepth(const vtkRenderState* s);
   void UpdateCasters(const vtkRenderState* s);
   void RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
-  void DrawResolve(vtkOpenGLRenderWindow* window, float lightIntensity);
-  bool FindReceiverPlane(vtkRenderer* renderer);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -1,0 +1,284 @@
+#include "penumbraCountingTechnique.h"
+
+#include "penumbraLightSamples.h"
+#include "penumbraSampleCounting.h"
+#include "penumbraShadowVolume.h"
+
+#include "vtkObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include "penumbraCountingResolveFS.h"
+#include "penumbraCountingWedgeFS.h"
+#include "penumbraCountingWedgeVS.h"
+#include "penumbraResolveVS.h"
+
+#include <algorithm>
+
+namespace penumbra
+{
+
+namespace
+{
+/// NDC depth by which soft shadow volumes move a pixel's point towards the eye, so that it lies
+/// on the side of its own surface that it is seen from: four steps of a 24-bit depth buffer.
+/// Much more moves it measurably off the surface where the depth range is wide (a near plane at
+/// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
+constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
+
+/// A shader source with its sample count compiled in (the loops' bounds and the samples' array).
+std::string WithSampleCount(const char* source, std::size_t samples)
+{
+  std::string text = source;
+  vtkShaderProgram::Substitute(text, "//PENUMBRA::SampleCount",
+    "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n", false);
+  return text;
+}
+} // namespace
+
+bool CountingTechnique::Supported(vtkObject* owner)
+{
+  if (this->Support < 0)
+  {
+    this->Support =
+      GLEW_VERSION_4_4 || (GLEW_ARB_shader_image_load_store && GLEW_ARB_clear_texture);
+    if (!this->Support)
+    {
+      vtkWarningWithObjectMacro(owner,
+        "This OpenGL context has no image atomics or texture "
+        "clears (OpenGL 4.4): soft shadows average "
+        "LightSamples hard shadows instead of counting them.");
+    }
+  }
+  return this->Support != 0;
+}
+
+std::vector<glm::dvec4> CountingTechnique::ChooseSamples(
+  vtkObject* owner, const glm::dvec4& light, double radius, int requested, const glm::dvec3& target)
+{
+  if (requested > MaximumSamples && !this->WarnedSamples)
+  {
+    vtkWarningWithObjectMacro(owner,
+      "Soft shadow volumes count at most " << MaximumSamples << " light samples; LightSamples "
+                                           << requested << " is clamped for them.");
+    this->WarnedSamples = true;
+  }
+  return SpreadLightSamples(light, radius, std::min(requested, MaximumSamples), target);
+}
+
+bool CountingTechnique::IsCheaper(
+  const ShadowLight& light, const std::vector<CasterCache*>& casters) const
+{
+  std::vector<CountingCost> costs;
+  for (CasterCache* caster : casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    CountingCost cost;
+    cost.PotentialEdges = caster->CountingWedges[light.Light].Potential.size();
+    for (const SilhouetteEdge& edge : caster->Volumes[light.VolumeKey(0)].Volume.Silhouette)
+    {
+      cost.SilhouetteEdges += edge.Multiplicity;
+    }
+    if (light.World.w != 0.0)
+    {
+      const double distance =
+        glm::length(0.5 * (caster->WorldMin + caster->WorldMax) - glm::dvec3(light.World));
+      cost.AngularRadius = distance > light.SoftRadius ? light.SoftRadius / distance : 1e300;
+    }
+    else
+    {
+      cost.AngularRadius = light.SoftRadius;
+    }
+    costs.push_back(cost);
+  }
+  return CountingIsCheaper(costs, static_cast<int>(light.CountingSamples.size()));
+}
+
+void CountingTechnique::PrepareWedges(
+  const ShadowLight& light, const std::vector<CasterCache*>& casters)
+{
+  for (CasterCache* caster : casters)
+  {
+    if (!caster->Culled.count(light.Light))
+    {
+      caster->CountingWedges[light.Light].BuildVertices(*caster->Mesh);
+    }
+  }
+}
+
+vtkIdType CountingTechnique::UpdateCaster(
+  const ShadowLight& light, CasterCache& caster, const Box& receivers)
+{
+  const bool frontFacesOnly = ShadowVolume::FrontFacesSuffice(
+    caster.Mesh->Topology, glm::inverse(caster.ObjectToWorld) * light.World);
+  return caster.CountingWedges[light.Light].Update(*caster.Mesh, caster.ObjectToWorld, light.World,
+           light.SoftRadius, frontFacesOnly, receivers)
+    ? 1
+    : 0;
+}
+
+void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& light)
+{
+  // Allocated for this viewport and sample count only when a light is counted, so averaging
+  // lights hold none.
+  const int width = frame.Size[0], height = frame.Size[1];
+  const unsigned int words = static_cast<unsigned int>((light.CountingSamples.size() + 3) / 4);
+  if (this->CentreCount->GetContext() != frame.Window)
+  {
+    this->CentreCount->SetContext(frame.Window);
+    this->SampleCounters->SetContext(frame.Window);
+  }
+  if (static_cast<int>(this->CentreCount->GetWidth()) != width ||
+    static_cast<int>(this->CentreCount->GetHeight()) != height ||
+    this->SampleCounters->GetDepth() != words)
+  {
+    for (vtkTextureObject* texture : { this->CentreCount.Get(), this->SampleCounters.Get() })
+    {
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    }
+    this->CentreCount->Allocate2D(width, height, 1, VTK_FLOAT);
+    this->SampleCounters->SetInternalFormat(GL_R32UI);
+    this->SampleCounters->SetFormat(GL_RED_INTEGER);
+    this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
+    this->SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  frame.AttachColour(this->CentreCount, 0);
+  ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+}
+
+void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
+{
+  // A shader that does not build turns counting off: from the next frame on such lights
+  // average the same samples.
+  if (!this->Draw(frame, light))
+  {
+    this->Support = 0;
+  }
+  ++frame.Counts.CountedLights;
+}
+
+bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const std::size_t sampleCount = light.CountingSamples.size();
+  const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
+  const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS, sampleCount);
+  vtkShaderProgram* program = frame.Programs->Ready(window, penumbraCountingWedgeVS,
+    wedgeFS.c_str(), "soft shadow volume wedge", "soft shadows average hard shadows instead");
+  if (!program)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  const GLuint zero = 0;
+  glClearTexImage(this->SampleCounters->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+
+  // Wedge fragments that pass the depth test mark their pixel in the stencil, so that the
+  // resolve reads counters only there; counts go to the image, not to colour.
+  ostate->vtkglStencilMask(0xFF);
+  ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  ostate->vtkglEnable(GL_STENCIL_TEST);
+  ostate->vtkglStencilFunc(GL_ALWAYS, 1, 0xFF);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_CULL_FACE);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
+  glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  frame.DepthCopy->Activate();
+
+  const float viewport[2] = { static_cast<float>(frame.Size[0]),
+    static_cast<float>(frame.Size[1]) };
+  program->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
+  program->SetUniformi("counters", 0);
+  program->SetUniform2f("viewportSize", viewport);
+  program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
+  // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
+  // origin for a positional light, or directions, which no origin moves.
+  std::vector<float> samples;
+  samples.reserve(4 * sampleCount);
+  for (const glm::dvec4& sample : light.CountingSamples)
+  {
+    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
+    samples.insert(samples.end(),
+      { static_cast<float>(position.x), static_cast<float>(position.y),
+        static_cast<float>(position.z), static_cast<float>(sample.w) });
+  }
+  program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
+  for (CasterCache* caster : *frame.Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    CountingWedgeCache& cache = caster->CountingWedges[light.Light];
+    program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
+    frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
+  }
+  ostate->vtkglCullFace(GL_BACK);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  frame.DepthCopy->Deactivate();
+
+  // Resolve into the light's layer at every geometry pixel (the far-plane triangle passes
+  // GL_GREATER exactly there): counters where a wedge reached, the centre's count elsewhere.
+  vtkShaderProgram* resolve = frame.Programs->Ready(window, penumbraResolveVS, resolveFS.c_str(),
+    "soft shadow volume resolve", "soft shadows average hard shadows instead");
+  if (!resolve)
+  {
+    return false;
+  }
+  frame.AttachColour(frame.LightIntensity, light.Layer);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  this->CentreCount->Activate();
+  this->SampleCounters->Activate();
+  resolve->SetUniformi("centreCount", this->CentreCount->GetTextureUnit());
+  resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
+  for (int reached : { 1, 0 })
+  {
+    ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
+    resolve->SetUniformi("useCounters", reached);
+    frame.FullScreen->Draw(resolve, this->ResolveVAO);
+  }
+  this->SampleCounters->Deactivate();
+  this->CentreCount->Deactivate();
+  ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  return true;
+}
+
+std::size_t CountingTechnique::GraphicsMemoryBytes() const
+{
+  if (!this->CentreCount->GetHandle())
+  {
+    return 0;
+  }
+  const std::size_t pixels =
+    static_cast<std::size_t>(this->CentreCount->GetWidth()) * this->CentreCount->GetHeight();
+  return pixels * (1 + this->SampleCounters->GetDepth()) * 4;
+}
+
+void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->CentreCount->ReleaseGraphicsResources(window);
+  this->SampleCounters->ReleaseGraphicsResources(window);
+  this->ResolveVAO.ReleaseGraphicsResources();
+  this->Support = -1;
+}
+
+} // namespace penumbra

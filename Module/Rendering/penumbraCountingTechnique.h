@@ -1,0 +1,65 @@
+/**
+ * @file    penumbraCountingTechnique.h
+ * @brief   Soft shadow volumes (METHOD_SOFT_SHADOW_VOLUMES, and Automatic's choice where it is
+ *          cheaper): the centre's count plus each light sample's changes over the potential
+ *          silhouette's wedges, in 8-bit counters (Documentation/wedges.md).
+ */
+#ifndef penumbraCountingTechnique_h
+#define penumbraCountingTechnique_h
+
+#include "penumbraShadowTechnique.h"
+
+#include "vtkNew.h"
+#include "vtkTextureObject.h" // for vtkNew<vtkTextureObject>
+
+namespace penumbra
+{
+
+class CountingTechnique : public ShadowTechnique
+{
+public:
+  /// The most samples the shaders count (their uniform array).
+  static constexpr int MaximumSamples = 256;
+
+  /// Whether the context has image atomics and texture clears (checked once per window; warns
+  /// once through `owner` when not).
+  bool Supported(vtkObject* owner);
+  /// `requested` samples spread over the light as the averaged method spreads them, clamped to
+  /// MaximumSamples with one warning.
+  std::vector<glm::dvec4> ChooseSamples(vtkObject* owner, const glm::dvec4& light, double radius,
+    int requested, const glm::dvec3& target);
+  /// Whether counting the light's samples should be cheaper than averaging them
+  /// (penumbra::CountingIsCheaper), from its casters' potential silhouettes.
+  bool IsCheaper(const ShadowLight& light, const std::vector<CasterCache*>& casters) const;
+  /// Builds the wedges of the casters that are not culled (after IsCheaper kept counting).
+  void PrepareWedges(const ShadowLight& light, const std::vector<CasterCache*>& casters);
+
+  bool CountsCentreInColour() const override { return true; }
+  /// Finds the caster's potential silhouette again when its mesh, matrix, the light or the
+  /// counting rule changed.
+  vtkIdType UpdateCaster(
+    const ShadowLight& light, CasterCache& caster, const Box& receivers) override;
+  /// The centre's count goes to a texture of its own, for the resolve to read.
+  void BeginVolumes(ShadowFrame& frame, const ShadowLight& light) override;
+  void ResolveSample(ShadowFrame&, const ShadowLight&) override {}
+  /// Counts the samples over the wedges and writes the share of visible ones into the layer.
+  void Finish(ShadowFrame& frame, const ShadowLight& light) override;
+  /// The centre count and counters: 4 + N bytes per pixel.
+  std::size_t GraphicsMemoryBytes() const override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+private:
+  bool Draw(ShadowFrame& frame, const ShadowLight& light);
+
+  /// The centre's count (R32F) and the per-sample counters (R32UI, four 8-bit counts per texel,
+  /// one slice per four samples), allocated only while a light is counted.
+  vtkNew<vtkTextureObject> CentreCount;
+  vtkNew<vtkTextureObject> SampleCounters;
+  FullScreenTriangle::VAO ResolveVAO;
+  int Support = -1;
+  bool WarnedSamples = false;
+};
+
+} // namespace penumbra
+
+#endif

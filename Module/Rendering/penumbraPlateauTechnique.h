@@ -1,0 +1,88 @@
+/**
+ * @file    penumbraPlateauTechnique.h
+ * @brief   Plateaus (METHOD_PLATEAUS): the centre's hard shadow, plus Haines' plateaus rendered
+ *          over one receiver plane into a texture and written into the layer at the pixels on
+ *          that plane (Documentation/plateaus.md).
+ */
+#ifndef penumbraPlateauTechnique_h
+#define penumbraPlateauTechnique_h
+
+#include "penumbraPlateaus.h"
+#include "penumbraShadowTechnique.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h" // for vtkNew
+#include "vtkTextureObject.h"           // for vtkNew
+
+#include <set>
+#include <vector>
+
+class vtkProp;
+class vtkRenderer;
+
+namespace penumbra
+{
+
+/// The pass's plateau settings, as it holds them.
+struct PlateauSettings
+{
+  int Resolution = 1024;
+  bool Sinusoidal = true;
+  bool UseGivenPlane = false; ///< the plane below, not a marked actor's
+  glm::dvec3 Origin{ 0.0 };
+  glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
+};
+
+class PlateauTechnique : public HardShadowTechnique
+{
+public:
+  PlateauSettings Settings;
+
+  /// Finds this frame's receiver plane: the given one, or the first visible actor marked
+  /// vtkSoftShadowPass::SetShadowPlane, fitted once per change of it, its mapper or its data.
+  /// Warns once per actor that cannot serve.
+  bool FindReceiverPlane(vtkRenderer* renderer, vtkObject* owner);
+  /// Warns (once) that plateaus have no receiver plane and the pass draws hard shadows.
+  void WarnNoPlane(vtkObject* owner);
+
+  void Finish(ShadowFrame& frame, const ShadowLight& light) override;
+  /// The plateau texture and triangles.
+  std::size_t GraphicsMemoryBytes() const override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+private:
+  /// Renders the light's plateaus over the receiver plane, then writes them into its LI layer
+  /// at the pixels on the plane; returns the plateau triangles drawn.
+  vtkIdType Draw(ShadowFrame& frame, const ShadowLight& light);
+  /// Draws the current plateau triangles into the plateau texture over [lo, lo + size].
+  bool RenderTexture(ShadowFrame& frame, const glm::dvec2& lo, const glm::dvec2& size);
+
+  bool HavePlane = false;
+  ReceiverPlane Plane;
+  vtkProp* PlaneProp = nullptr; ///< the marked actor, if the plane is one
+  bool Bounded = false;         ///< the plane is an actor: plane coordinates bounds
+  glm::dvec2 Min{ 0.0 }, Max{ 0.0 };
+  double Tolerance = 0.0; ///< distance still counted as on the plane
+  /// The actor whose plane was last fitted, and when: refitted only when it, its mapper or its
+  /// data change.
+  vtkProp* FittedProp = nullptr;
+  vtkMTimeType FittedAt = 0;
+  std::set<vtkProp*> WarnedProps;
+  bool WarnedNoPlane = false;
+  std::vector<PlateauVertex> Triangles;
+  /// What the triangles and the texture were made from (light, plane, casters' silhouettes and
+  /// matrices): while it holds, an orbiting camera redraws neither.
+  std::vector<double> Signature;
+  glm::dvec2 Lo{ 0.0 }, Hi{ 0.0 };
+  bool TextureCurrent = false;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> Depth;
+  vtkNew<vtkOpenGLBufferObject> Vertices;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* VAOProgram = nullptr;
+  FullScreenTriangle::VAO ResolveVAO;
+};
+
+} // namespace penumbra
+
+#endif

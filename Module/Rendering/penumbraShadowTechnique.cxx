@@ -1,0 +1,143 @@
+#include "penumbraShadowTechnique.h"
+
+#include "penumbraCulling.h"
+
+#include "vtkObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "penumbraDepthPointDec.h"
+#include "penumbraResolveFS.h"
+#include "penumbraResolveVS.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace penumbra
+{
+
+bool ShadowLight::CountsCentreInColour() const
+{
+  return this->Technique && this->Technique->CountsCentreInColour();
+}
+
+std::pair<vtkLight*, int> ShadowLight::VolumeKey(std::size_t k) const
+{
+  return { this->Light, this->CountsCentreInColour() ? CentreVolume : static_cast<int>(k) };
+}
+
+vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
+  const char* fragmentShader, const char* name, const char* instead)
+{
+  // The pass's fragment shaders share one reconstruction of a pixel's point from depth.
+  std::string fragment = fragmentShader;
+  vtkShaderProgram::Substitute(fragment, "//PENUMBRA::DepthPoint::Dec", penumbraDepthPointDec);
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragment.c_str(), "");
+  if (!program && this->Failed.insert(name).second)
+  {
+    vtkErrorWithObjectMacro(
+      this->Owner, "Could not compile the " << name << " shader: " << instead << ".");
+  }
+  return program;
+}
+
+void FullScreenTriangle::VAO::ReleaseGraphicsResources()
+{
+  this->Array->ReleaseGraphicsResources();
+  this->Program = nullptr;
+}
+
+void FullScreenTriangle::Draw(vtkShaderProgram* program, VAO& vao)
+{
+  if (this->Buffer->GetHandle() == 0)
+  {
+    const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
+    this->Buffer->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
+    ++this->Generation;
+  }
+  if (vao.Generation != this->Generation)
+  {
+    vao.Program = nullptr; // bound to the buffer before this one
+    vao.Generation = this->Generation;
+  }
+  BindVertexArray(vao.Array, program, vao.Program, this->Buffer, { { "ndCoordIn", 0, 2 } });
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  vao.Array->Release();
+}
+
+void FullScreenTriangle::ReleaseGraphicsResources()
+{
+  this->Buffer->ReleaseGraphicsResources();
+}
+
+void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
+{
+  // VTK 9.1 ignores a new slice of the attached texture: remove, then add.
+  this->Framebuffer->RemoveColorAttachment(0);
+  this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
+  this->Framebuffer->ActivateDrawBuffer(0);
+}
+
+void ShadowFrame::DrawResolve(float lightIntensity)
+{
+  vtkShaderProgram* program = this->Programs->Ready(this->Window, penumbraResolveVS,
+    penumbraResolveFS, "LI resolve", "shadows are not written into the LI buffer");
+  if (!program)
+  {
+    return;
+  }
+  program->SetUniformf("lightIntensity", lightIntensity);
+  this->FullScreen->Draw(program, *this->ResolveVAO);
+}
+
+void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& caster,
+  WedgeBuffer& buffer, const std::vector<VertexAttribute>& attributes, const ShadowLight& light)
+{
+  if (buffer.IndexCount() == 0)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = this->Window->GetState();
+  // A point inside a wedge lies behind its front faces and in front of its back faces. When
+  // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
+  // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
+  // tested against the scene depth skip every point in front of the wedge. Otherwise back
+  // faces, which every ray meeting the wedge crosses once, skip points behind it.
+  const glm::dvec3 grow(light.World.w != 0.0 ? light.SoftRadius : 0.0);
+  const bool frontFaces = light.World.w != 0.0 && buffer.Fallbacks == 0 &&
+    !VolumeMayReachNearPlane(
+      caster.WorldMin - grow, caster.WorldMax + grow, light.World, this->NearCorners);
+  ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
+  ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
+  const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), buffer.Origin));
+  const glm::mat4 fromClip(
+    glm::translate(glm::dmat4(1.0), -buffer.Origin) * glm::inverse(this->WorldToClip));
+  const glm::vec4 lightWedge(buffer.LightInWedgeSpace());
+  program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
+  program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+  program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+  buffer.Bind(program, attributes);
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(buffer.IndexCount()), GL_UNSIGNED_INT, nullptr);
+  buffer.IndexBuffer->Release();
+  buffer.VAO->Release();
+  this->Counts.Wedges += static_cast<vtkIdType>(buffer.Wedges + buffer.Fallbacks);
+  this->Counts.FullViewportWedges += static_cast<vtkIdType>(buffer.FullViewport);
+}
+
+void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  frame.DrawResolve(-1.0f / static_cast<float>(light.Samples.size()));
+}
+
+} // namespace penumbra

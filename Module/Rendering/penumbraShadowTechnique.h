@@ -1,0 +1,184 @@
+/**
+ * @file    penumbraShadowTechnique.h
+ * @brief   How a light's layer of the LI buffer is drawn: one class per shadow method behind one
+ *          small interface, and what they draw with.
+ *
+ * vtkSoftShadowPass chooses a ShadowTechnique per light (vtkSoftShadowPass::ChooseTechnique,
+ * then the cost model for Automatic's soft lights) and runs every light the same way: the
+ * technique brings its per-caster caches up to date (UpdateCaster), the pass draws the shadow
+ * volumes of the light's samples into its layer, the technique writes each sample's count into
+ * the layer (ResolveSample), and finally draws what is its own (Finish): wedges, counting,
+ * plateaus. Everything a technique draws with lives in the ShadowFrame the pass fills.
+ */
+#ifndef penumbraShadowTechnique_h
+#define penumbraShadowTechnique_h
+
+#include "penumbraConvexClip.h"
+#include "penumbraShadowCaches.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkType.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkLight;
+class vtkObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace penumbra
+{
+
+class ShadowTechnique;
+
+/// A light as the pass shadows it this frame.
+struct ShadowLight
+{
+  vtkLight* Light = nullptr;
+  int CollectionIndex = 0; ///< index in the renderer's light collection
+  int ShaderIndex = 0; ///< index among switched-on lights: the N of lightColorN in VTK's shaders
+  int Layer = 0;       ///< layer of the LI buffer
+  glm::dvec4 World{ 0.0 }; ///< (position, 1) or (direction towards the light, 0)
+  float Attenuation = 1.0f;
+  /// How this light's layer is drawn: set by the pass's chooser, and by the cost model for
+  /// Automatic's soft lights.
+  ShadowTechnique* Technique = nullptr;
+  /// Points (or directions) on the light whose hard shadows are averaged (one for hard
+  /// shadows), or the light itself for the other techniques.
+  std::vector<glm::dvec4> Samples;
+  /// The light's radius for wedges, plateaus and counting: world units, or radians for a
+  /// directional light.
+  double SoftRadius = 0.0;
+  glm::dvec3 SampleTarget{ 0.0 };
+  double SampleRadius = 0.0; ///< as SpreadLightSamples takes it: world units, or clamped degrees
+  /// Counting: the samples whose counts the potential silhouette changes.
+  std::vector<glm::dvec4> CountingSamples;
+  /// Automatic picked counting: it may still average the same samples where that is cheaper.
+  bool CountingChosenAutomatically = false;
+
+  /// Wedges and counting count the centre's volumes in colour, not in the stencil.
+  bool CountsCentreInColour() const;
+  /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
+  /// centre silhouette (wedges, counting) and averaged samples never evict each other.
+  std::pair<vtkLight*, int> VolumeKey(std::size_t k) const;
+  static constexpr int CentreVolume = -1;
+};
+
+/// Readies the pass's shader programs. One that does not build is reported once, with what the
+/// pass does instead, and nullptr returned.
+class ShaderPrograms
+{
+public:
+  vtkObject* Owner = nullptr; ///< the pass, for the errors
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
+    const char* fragmentShader, const char* name, const char* instead);
+
+private:
+  std::set<std::string> Failed;
+};
+
+/// A full-screen triangle at the far plane, drawn by the resolve, horizon and plateau passes.
+class FullScreenTriangle
+{
+public:
+  /// One program's vertex array for the triangle; rebound when the triangle was uploaded again.
+  struct VAO
+  {
+    vtkNew<vtkOpenGLVertexArrayObject> Array;
+    vtkShaderProgram* Program = nullptr;
+    std::size_t Generation = 0;
+    void ReleaseGraphicsResources();
+  };
+  void Draw(vtkShaderProgram* program, VAO& vao);
+  void ReleaseGraphicsResources();
+
+private:
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  std::size_t Generation = 1;
+};
+
+/// What the techniques add to the pass's statistics.
+struct TechniqueCounts
+{
+  vtkIdType Wedges = 0;
+  vtkIdType FullViewportWedges = 0;
+  vtkIdType PlateauTriangles = 0;
+  int CountedLights = 0;
+};
+
+/// What a technique draws with this frame. The pass owns all of it.
+struct ShadowFrame
+{
+  vtkObject* Owner = nullptr; ///< the pass, for warnings
+  vtkOpenGLRenderWindow* Window = nullptr;
+  int Size[2] = { 0, 0 };
+  glm::dmat4 WorldToClip{ 1.0 };
+  std::array<glm::dvec3, 4> NearCorners;
+  const std::vector<CasterCache*>* Casters = nullptr;
+  Box Receivers; ///< the receivers' box the wedges are cut to
+  /// The LI framebuffer (bound while a light's layer is drawn), its depth-stencil attachment's
+  /// copy for the shaders to read, and the LI layers.
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkTextureObject* DepthCopy = nullptr;
+  vtkTextureObject* LightIntensity = nullptr;
+  ShaderPrograms* Programs = nullptr;
+  FullScreenTriangle* FullScreen = nullptr;
+  FullScreenTriangle::VAO* ResolveVAO = nullptr;
+  TechniqueCounts Counts;
+
+  /// Makes `texture` (slice `layer` of a 3D texture) the framebuffer's colour attachment 0 and
+  /// its draw buffer; the framebuffer must be bound.
+  void AttachColour(vtkTextureObject* texture, int layer) const;
+  /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
+  /// tests pass for the full-screen triangle at the far plane.
+  void DrawResolve(float lightIntensity);
+  /// Draws one caster's wedge buffer (either kind), if it has any, with the program bound: front
+  /// or back faces as the eye and near plane allow, in wedge coordinates.
+  void DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& caster, WedgeBuffer& buffer,
+    const std::vector<VertexAttribute>& attributes, const ShadowLight& light);
+};
+
+/// How one light's layer is drawn.
+class ShadowTechnique
+{
+public:
+  virtual ~ShadowTechnique() = default;
+  /// Whether the pass counts the centre's volume into the layer in colour (+-1 per crossing)
+  /// instead of each sample's in the stencil.
+  virtual bool CountsCentreInColour() const { return false; }
+  /// Brings this technique's caches of one caster for the light, beyond the samples' volumes,
+  /// up to date; returns the silhouette updates it made.
+  virtual vtkIdType UpdateCaster(const ShadowLight&, CasterCache&, const Box&) { return 0; }
+  /// Prepares the light's targets before its volumes are drawn (its layer bound and cleared).
+  virtual void BeginVolumes(ShadowFrame&, const ShadowLight&) {}
+  /// Writes the volume count just drawn for one sample into the layer.
+  virtual void ResolveSample(ShadowFrame& frame, const ShadowLight& light) = 0;
+  /// Draws the rest of the light's layer after its volumes.
+  virtual void Finish(ShadowFrame&, const ShadowLight&) {}
+  virtual std::size_t GraphicsMemoryBytes() const { return 0; }
+  virtual void ReleaseGraphicsResources(vtkWindow*) {}
+};
+
+/// Hard shadows of each of the light's samples, averaged (one sample: hard shadow volumes).
+class HardShadowTechnique : public ShadowTechnique
+{
+public:
+  /// Every geometry pixel with a non-zero stencil count is in this sample's shadow: 1/N of the
+  /// light goes.
+  void ResolveSample(ShadowFrame& frame, const ShadowLight& light) override;
+};
+
+} // namespace penumbra
+
+#endif

@@ -1,0 +1,100 @@
+#include "penumbraWedgeTechnique.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "penumbraHorizonFS.h"
+#include "penumbraResolveVS.h"
+#include "penumbraWedgeFS.h"
+#include "penumbraWedgeVS.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace penumbra
+{
+
+vtkIdType WedgeTechnique::UpdateCaster(
+  const ShadowLight& light, CasterCache& caster, const Box& receivers)
+{
+  caster.Wedges[light.Light].Update(*caster.Mesh, caster.Volumes[light.VolumeKey(0)],
+    caster.ObjectToWorld, light.World, light.SoftRadius, receivers);
+  return 0; // the centre volume's update is the silhouette update
+}
+
+void WedgeTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight&)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  frame.DrawResolve(1.0f);
+}
+
+void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkShaderProgram* program = frame.Programs->Ready(
+    window, penumbraWedgeVS, penumbraWedgeFS, "penumbra wedge", "penumbra wedges are left out");
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  frame.DepthCopy->Activate();
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_CULL_FACE);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
+
+  program->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
+  const float viewport[2] = { static_cast<float>(frame.Size[0]),
+    static_cast<float>(frame.Size[1]) };
+  program->SetUniform2f("viewportSize", viewport);
+  program->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
+  for (CasterCache* caster : *frame.Casters)
+  {
+    if (caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    frame.DrawWedgeBuffer(
+      program, *caster, caster->Wedges[light.Light], WedgeCache::Attributes(), light);
+  }
+  ostate->vtkglCullFace(GL_BACK);
+  ostate->vtkglDisable(GL_CULL_FACE);
+
+  // Cap by the part of the light above each visible point's own plane (GL_MIN).
+  vtkShaderProgram* horizon = frame.Programs->Ready(window, penumbraResolveVS, penumbraHorizonFS,
+    "horizon cap", "the wedges' horizon cap is left out");
+  if (horizon)
+  {
+    const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
+    const glm::mat4 fromClip(
+      glm::translate(glm::dmat4(1.0), -origin) * glm::inverse(frame.WorldToClip));
+    const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
+    horizon->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
+    horizon->SetUniform2f("viewportSize", viewport);
+    horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
+    horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+    horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglBlendEquation(GL_MIN);
+    frame.FullScreen->Draw(horizon, this->HorizonVAO);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+  }
+  ostate->vtkglDisable(GL_DEPTH_CLAMP);
+  frame.DepthCopy->Deactivate();
+}
+
+void WedgeTechnique::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->HorizonVAO.ReleaseGraphicsResources();
+}
+
+} // namespace penumbra
