@@ -3,7 +3,7 @@
  * @brief   How a light's layer of the LI buffer is drawn: one class per shadow method behind one
  *          small interface, and what they draw with.
  *
- * vtkSoftShadowPass chooses a ShadowTechnique per light (vtkSoftShadowPass::ChooseTechnique,
+ * vtkSoftShadowPass chooses a ShadowTechnique per light (its internals' ChooseTechnique,
  * then the cost model for Automatic's soft lights) and runs every light the same way: the
  * technique brings its per-caster caches up to date (UpdateCaster), the pass draws the shadow
  * volumes of the light's samples into its layer, the technique writes each sample's count into

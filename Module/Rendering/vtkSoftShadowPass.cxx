@@ -10,7 +10,6 @@
 #include "penumbraSceneWalk.h"
 #include "penumbraStageTimes.h"
 
-#include "vtkActor.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -35,10 +34,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkProp.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRendererSettingsPass.h"
 #include "vtkShaderProgram.h"
@@ -47,26 +43,11 @@
 
 #include "penumbraCulling.h"
 #include "penumbraLightSamples.h"
-#include "penumbraMatrices.h"
-#include "penumbraPlateaus.h"
-#include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 
-#include "penumbraCountingResolveFS.h"
-#include "penumbraCountingWedgeFS.h"
-#include "penumbraCountingWedgeVS.h"
-#include "penumbraDepthPointDec.h"
-#include "penumbraHorizonFS.h"
-#include "penumbraPlateauFS.h"
-#include "penumbraPlateauResolveFS.h"
-#include "penumbraPlateauVS.h"
 #include "penumbraReceiverDec.h"
-#include "penumbraResolveFS.h"
-#include "penumbraResolveVS.h"
 #include "penumbraShadowVolumeFS.h"
 #include "penumbraShadowVolumeVS.h"
-#include "penumbraWedgeFS.h"
-#include "penumbraWedgeVS.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -209,7 +190,7 @@ public:
 
   /// Fills the light's samples (the light itself, or LightSamples points on it when the method
   /// averages) and its wedge settings, from the pass's method and the light's radius.
-  void ChooseMethod(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
+  void ChooseTechnique(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
   /// Brings every caster's volumes and the technique's caches for `light` up to date; returns
   /// the silhouette updates it made.
   vtkIdType UpdateLightCasters(const ShadowLight& light);
@@ -541,12 +522,12 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     shadowLight.Layer = static_cast<int>(internals.Lights.size());
     shadowLight.World = world;
     shadowLight.Attenuation = static_cast<float>(light->GetShadowAttenuation());
-    internals.ChooseMethod(this, renderer, shadowLight);
+    internals.ChooseTechnique(this, renderer, shadowLight);
     internals.Lights.push_back(shadowLight);
   }
 }
 
-void vtkSoftShadowPass::vtkInternals::ChooseMethod(
+void vtkSoftShadowPass::vtkInternals::ChooseTechnique(
   vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& shadowLight)
 {
   vtkLight* light = shadowLight.Light;
