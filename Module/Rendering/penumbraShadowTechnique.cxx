@@ -1,9 +1,9 @@
 #include "penumbraShadowTechnique.h"
 
 #include "penumbraCulling.h"
+#include "penumbraLightIntensityBuffer.h"
 
 #include "vtkObject.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -78,10 +78,7 @@ void FullScreenTriangle::ReleaseGraphicsResources()
 
 void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
 {
-  // VTK 9.1 ignores a new slice of the attached texture: remove, then add.
-  this->Framebuffer->RemoveColorAttachment(0);
-  this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
-  this->Framebuffer->ActivateDrawBuffer(0);
+  this->Buffer->AttachColour(texture, layer);
 }
 
 void ShadowFrame::DrawResolve(float lightIntensity)

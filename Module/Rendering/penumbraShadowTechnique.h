@@ -31,7 +31,6 @@
 
 class vtkLight;
 class vtkObject;
-class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -40,6 +39,7 @@ class vtkWindow;
 namespace penumbra
 {
 
+class LightIntensityBuffer;
 class ShadowTechnique;
 
 /// A light as the pass shadows it this frame.
@@ -127,9 +127,9 @@ struct ShadowFrame
   std::array<glm::dvec3, 4> NearCorners;
   const std::vector<CasterCache*>* Casters = nullptr;
   Box Receivers; ///< the receivers' box the wedges are cut to
-  /// The LI framebuffer (bound while a light's layer is drawn), its depth-stencil attachment's
-  /// copy for the shaders to read, and the LI layers.
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  /// The LI buffer (its framebuffer bound while a light's layer is drawn), its depth copy for
+  /// the shaders to read, and its layers.
+  LightIntensityBuffer* Buffer = nullptr;
   vtkTextureObject* DepthCopy = nullptr;
   vtkTextureObject* LightIntensity = nullptr;
   ShaderPrograms* Programs = nullptr;
@@ -137,8 +137,8 @@ struct ShadowFrame
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
   TechniqueCounts Counts;
 
-  /// Makes `texture` (slice `layer` of a 3D texture) the framebuffer's colour attachment 0 and
-  /// its draw buffer; the framebuffer must be bound.
+  /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
+  /// and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.

@@ -1,6 +1,7 @@
 #include "vtkSoftShadowPass.h"
 
 #include "penumbraCountingTechnique.h"
+#include "penumbraLightIntensityBuffer.h"
 #include "penumbraPlateauTechnique.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
@@ -126,32 +127,20 @@ public:
   vtkTimeStamp ShaderStageTime;
   bool ApplyShadows = false;
 
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkNew<vtkTextureObject> DepthStencil;
-  /// The scene depth again, for the wedge shaders to read while DepthStencil is the attachment
-  /// their depth test uses.
-  vtkNew<vtkTextureObject> DepthCopy;
-  vtkNew<vtkOpenGLFramebufferObject> DepthCopyFramebuffer;
-  void CopyDepth(vtkOpenGLState* ostate);
+  penumbra::LightIntensityBuffer LI;
   /// Bytes of GPU memory held: framebuffer textures (4 bytes per texel each), the techniques'
   /// own and cached buffers.
   std::size_t GraphicsMemoryBytes()
   {
-    const std::size_t pixels = static_cast<std::size_t>(this->Size[0]) * this->Size[1];
-    const std::size_t texturePixels = this->DepthStencil->GetHandle() ? pixels * 2 : 0;
-    std::size_t bytes =
-      (texturePixels + pixels * this->Layers) * 4 + this->Caches.GraphicsBufferBytes();
+    std::size_t bytes = this->LI.GraphicsMemoryBytes() + this->Caches.GraphicsBufferBytes();
     for (const penumbra::ShadowTechnique* technique : this->Techniques())
     {
       bytes += technique->GraphicsMemoryBytes();
     }
     return bytes;
   }
-  vtkNew<vtkTextureObject> LightIntensity;
-
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
-  int Layers = 0;
 
   penumbra::FullScreenTriangle FullScreen;
   penumbra::FullScreenTriangle::VAO ResolveVAO;
@@ -422,9 +411,9 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->PrepareFramebuffer(window);
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-    internals.LightIntensity->Activate();
+    internals.LI.GetLayers()->Activate();
     this->RenderDepth(s);
-    internals.LightIntensity->Deactivate();
+    internals.LI.GetLayers()->Deactivate();
   }
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
@@ -436,10 +425,10 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
         [&](const vtkInternals::ShadowLight& light) { return light.Technique != &internals.Hard; }))
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-    internals.CopyDepth(window->GetState());
+    internals.LI.CopyDepth(window->GetState());
   }
   this->RenderLightIntensity(renderer, window);
-  internals.LightIntensity->Activate();
+  internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
   this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
 
@@ -450,7 +439,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.StageTimes.EndFrame();
 
   internals.ApplyShadows = false;
-  internals.LightIntensity->Deactivate();
+  internals.LI.GetLayers()->Deactivate();
   this->RemoveReceiverKeys();
   internals.Caches.PurgeUnused();
   this->GraphicsMemoryBytes = static_cast<vtkIdType>(internals.GraphicsMemoryBytes());
@@ -648,44 +637,9 @@ void vtkSoftShadowPass::RemoveReceiverKeys()
 void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& internals = *this->Internals;
-  const int width = internals.Size[0], height = internals.Size[1];
-  const int layers = static_cast<int>(internals.Lights.size());
-
-  if (!internals.Framebuffer->GetFBOIndex())
-  {
-    internals.Framebuffer->SetContext(window);
-    internals.DepthStencil->SetContext(window);
-    internals.LightIntensity->SetContext(window);
-    internals.DepthCopy->SetContext(window);
-    internals.DepthCopyFramebuffer->SetContext(window);
-  }
-  if (static_cast<int>(internals.DepthStencil->GetWidth()) != width ||
-    static_cast<int>(internals.DepthStencil->GetHeight()) != height)
-  {
-    internals.DepthStencil->AllocateDepthStencil(width, height);
-    internals.DepthCopy->AllocateDepthStencil(width, height);
-  }
-  if (static_cast<int>(internals.LightIntensity->GetWidth()) != width ||
-    static_cast<int>(internals.LightIntensity->GetHeight()) != height || internals.Layers != layers)
-  {
-    internals.LightIntensity->SetMinificationFilter(vtkTextureObject::Nearest);
-    internals.LightIntensity->SetMagnificationFilter(vtkTextureObject::Nearest);
-    internals.LightIntensity->Allocate3D(width, height, layers, 1, VTK_FLOAT);
-    internals.Layers = layers;
-  }
+  internals.LI.Prepare(
+    window, internals.Size[0], internals.Size[1], static_cast<int>(internals.Lights.size()));
   internals.VisibilityImages.clear();
-}
-
-void vtkSoftShadowPass::BindFramebuffer(int layer)
-{
-  vtkInternals& internals = *this->Internals;
-  vtkOpenGLFramebufferObject* fbo = internals.Framebuffer;
-  fbo->Bind();
-  // VTK 9.1 attaches depth without stencil and ignores a new slice of the same texture: attach
-  // the depth-stencil texture ourselves and re-add the LI layer.
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-    internals.DepthStencil->GetHandle(), 0);
-  internals.MakeFrame().AttachColour(internals.LightIntensity, layer);
 }
 
 void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
@@ -693,7 +647,7 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = internals.Window->GetState();
   ostate->PushFramebufferBindings();
-  this->BindFramebuffer(0);
+  internals.LI.BindLayer(0);
   // No colour output at all: the LI texture is bound for sampling while this pass draws.
   ostate->vtkglDrawBuffer(GL_NONE);
 
@@ -711,7 +665,7 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
 
   vtkRenderState depthState(s->GetRenderer());
   depthState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
-  depthState.SetFrameBuffer(internals.Framebuffer);
+  depthState.SetFrameBuffer(internals.LI.GetFramebuffer());
   internals.DepthPass->Render(&depthState);
 
   ostate->PopFramebufferBindings();
@@ -859,7 +813,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
     // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
     // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
-    this->BindFramebuffer(light.Layer);
+    internals.LI.BindLayer(light.Layer);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     // Wedges and soft shadow volumes count the centre's volumes in colour (additive float).
@@ -985,18 +939,6 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 }
 } // namespace
 
-void vtkSoftShadowPass::vtkInternals::CopyDepth(vtkOpenGLState* ostate)
-{
-  ostate->PushFramebufferBindings();
-  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
-  this->DepthCopyFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-    this->DepthCopy->GetHandle(), 0);
-  ostate->vtkglBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0],
-    this->Size[1], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  ostate->PopFramebufferBindings();
-}
-
 penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
 {
   penumbra::ShadowFrame frame;
@@ -1008,9 +950,9 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
   frame.Receivers = this->ReceiverBox;
-  frame.Framebuffer = this->Framebuffer;
-  frame.DepthCopy = this->DepthCopy;
-  frame.LightIntensity = this->LightIntensity;
+  frame.Buffer = &this->LI;
+  frame.DepthCopy = this->LI.GetDepthCopy();
+  frame.LightIntensity = this->LI.GetLayers();
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;
@@ -1023,7 +965,7 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
   vtkInternals& internals = *this->Internals;
   const vtkInternals::ShadowLight* light = internals.FindLight(lightIndex);
   vtkOpenGLRenderWindow* window = internals.Window;
-  if (!light || !window || internals.Layers == 0)
+  if (!light || !window || internals.LI.GetLayerCount() == 0)
   {
     return nullptr;
   }
@@ -1037,7 +979,7 @@ vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
     return image;
   }
   window->MakeCurrent();
-  vtkPixelBufferObject* download = internals.LightIntensity->Download();
+  vtkPixelBufferObject* download = internals.LI.GetLayers()->Download();
   if (!download)
   {
     vtkErrorMacro("Could not read the light-intensity buffer back.");
@@ -1140,7 +1082,7 @@ bool vtkSoftShadowPass::SetShaderParameters(
   const bool apply = internals.ApplyShadows && GetReceivesShadows(prop) &&
     !prop->IsRenderingTranslucentPolygonalGeometry();
   program->SetUniformi("penumbraApply", apply ? 1 : 0);
-  program->SetUniformi("penumbraLI", internals.LightIntensity->GetTextureUnit());
+  program->SetUniformi("penumbraLI", internals.LI.GetLayers()->GetTextureUnit());
   // The LI buffer covers the viewport. A pass drawing into a framebuffer of its own (SSAO, depth
   // peeling, tone mapping) puts the viewport at that framebuffer's origin, not the window's:
   // take the origin of the viewport being drawn.
@@ -1198,19 +1140,14 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkInternals& internals = *this->Internals;
   internals.StageTimes.ReleaseGraphicsResources();
   internals.Caches.ReleaseGraphicsResources();
-  internals.Framebuffer->ReleaseGraphicsResources(w);
-  internals.DepthStencil->ReleaseGraphicsResources(w);
-  internals.DepthCopy->ReleaseGraphicsResources(w);
-  internals.DepthCopyFramebuffer->ReleaseGraphicsResources(w);
+  internals.LI.ReleaseGraphicsResources(w);
   for (penumbra::ShadowTechnique* technique : internals.Techniques())
   {
     technique->ReleaseGraphicsResources(w);
   }
-  internals.LightIntensity->ReleaseGraphicsResources(w);
   internals.FullScreen.ReleaseGraphicsResources();
   internals.ResolveVAO.ReleaseGraphicsResources();
   internals.DepthPass->ReleaseGraphicsResources(w);
-  internals.Layers = 0;
   internals.VisibilityImages.clear();
   if (this->DelegatePass)
   {

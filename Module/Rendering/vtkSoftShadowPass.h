@@ -330,7 +330,6 @@ private:
   void AddReceiverKeys(const vtkRenderState* s);
   void RemoveReceiverKeys();
   void PrepareFramebuffer(vtkOpenGLRenderWindow* window);
-  void BindFramebuffer(int layer);
   void RenderDepth(const vtkRenderState* s);
   void UpdateCasters(const vtkRenderState* s);
   void RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);

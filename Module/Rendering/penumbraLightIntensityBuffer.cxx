@@ -1,0 +1,84 @@
+#include "penumbraLightIntensityBuffer.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtk_glew.h"
+
+namespace penumbra
+{
+
+void LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers)
+{
+  if (!this->Framebuffer->GetFBOIndex())
+  {
+    this->Framebuffer->SetContext(window);
+    this->DepthStencil->SetContext(window);
+    this->Layers->SetContext(window);
+    this->DepthCopy->SetContext(window);
+    this->DepthCopyFramebuffer->SetContext(window);
+  }
+  if (width != this->Width || height != this->Height)
+  {
+    this->DepthStencil->AllocateDepthStencil(width, height);
+    this->DepthCopy->AllocateDepthStencil(width, height);
+  }
+  if (width != this->Width || height != this->Height || layers != this->LayerCount)
+  {
+    this->Layers->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Layers->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Layers->Allocate3D(width, height, layers, 1, VTK_FLOAT);
+  }
+  this->Width = width;
+  this->Height = height;
+  this->LayerCount = layers;
+}
+
+void LightIntensityBuffer::BindLayer(int layer)
+{
+  this->Framebuffer->Bind();
+  glFramebufferTexture2D(
+    GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, this->DepthStencil->GetHandle(), 0);
+  this->AttachColour(this->Layers, layer);
+}
+
+void LightIntensityBuffer::AttachColour(vtkTextureObject* texture, int layer)
+{
+  // VTK 9.1 ignores a new slice of the attached texture: remove, then add.
+  this->Framebuffer->RemoveColorAttachment(0);
+  this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
+  this->Framebuffer->ActivateDrawBuffer(0);
+}
+
+void LightIntensityBuffer::CopyDepth(vtkOpenGLState* ostate)
+{
+  ostate->PushFramebufferBindings();
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->DepthCopyFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+    this->DepthCopy->GetHandle(), 0);
+  ostate->vtkglBlitFramebuffer(0, 0, this->Width, this->Height, 0, 0, this->Width, this->Height,
+    GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  ostate->PopFramebufferBindings();
+}
+
+std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
+{
+  if (!this->DepthStencil->GetHandle())
+  {
+    return 0;
+  }
+  const std::size_t pixels = static_cast<std::size_t>(this->Width) * this->Height;
+  return pixels * (2 + this->LayerCount) * 4;
+}
+
+void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Framebuffer->ReleaseGraphicsResources(window);
+  this->DepthStencil->ReleaseGraphicsResources(window);
+  this->DepthCopy->ReleaseGraphicsResources(window);
+  this->DepthCopyFramebuffer->ReleaseGraphicsResources(window);
+  this->Layers->ReleaseGraphicsResources(window);
+  this->Width = this->Height = this->LayerCount = 0;
+}
+
+} // namespace penumbra

@@ -1,0 +1,61 @@
+/**
+ * @file    penumbraLightIntensityBuffer.h
+ * @brief   The light-intensity (LI) buffer: one R32F layer per shadowing light, the framebuffer
+ *          they are drawn through with its depth-stencil attachment, and a copy of that depth
+ *          for the shaders that read the scene's depth while testing against it.
+ *
+ * VTK 9.1's window has no stencil, and vtkOpenGLFramebufferObject attaches depth without
+ * stencil and ignores a new slice of an attached texture: this class attaches both itself.
+ */
+#ifndef penumbraLightIntensityBuffer_h
+#define penumbraLightIntensityBuffer_h
+
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h" // for vtkNew
+#include "vtkTextureObject.h"           // for vtkNew
+
+#include <cstddef>
+
+class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
+class vtkWindow;
+
+namespace penumbra
+{
+
+class LightIntensityBuffer
+{
+public:
+  /// Sizes the buffer for a viewport of width x height and `layers` lights, reallocating only
+  /// what changed.
+  void Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers);
+  /// Binds the framebuffer with the depth-stencil attachment and `layer` as colour.
+  void BindLayer(int layer);
+  /// Makes `texture` (slice `layer` of a 3D texture) colour attachment 0 and the draw buffer;
+  /// the framebuffer must be bound.
+  void AttachColour(vtkTextureObject* texture, int layer);
+  /// Copies the depth attachment into DepthCopy.
+  void CopyDepth(vtkOpenGLState* ostate);
+
+  vtkOpenGLFramebufferObject* GetFramebuffer() { return this->Framebuffer; }
+  /// The LI layers (a 3D texture, one slice per light), for the receivers to sample.
+  vtkTextureObject* GetLayers() { return this->Layers; }
+  vtkTextureObject* GetDepthCopy() { return this->DepthCopy; }
+  int GetLayerCount() const { return this->LayerCount; }
+
+  /// Bytes held: 4 per texel of the depth-stencil, its copy and every layer.
+  std::size_t GraphicsMemoryBytes() const;
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> DepthStencil;
+  vtkNew<vtkTextureObject> DepthCopy;
+  vtkNew<vtkOpenGLFramebufferObject> DepthCopyFramebuffer;
+  vtkNew<vtkTextureObject> Layers;
+  int Width = 0, Height = 0, LayerCount = 0;
+};
+
+} // namespace penumbra
+
+#endif
