@@ -174,7 +174,7 @@ void VolumeCache::Upload()
 namespace
 {
 /// How far the silhouette sector's planes are pushed out, as a share of the receivers' box.
-constexpr double SectorMargin = 2e-3;
+constexpr double SectorMargin = 2e-4;
 
 /// What bounds one edge's wedge fragments (see AppendWedge).
 enum class WedgeShape
