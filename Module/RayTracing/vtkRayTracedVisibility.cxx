@@ -190,6 +190,15 @@ glm::dvec3 Project(const double m[16], const glm::dvec3& p)
   return glm::dvec3(h) / h.w;
 }
 
+/// World to NDC exactly as the rasterizer sees it, and back, for a viewport of Width x Height.
+struct PixelCamera
+{
+  double ToNDC[16];
+  double FromNDC[16];
+  int Width = 0;
+  int Height = 0;
+};
+
 } // namespace
 
 class vtkRayTracedVisibility::vtkInternals
@@ -250,6 +259,16 @@ public:
     rtcAttachGeometryByID(scene, geometry, id);
     rtcReleaseGeometry(geometry);
   }
+
+  /// Update's stages, in order: the scene's meshes, Embree's scenes of them (moved next to the
+  /// origin), the lights with their images, then every pixel.
+  void CollectMeshes(vtkRenderer* renderer);
+  bool BuildScenes(vtkObject* owner, vtkIdType& triangles, vtkIdType& casterTriangles);
+  std::vector<ShadowLight> CollectLights(
+    vtkRenderer* renderer, int width, int height, vtkObject* owner);
+  /// The primary hit of pixel (i, j), its depth, and every light's visibility from it.
+  void TracePixel(const PixelCamera& camera, int i, int j, const std::vector<ShadowLight>& lights,
+    int samples, unsigned int seed, float* depth) const;
 
   /// Fraction of `light` seen from surface point p (relative to Origin) with unit normal n
   /// facing the viewer.
@@ -697,6 +716,203 @@ void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
 
 } // namespace
 
+void vtkRayTracedVisibility::vtkInternals::CollectMeshes(vtkRenderer* renderer)
+{
+  // Every visible opaque surface, in world space, found through VTK's own filters
+  // (CollectProp), not through the pass's walk of the scene.
+  this->Meshes.clear();
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator propIt;
+  vtkProp* prop;
+  for (props->InitTraversal(propIt); (prop = props->GetNextProp(propIt));)
+  {
+    if (prop->GetVisibility())
+    {
+      CollectProp(prop, this->Meshes);
+    }
+  }
+}
+
+bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
+  vtkObject* owner, vtkIdType& triangles, vtkIdType& casterTriangles)
+{
+  // Embree traces in float: everything is moved next to the origin in double first.
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const Mesh& mesh : this->Meshes)
+  {
+    for (const glm::dvec3& p : mesh.Points)
+    {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+  this->Origin = this->Meshes.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
+  const double diagonal = this->Meshes.empty() ? 1.0 : glm::length(hi - lo);
+  // Far above float rounding of coordinates near the origin (~6e-8 of the extent).
+  this->Epsilon = 1e-5 * (diagonal > 0.0 ? diagonal : 1.0);
+
+  this->ReleaseScenes();
+  this->Primary = rtcNewScene(this->Device);
+  this->Shadow = rtcNewScene(this->Device);
+  // Robust mode: rays through shared edges and vertices do not slip between triangles.
+  rtcSetSceneFlags(this->Primary, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(this->Shadow, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(this->Primary, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneBuildQuality(this->Shadow, RTC_BUILD_QUALITY_HIGH);
+  for (std::size_t i = 0; i < this->Meshes.size(); ++i)
+  {
+    Mesh& mesh = this->Meshes[i];
+    for (glm::dvec3& p : mesh.Points)
+    {
+      p -= this->Origin;
+    }
+    const unsigned int id = static_cast<unsigned int>(i);
+    this->AddGeometry(this->Primary, id, mesh);
+    triangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    if (mesh.Casts)
+    {
+      this->AddGeometry(this->Shadow, id, mesh);
+      casterTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    }
+  }
+  rtcCommitScene(this->Primary);
+  rtcCommitScene(this->Shadow);
+  const RTCError error = rtcGetDeviceError(this->Device);
+  if (error != RTC_ERROR_NONE)
+  {
+    vtkErrorWithObjectMacro(owner, "Embree failed to build the scene (error " << error << ").");
+    this->ReleaseScenes();
+    return false;
+  }
+  return true;
+}
+
+std::vector<ShadowLight> vtkRayTracedVisibility::vtkInternals::CollectLights(
+  vtkRenderer* renderer, int width, int height, vtkObject* owner)
+{
+  // In collection order; those that cast no shadow get no image.
+  std::vector<ShadowLight> lights;
+  vtkLightCollection* lightCollection = renderer->GetLights();
+  vtkCollectionSimpleIterator lightIt;
+  lightCollection->InitTraversal(lightIt);
+  int lightIndex = 0;
+  for (vtkLight* light = lightCollection->GetNextLight(lightIt); light;
+       light = lightCollection->GetNextLight(lightIt), ++lightIndex)
+  {
+    this->Visibility.emplace_back();
+    if (!vtkSoftShadowPass::LightCastsShadows(light))
+    {
+      continue;
+    }
+    ShadowLight shadowLight;
+    shadowLight.Index = lightIndex;
+    shadowLight.Positional = light->GetPositional() != 0;
+    glm::dvec3 position, focal;
+    light->GetTransformedPosition(&position.x);
+    light->GetTransformedFocalPoint(&focal.x);
+    const double radius = std::max(0.0, vtkSoftShadowPass::GetLightRadius(light));
+    if (shadowLight.Positional)
+    {
+      shadowLight.Position = position - this->Origin;
+      shadowLight.Radius = radius;
+    }
+    else
+    {
+      const glm::dvec3 toward = position - focal;
+      if (!(glm::length(toward) > 0.0))
+      {
+        vtkWarningWithObjectMacro(owner,
+          "Directional light " << lightIndex << " has no direction (position = focal point).");
+        continue;
+      }
+      shadowLight.Toward = glm::normalize(toward);
+      Frame(shadowLight.Toward, shadowLight.T, shadowLight.B);
+      const double halfAngle = std::min(radius, 90.0) * 3.14159265358979323846 / 180.0;
+      const double s = std::sin(0.5 * halfAngle);
+      shadowLight.OneMinusCosMax = 2.0 * s * s;
+    }
+    this->Visibility.back() = NewImage(width, height, "Visibility", 1.0f);
+    shadowLight.Values = static_cast<float*>(this->Visibility.back()->GetScalarPointer());
+    lights.push_back(shadowLight);
+  }
+  return lights;
+}
+
+void vtkRayTracedVisibility::vtkInternals::TracePixel(const PixelCamera& camera, int i, int j,
+  const std::vector<ShadowLight>& lights, int samples, unsigned int seed, float* depth) const
+{
+  const std::size_t pixel = static_cast<std::size_t>(j) * camera.Width + i;
+  const double x = (i + 0.5) / camera.Width * 2.0 - 1.0;
+  const double y = (j + 0.5) / camera.Height * 2.0 - 1.0;
+  const glm::dvec3 nearPoint = Project(camera.FromNDC, glm::dvec3(x, y, -1.0));
+  const glm::dvec3 farPoint = Project(camera.FromNDC, glm::dvec3(x, y, 1.0));
+  const glm::dvec3 origin = nearPoint - this->Origin;
+  const double length = glm::length(farPoint - nearPoint);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return;
+  }
+  const glm::dvec3 direction = (farPoint - nearPoint) / length;
+
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray.org_x = static_cast<float>(origin.x);
+  rayHit.ray.org_y = static_cast<float>(origin.y);
+  rayHit.ray.org_z = static_cast<float>(origin.z);
+  rayHit.ray.dir_x = static_cast<float>(direction.x);
+  rayHit.ray.dir_y = static_cast<float>(direction.y);
+  rayHit.ray.dir_z = static_cast<float>(direction.z);
+  rayHit.ray.tnear = 0.0f;
+  rayHit.ray.tfar = static_cast<float>(length);
+  rayHit.ray.time = 0.0f;
+  rayHit.ray.mask = ~0u;
+  rayHit.ray.id = 0;
+  rayHit.ray.flags = 0;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(this->Primary, &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return; // background: depth 1, visibility 1
+  }
+
+  // Redo the hit in double against the triangle's plane: a better point to shadow from.
+  const Mesh& mesh = this->Meshes[rayHit.hit.geomID];
+  const glm::uvec3& triangle = mesh.Triangles[rayHit.hit.primID];
+  const glm::dvec3& a = mesh.Points[triangle.x];
+  glm::dvec3 normal = glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a);
+  const double normalLength = glm::length(normal);
+  if (normalLength > 0.0)
+  {
+    normal /= normalLength;
+  }
+  else
+  {
+    // Flattened by the actor's matrix: Embree's float normal is all there is.
+    normal = glm::normalize(glm::dvec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
+  }
+  const double cosine = glm::dot(direction, normal);
+  double t = rayHit.ray.tfar;
+  if (std::abs(cosine) > 1e-6)
+  {
+    t = glm::dot(a - origin, normal) / cosine;
+  }
+  const glm::dvec3 hit = origin + t * direction;
+  if (cosine > 0.0)
+  {
+    normal = -normal; // face the viewer
+  }
+
+  const glm::dvec3 ndc = Project(camera.ToNDC, hit + this->Origin);
+  depth[pixel] = static_cast<float>(std::min(1.0, std::max(0.0, 0.5 * (ndc.z + 1.0))));
+  for (const ShadowLight& light : lights)
+  {
+    Random random(StreamSeed(seed, pixel, light.Index));
+    light.Values[pixel] = static_cast<float>(this->Trace(hit, normal, light, samples, random));
+  }
+}
+
 bool vtkRayTracedVisibility::Update()
 {
   vtkInternals& internals = *this->Internals;
@@ -738,202 +954,30 @@ bool vtkRayTracedVisibility::Update()
 
   double progress = 0.0;
   this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
-
-  // Geometry: every visible opaque surface, in world space, found through VTK's own filters
-  // (CollectProp), not through the pass's walk of the scene.
-  internals.Meshes.clear();
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator propIt;
-  vtkProp* prop;
-  for (props->InitTraversal(propIt); (prop = props->GetNextProp(propIt));)
+  internals.CollectMeshes(renderer);
+  if (!internals.BuildScenes(this, this->NumberOfTriangles, this->NumberOfCasterTriangles))
   {
-    if (prop->GetVisibility())
-    {
-      CollectProp(prop, internals.Meshes);
-    }
-  }
-
-  // Embree traces in float: everything is moved next to the origin in double first.
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const Mesh& mesh : internals.Meshes)
-  {
-    for (const glm::dvec3& p : mesh.Points)
-    {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  }
-  internals.Origin = internals.Meshes.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
-  const double diagonal = internals.Meshes.empty() ? 1.0 : glm::length(hi - lo);
-  // Far above float rounding of coordinates near the origin (~6e-8 of the extent).
-  internals.Epsilon = 1e-5 * (diagonal > 0.0 ? diagonal : 1.0);
-
-  internals.ReleaseScenes();
-  internals.Primary = rtcNewScene(internals.Device);
-  internals.Shadow = rtcNewScene(internals.Device);
-  // Robust mode: rays through shared edges and vertices do not slip between triangles.
-  rtcSetSceneFlags(internals.Primary, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneFlags(internals.Shadow, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(internals.Primary, RTC_BUILD_QUALITY_HIGH);
-  rtcSetSceneBuildQuality(internals.Shadow, RTC_BUILD_QUALITY_HIGH);
-  for (std::size_t i = 0; i < internals.Meshes.size(); ++i)
-  {
-    Mesh& mesh = internals.Meshes[i];
-    for (glm::dvec3& p : mesh.Points)
-    {
-      p -= internals.Origin;
-    }
-    const unsigned int id = static_cast<unsigned int>(i);
-    internals.AddGeometry(internals.Primary, id, mesh);
-    this->NumberOfTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
-    if (mesh.Casts)
-    {
-      internals.AddGeometry(internals.Shadow, id, mesh);
-      this->NumberOfCasterTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
-    }
-  }
-  rtcCommitScene(internals.Primary);
-  rtcCommitScene(internals.Shadow);
-  const RTCError error = rtcGetDeviceError(internals.Device);
-  if (error != RTC_ERROR_NONE)
-  {
-    vtkErrorMacro("Embree failed to build the scene (error " << error << ").");
-    internals.ReleaseScenes();
     return false;
   }
-
-  // Lights, in collection order; those that cast no shadow get no image.
-  std::vector<ShadowLight> lights;
-  vtkLightCollection* lightCollection = renderer->GetLights();
-  vtkCollectionSimpleIterator lightIt;
-  lightCollection->InitTraversal(lightIt);
-  int lightIndex = 0;
-  for (vtkLight* light = lightCollection->GetNextLight(lightIt); light;
-       light = lightCollection->GetNextLight(lightIt), ++lightIndex)
-  {
-    internals.Visibility.emplace_back();
-    if (!vtkSoftShadowPass::LightCastsShadows(light))
-    {
-      continue;
-    }
-    ShadowLight shadowLight;
-    shadowLight.Index = lightIndex;
-    shadowLight.Positional = light->GetPositional() != 0;
-    glm::dvec3 position, focal;
-    light->GetTransformedPosition(&position.x);
-    light->GetTransformedFocalPoint(&focal.x);
-    const double radius = std::max(0.0, vtkSoftShadowPass::GetLightRadius(light));
-    if (shadowLight.Positional)
-    {
-      shadowLight.Position = position - internals.Origin;
-      shadowLight.Radius = radius;
-    }
-    else
-    {
-      const glm::dvec3 toward = position - focal;
-      if (!(glm::length(toward) > 0.0))
-      {
-        vtkWarningMacro(
-          "Directional light " << lightIndex << " has no direction (position = focal point).");
-        continue;
-      }
-      shadowLight.Toward = glm::normalize(toward);
-      Frame(shadowLight.Toward, shadowLight.T, shadowLight.B);
-      const double halfAngle = std::min(radius, 90.0) * 3.14159265358979323846 / 180.0;
-      const double s = std::sin(0.5 * halfAngle);
-      shadowLight.OneMinusCosMax = 2.0 * s * s;
-    }
-    internals.Visibility.back() = NewImage(width, height, "Visibility", 1.0f);
-    shadowLight.Values = static_cast<float*>(internals.Visibility.back()->GetScalarPointer());
-    lights.push_back(shadowLight);
-  }
+  const std::vector<ShadowLight> lights = internals.CollectLights(renderer, width, height, this);
   this->NumberOfShadowingLights = static_cast<int>(lights.size());
   internals.Depth = NewImage(width, height, "Depth", 1.0f);
   float* depth = static_cast<float*>(internals.Depth->GetScalarPointer());
 
   // World -> NDC exactly as the rasterizer sees it, and back.
-  double toNDC[16], fromNDC[16];
-  vtkMatrix4x4::DeepCopy(
-    toNDC, camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
-  vtkMatrix4x4::Invert(toNDC, fromNDC);
-
+  PixelCamera pixels;
+  pixels.Width = width;
+  pixels.Height = height;
+  vtkMatrix4x4::DeepCopy(pixels.ToNDC,
+    camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+  vtkMatrix4x4::Invert(pixels.ToNDC, pixels.FromNDC);
   const int samples = this->SamplesPerLight;
   const unsigned int seed = this->Seed;
   auto traceRow = [&](int j)
   {
-    const double y = (j + 0.5) / height * 2.0 - 1.0;
     for (int i = 0; i < width; ++i)
     {
-      const std::size_t pixel = static_cast<std::size_t>(j) * width + i;
-      const double x = (i + 0.5) / width * 2.0 - 1.0;
-      const glm::dvec3 nearPoint = Project(fromNDC, glm::dvec3(x, y, -1.0));
-      const glm::dvec3 farPoint = Project(fromNDC, glm::dvec3(x, y, 1.0));
-      const glm::dvec3 origin = nearPoint - internals.Origin;
-      const double length = glm::length(farPoint - nearPoint);
-      if (!(length > 0.0) || !std::isfinite(length))
-      {
-        continue;
-      }
-      const glm::dvec3 direction = (farPoint - nearPoint) / length;
-
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      RTCRayHit rayHit;
-      rayHit.ray.org_x = static_cast<float>(origin.x);
-      rayHit.ray.org_y = static_cast<float>(origin.y);
-      rayHit.ray.org_z = static_cast<float>(origin.z);
-      rayHit.ray.dir_x = static_cast<float>(direction.x);
-      rayHit.ray.dir_y = static_cast<float>(direction.y);
-      rayHit.ray.dir_z = static_cast<float>(direction.z);
-      rayHit.ray.tnear = 0.0f;
-      rayHit.ray.tfar = static_cast<float>(length);
-      rayHit.ray.time = 0.0f;
-      rayHit.ray.mask = ~0u;
-      rayHit.ray.id = 0;
-      rayHit.ray.flags = 0;
-      rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(internals.Primary, &context, &rayHit);
-      if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
-      {
-        continue; // background: depth 1, visibility 1
-      }
-
-      // Redo the hit in double against the triangle's plane: a better point to shadow from.
-      const Mesh& mesh = internals.Meshes[rayHit.hit.geomID];
-      const glm::uvec3& triangle = mesh.Triangles[rayHit.hit.primID];
-      const glm::dvec3& a = mesh.Points[triangle.x];
-      glm::dvec3 normal = glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a);
-      const double normalLength = glm::length(normal);
-      if (normalLength > 0.0)
-      {
-        normal /= normalLength;
-      }
-      else
-      {
-        // Flattened by the actor's matrix: Embree's float normal is all there is.
-        normal = glm::normalize(glm::dvec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
-      }
-      const double cosine = glm::dot(direction, normal);
-      double t = rayHit.ray.tfar;
-      if (std::abs(cosine) > 1e-6)
-      {
-        t = glm::dot(a - origin, normal) / cosine;
-      }
-      const glm::dvec3 hit = origin + t * direction;
-      if (cosine > 0.0)
-      {
-        normal = -normal; // face the viewer
-      }
-
-      const glm::dvec3 ndc = Project(toNDC, hit + internals.Origin);
-      depth[pixel] = static_cast<float>(std::min(1.0, std::max(0.0, 0.5 * (ndc.z + 1.0))));
-      for (const ShadowLight& light : lights)
-      {
-        Random random(StreamSeed(seed, pixel, light.Index));
-        light.Values[pixel] =
-          static_cast<float>(internals.Trace(hit, normal, light, samples, random));
-      }
+      internals.TracePixel(pixels, i, j, lights, samples, seed, depth);
     }
   };
 
