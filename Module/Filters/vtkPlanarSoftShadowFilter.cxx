@@ -119,41 +119,6 @@ Paths Boolean(ClipperLib::ClipType type, const Paths& a, const Paths& b)
   return out;
 }
 
-/// Points of the unit disk, equal weights: concentric equal-area rings (about sqrt(N / pi) of
-/// them) with samples in proportion to each ring's area, evenly spaced, every ring turned by
-/// half a step against its neighbour so that no two rings line up along a spoke.
-std::vector<glm::dvec2> PolarGrid(int count)
-{
-  const int rings = std::max(1, static_cast<int>(std::lround(std::sqrt(count / 3.14159265358979))));
-  std::vector<int> perRing(rings);
-  int assigned = 0;
-  for (int i = 0; i < rings; ++i)
-  {
-    // Ring i has area share (2i + 1) / rings^2; the remainder goes to the outer rings.
-    perRing[i] = static_cast<int>(std::floor(count * (2.0 * i + 1.0) / (rings * rings)));
-    assigned += perRing[i];
-  }
-  for (int i = rings - 1; assigned < count; i = (i + rings - 1) % rings)
-  {
-    ++perRing[i];
-    ++assigned;
-  }
-  std::vector<glm::dvec2> points;
-  int before = 0;
-  for (int i = 0; i < rings; ++i)
-  {
-    // Radius at the middle of the ring's area, so that each sample stands for an equal area.
-    const double rho = std::sqrt((before + 0.5 * perRing[i]) / count);
-    for (int j = 0; j < perRing[i]; ++j)
-    {
-      const double phi = 2.0 * 3.14159265358979 * (j + 0.5 * (i % 2)) / perRing[i];
-      points.emplace_back(rho * std::cos(phi), rho * std::sin(phi));
-    }
-    before += perRing[i];
-  }
-  return points;
-}
-
 /**
  * Samples of the light in plane coordinates (u, v, h): positions (w = 1) of a positional
  * light's disk, or unit directions towards a directional light (w = 0). Returns those above
@@ -163,41 +128,13 @@ std::vector<glm::dvec4> SampleLight(const glm::dvec3& light, bool positional, do
   int count, int pattern, const glm::dvec3& target, const glm::dvec3& origin,
   const glm::dmat3& toPlane, int& dropped)
 {
-  std::vector<glm::dvec4> world;
   const glm::dvec4 centre(light, positional ? 1.0 : 0.0);
-  if (count <= 1 || radius <= 0.0)
-  {
-    world.push_back(centre);
-  }
-  else if (pattern == vtkPlanarSoftShadowFilter::SUNFLOWER)
-  {
-    world = penumbra::SpreadLightSamples(centre, radius, count, target);
-  }
-  else
-  {
-    // The frame and the disk-to-cone mapping of penumbra::SpreadLightSamples, other points.
-    glm::dvec3 axis = positional ? target - light : light;
-    axis = glm::length(axis) > 0.0 ? glm::normalize(axis) : glm::dvec3(0, 0, 1);
-    glm::dvec3 e1, e2;
-    penumbra::PlaneBasis(axis, e1, e2);
-    const double cosMax = std::cos(glm::radians(radius));
-    for (const glm::dvec2& q : PolarGrid(count))
-    {
-      const double rho = glm::length(q), phi = std::atan2(q.y, q.x);
-      const glm::dvec3 around = std::cos(phi) * -e1 + std::sin(phi) * -e2;
-      if (positional)
-      {
-        world.emplace_back(light + radius * rho * around, 1.0);
-      }
-      else
-      {
-        // Uniform in solid angle: the disk's area fraction rho^2 maps to 1 - cos(theta).
-        const double cosTheta = 1.0 - rho * rho * (1.0 - cosMax);
-        const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-        world.emplace_back(cosTheta * axis + sinTheta * around, 0.0);
-      }
-    }
-  }
+  const std::vector<glm::dvec4> world = count <= 1 || radius <= 0.0
+    ? std::vector<glm::dvec4>{ centre }
+    : penumbra::PlaceOnLight(centre, radius,
+        pattern == vtkPlanarSoftShadowFilter::SUNFLOWER ? penumbra::SunflowerPoints(count)
+                                                        : penumbra::PolarRingPoints(count),
+        target);
   std::vector<glm::dvec4> samples;
   dropped = 0;
   for (const glm::dvec4& w : world)

@@ -299,6 +299,25 @@ void TestLightSamples()
       glm::dot(glm::dvec3(q), towards) >= std::cos(glm::radians(5.0)) - 1e-12;
   }
   Check(inCone, "directional light samples lie within the light's cone");
+  // The filter's polar rings: N points, each standing for an equal share of the disk.
+  for (int count : { 1, 7, 16, 64, 100 })
+  {
+    const std::vector<DiskPoint> rings = PolarRingPoints(count);
+    double meanArea = 0.0;
+    bool inside = rings.size() == static_cast<std::size_t>(count);
+    for (const DiskPoint& q : rings)
+    {
+      inside = inside && q.AreaFraction > 0.0 && q.AreaFraction < 1.0;
+      meanArea += q.AreaFraction / count;
+    }
+    Check(inside && std::abs(meanArea - 0.5) < 1e-12,
+      std::to_string(count) + " polar-ring points lie in the disk, equal areas each");
+  }
+  Check(PolarRingPoints(0).empty(), "no polar-ring points for no samples");
+  const std::vector<glm::dvec4> placed =
+    PlaceOnLight(glm::dvec4(centre, 1), 0.5, SunflowerPoints(64), target);
+  Check(std::equal(placed.begin(), placed.end(), disk.begin()),
+    "SpreadLightSamples is the sunflower placed on the light");
 }
 
 void TestLightPyramid()
