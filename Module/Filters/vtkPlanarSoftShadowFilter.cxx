@@ -194,95 +194,41 @@ struct Result
   std::vector<unsigned char> Regions;
 };
 
-} // namespace
-
-//------------------------------------------------------------------------------
-vtkPlanarSoftShadowFilter::vtkPlanarSoftShadowFilter() = default;
-vtkPlanarSoftShadowFilter::~vtkPlanarSoftShadowFilter() = default;
-
-//------------------------------------------------------------------------------
-int vtkPlanarSoftShadowFilter::FillInputPortInformation(int, vtkInformation* info)
+/// Points (or directions) of the light's samples in plane coordinates, and the integer frame
+/// Clipper works in: the bounds of every projection (and the lit margin) map to IntegerExtent,
+/// so coordinates are resolved to about 1e-9 of the shadow's extent.
+struct IntegerFrame
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
+  glm::dvec2 Lo{ 0.0 }, Hi{ 0.0 }; ///< plane coordinates, the lit margin included
+  glm::dvec2 Centre{ 0.0 };
+  double Scale = 1.0;
 
-//------------------------------------------------------------------------------
-int vtkPlanarSoftShadowFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  ClipperLib::IntPoint ToInt(const glm::dvec2& p) const
+  {
+    const glm::dvec2 q = (p - this->Centre) * this->Scale;
+    return ClipperLib::IntPoint(std::llround(q.x), std::llround(q.y));
+  }
+};
+
+/// The plane's frame: origin, unit normal and in-plane basis, and world to (u, v, h).
+struct PlaneFrame
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->UmbraArea = this->PenumbraArea = this->ShadowIntegral = 0.0;
-  this->NumberOfUsedSamples = 0;
+  glm::dvec3 Origin{ 0.0 }, Normal{ 0.0, 0.0, 1.0 }, E1{ 1, 0, 0 }, E2{ 0, 1, 0 };
+  glm::dmat3 ToPlane{ 1.0 };
+};
 
-  Result result;
-  glm::dvec3 origin(this->PlaneOrigin[0], this->PlaneOrigin[1], this->PlaneOrigin[2]);
-  glm::dvec3 normal(this->PlaneNormal[0], this->PlaneNormal[1], this->PlaneNormal[2]);
-  glm::dvec3 e1(1, 0, 0), e2(0, 1, 0);
-  glm::dvec2 centre(0.0);
-  double scale = 1.0;
-
-  // Everything that can go wrong ends here, with an empty output that still has the arrays.
-  auto finish = [&]()
-  {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(result.Points.size()));
-    const glm::dvec3 lift = origin + this->Offset * normal;
-    for (size_t i = 0; i < result.Points.size(); ++i)
-    {
-      const glm::dvec2 uv = result.Points[i] / scale + centre;
-      const glm::dvec3 x = lift + uv.x * e1 + uv.y * e2;
-      points->SetPoint(static_cast<vtkIdType>(i), x.x, x.y, x.z);
-    }
-    vtkNew<vtkFloatArray> intensity;
-    intensity->SetName("LightIntensity");
-    intensity->SetNumberOfValues(static_cast<vtkIdType>(result.Intensity.size()));
-    std::copy(result.Intensity.begin(), result.Intensity.end(), intensity->GetPointer(0));
-    vtkNew<vtkCellArray> triangles;
-    vtkNew<vtkUnsignedCharArray> regions;
-    regions->SetName("ShadowRegion");
-    regions->SetNumberOfValues(static_cast<vtkIdType>(result.Regions.size()));
-    for (size_t t = 0; t < result.Regions.size(); ++t)
-    {
-      triangles->InsertNextCell(3, &result.Triangles[3 * t]);
-      regions->SetValue(static_cast<vtkIdType>(t), result.Regions[t]);
-    }
-    output->Initialize();
-    output->SetPoints(points);
-    output->SetPolys(triangles);
-    output->GetPointData()->SetScalars(intensity);
-    output->GetCellData()->SetScalars(regions);
-    return 1;
-  };
-
-  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
-  {
-    return finish();
-  }
-  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
-  {
-    vtkWarningMacro("Input has no polygons or triangle strips (only vertices or lines cast no "
-                    "shadow on a plane); the output is empty.");
-    return finish();
-  }
-  if (!std::isfinite(glm::dot(normal, normal)) || glm::length(normal) <= 0.0 ||
-    !std::isfinite(glm::dot(origin, origin)))
-  {
-    vtkErrorMacro("PlaneNormal must be a finite, non-zero vector and PlaneOrigin finite.");
-    return finish();
-  }
-  normal = glm::normalize(normal);
-  penumbra::PlaneBasis(normal, e1, e2);
-  const glm::dmat3 toPlane = glm::transpose(glm::dmat3(e1, e2, normal));
-
-  // Caster polygons in plane coordinates; points with non-finite coordinates drop their cells.
+/// The input's polygons and strip triangles strictly above the plane, in plane coordinates.
+/// Cells with a non-finite or invalid point are dropped and counted; lo and hi bound the finite
+/// points in world space.
+std::vector<Polygon3> CasterPolygons(vtkPolyData* input, const PlaneFrame& plane, glm::dvec3& lo,
+  glm::dvec3& hi, vtkIdType& droppedCells)
+{
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType numPoints = inPoints->GetNumberOfPoints();
   std::vector<glm::dvec3> local(numPoints);
   std::vector<char> finite(numPoints);
-  glm::dvec3 lo(VTK_DOUBLE_MAX), hi(-VTK_DOUBLE_MAX);
+  lo = glm::dvec3(VTK_DOUBLE_MAX);
+  hi = glm::dvec3(-VTK_DOUBLE_MAX);
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     double x[3];
@@ -291,13 +237,13 @@ int vtkPlanarSoftShadowFilter::RequestData(
     if (finite[i])
     {
       const glm::dvec3 w(x[0], x[1], x[2]);
-      local[i] = toPlane * (w - origin);
+      local[i] = plane.ToPlane * (w - plane.Origin);
       lo = glm::min(lo, w);
       hi = glm::max(hi, w);
     }
   }
   std::vector<Polygon3> casters;
-  vtkIdType droppedCells = 0;
+  droppedCells = 0;
   auto addCaster = [&](vtkIdType n, const vtkIdType* ids)
   {
     Polygon3 poly;
@@ -333,42 +279,14 @@ int vtkPlanarSoftShadowFilter::RequestData(
       addCaster(3, ids + j);
     }
   }
-  if (droppedCells > 0)
-  {
-    vtkWarningMacro(<< droppedCells << " cells with non-finite or invalid points were dropped.");
-  }
-  if (casters.empty())
-  {
-    return finish();
-  }
+  return casters;
+}
 
-  // The light, sampled.
-  const glm::dvec3 light(this->LightPosition[0], this->LightPosition[1], this->LightPosition[2]);
-  const double height =
-    this->Positional ? glm::dot(light - origin, normal) : glm::dot(glm::normalize(light), normal);
-  if (!std::isfinite(height) || height <= 0.0 || !std::isfinite(this->LightRadius))
-  {
-    vtkErrorMacro("The light must be strictly above the plane (on the side PlaneNormal points "
-                  "to) and finite; the output is empty.");
-    return finish();
-  }
-  int dropped = 0;
-  const std::vector<glm::dvec4> samples = SampleLight(
-    this->Positional ? light : glm::normalize(light), this->Positional, this->LightRadius,
-    this->LightSamples, this->SamplePattern, 0.5 * (lo + hi), origin, toPlane, dropped);
-  if (dropped > 0)
-  {
-    vtkWarningMacro(<< dropped << " light samples on or below the plane were left out.");
-  }
-  const int count = static_cast<int>(samples.size());
-  this->NumberOfUsedSamples = count;
-  if (count == 0)
-  {
-    return finish();
-  }
-
-  // Integer frame for Clipper: the bounds of every projection (and the lit margin) map to
-  // IntegerExtent, so coordinates are resolved to about 1e-9 of the shadow's extent.
+/// The integer frame over every sample's projection of every caster, grown by `litMargin` of
+/// its size; false when nothing projects or the extent is degenerate.
+bool FrameProjections(const std::vector<Polygon3>& casters, const std::vector<glm::dvec4>& samples,
+  double litMargin, IntegerFrame& frame)
+{
   std::vector<glm::dvec2> projected;
   glm::dvec2 plo(VTK_DOUBLE_MAX), phi(-VTK_DOUBLE_MAX);
   for (const glm::dvec4& sample : samples)
@@ -387,27 +305,30 @@ int vtkPlanarSoftShadowFilter::RequestData(
   }
   if (!(plo.x <= phi.x) || !(plo.y <= phi.y))
   {
-    return finish();
+    return false;
   }
-  const double margin =
-    this->OutputLitRegion ? this->LitMargin * std::max(phi.x - plo.x, phi.y - plo.y) : 0.0;
+  const double margin = litMargin * std::max(phi.x - plo.x, phi.y - plo.y);
   plo -= margin;
   phi += margin;
   const double extent = std::max(phi.x - plo.x, phi.y - plo.y);
   if (!(extent > 0.0) || !std::isfinite(extent))
   {
-    return finish();
+    return false;
   }
-  centre = 0.5 * (plo + phi);
-  scale = IntegerExtent / extent;
-  auto toInt = [&](const glm::dvec2& p)
-  {
-    const glm::dvec2 q = (p - centre) * scale;
-    return ClipperLib::IntPoint(std::llround(q.x), std::llround(q.y));
-  };
+  frame.Lo = plo;
+  frame.Hi = phi;
+  frame.Centre = 0.5 * (plo + phi);
+  frame.Scale = IntegerExtent / extent;
+  return true;
+}
 
-  // Hard shadow of each sample, merged at once into the nested levels: after adding shadow P,
-  // levels[k] (covered by at least k + 1 shadows) grows by levels[k - 1] intersected with P.
+/// Hard shadow of each sample, merged at once into the nested levels: after adding shadow P,
+/// levels[k] (covered by at least k + 1 shadows) grows by levels[k - 1] intersected with P.
+std::vector<Paths> CoverageLevels(const std::vector<Polygon3>& casters,
+  const std::vector<glm::dvec4>& samples, const IntegerFrame& frame)
+{
+  const int count = static_cast<int>(samples.size());
+  std::vector<glm::dvec2> projected;
   std::vector<Paths> levels(count);
   for (int s = 0; s < count; ++s)
   {
@@ -421,7 +342,7 @@ int vtkPlanarSoftShadowFilter::RequestData(
       ClipperLib::Path path;
       for (const glm::dvec2& p : projected)
       {
-        const ClipperLib::IntPoint q = toInt(p);
+        const ClipperLib::IntPoint q = frame.ToInt(p);
         if (path.empty() || !(path.back() == q))
         {
           path.push_back(q);
@@ -454,13 +375,12 @@ int vtkPlanarSoftShadowFilter::RequestData(
     }
     levels[0] = Boolean(ClipperLib::ctUnion, levels[0], shadow);
   }
-  if (levels[0].empty())
-  {
-    return finish();
-  }
+  return levels;
+}
 
-  // Every ring is a constraint of one triangulation.
-  CDT cdt;
+/// Every ring of every level as a constraint of one triangulation; false when it is flat.
+bool TriangulateLevels(const std::vector<Paths>& levels, CDT& cdt)
+{
   for (const Paths& level : levels)
   {
     for (const ClipperLib::Path& path : level)
@@ -486,176 +406,179 @@ int vtkPlanarSoftShadowFilter::RequestData(
       }
     }
   }
-  if (cdt.dimension() < 2)
+  return cdt.dimension() >= 2;
+}
+
+/// Coverage of each face: faces joined by unconstrained edges share it, so one point-in-rings
+/// test per component, at the centroid of its largest face (well inside, whatever slivers the
+/// component has). Levels are nested, so a binary search finds the highest one containing it.
+std::vector<int> Classify(CDT& cdt, const std::vector<Paths>& levels)
+{
+  const int count = static_cast<int>(levels.size());
+  std::vector<int> coverage;
+  for (auto f : cdt.all_face_handles())
   {
-    return finish();
+    f->info() = -1;
   }
-  // Coverage of each face: faces joined by unconstrained edges share it, so one point-in-rings
-  // test per component, at the centroid of its largest face (well inside, whatever slivers the
-  // component has). Levels are nested, so a binary search finds the highest one containing it.
-  auto classify = [&]()
+  std::vector<CDT::Face_handle> stack;
+  for (auto seed : cdt.all_face_handles())
   {
-    std::vector<int> coverage;
-    for (auto f : cdt.all_face_handles())
+    if (seed->info() >= 0)
     {
-      f->info() = -1;
+      continue;
     }
-    std::vector<CDT::Face_handle> stack;
-    for (auto seed : cdt.all_face_handles())
+    const int component = static_cast<int>(coverage.size());
+    bool unbounded = false;
+    double bestArea = -1.0;
+    glm::dvec2 probe(0.0);
+    seed->info() = component;
+    stack.push_back(seed);
+    while (!stack.empty())
     {
-      if (seed->info() >= 0)
+      const CDT::Face_handle f = stack.back();
+      stack.pop_back();
+      if (cdt.is_infinite(f))
       {
-        continue;
+        unbounded = true;
       }
-      const int component = static_cast<int>(coverage.size());
-      bool unbounded = false;
-      double bestArea = -1.0;
-      glm::dvec2 probe(0.0);
-      seed->info() = component;
-      stack.push_back(seed);
-      while (!stack.empty())
+      else
       {
-        const CDT::Face_handle f = stack.back();
-        stack.pop_back();
-        if (cdt.is_infinite(f))
+        const glm::dvec2 a = ToDouble(f->vertex(0)->point());
+        const glm::dvec2 b = ToDouble(f->vertex(1)->point());
+        const glm::dvec2 c = ToDouble(f->vertex(2)->point());
+        const double area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+        if (area > bestArea)
         {
-          unbounded = true;
+          bestArea = area;
+          probe = (a + b + c) / 3.0;
+        }
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        const CDT::Face_handle g = f->neighbor(i);
+        if (!f->is_constrained(i) && g->info() < 0)
+        {
+          g->info() = component;
+          stack.push_back(g);
+        }
+      }
+    }
+    int covered = 0;
+    if (!unbounded)
+    {
+      int below = 0, above = count; // levels[below - 1] contains probe, levels[above] does not
+      while (below < above)
+      {
+        const int mid = (below + above + 1) / 2;
+        if (Inside(levels[mid - 1], probe))
+        {
+          below = mid;
         }
         else
         {
-          const glm::dvec2 a = ToDouble(f->vertex(0)->point());
-          const glm::dvec2 b = ToDouble(f->vertex(1)->point());
-          const glm::dvec2 c = ToDouble(f->vertex(2)->point());
-          const double area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
-          if (area > bestArea)
-          {
-            bestArea = area;
-            probe = (a + b + c) / 3.0;
-          }
-        }
-        for (int i = 0; i < 3; ++i)
-        {
-          const CDT::Face_handle g = f->neighbor(i);
-          if (!f->is_constrained(i) && g->info() < 0)
-          {
-            g->info() = component;
-            stack.push_back(g);
-          }
+          above = mid - 1;
         }
       }
-      int covered = 0;
-      if (!unbounded)
-      {
-        int below = 0, above = count; // levels[below - 1] contains probe, levels[above] does not
-        while (below < above)
-        {
-          const int mid = (below + above + 1) / 2;
-          if (Inside(levels[mid - 1], probe))
-          {
-            below = mid;
-          }
-          else
-          {
-            above = mid - 1;
-          }
-        }
-        covered = below;
-      }
-      coverage.push_back(covered);
+      covered = below;
     }
-    return coverage;
-  };
+    coverage.push_back(covered);
+  }
+  return coverage;
+}
 
-  // Refinement against long, thin triangles (Mach bands), in the penumbra only, in rounds and
-  // bounded in points. As in Ruppert's algorithm, a ring edge that a neighbouring vertex sees at
-  // more than 90 degrees (it encroaches) is split at its midpoint; a triangle whose smallest angle
-  // is under 20 degrees and has no such edge gets its centroid. Either point stays in its band.
-  // Midpoints of the integer ring vertices are exact in doubles down to tiny edges, so no
-  // construction nests. (CGAL's Delaunay_mesher_2 nests midpoints: with exact constructions it
-  // stalled in GMP, with inexact ones a later constraint insertion crashed.)
-  if (this->Refine && this->MaximumRefinementPoints > 0)
+/// Refinement against long, thin triangles (Mach bands), in the penumbra only, in rounds and
+/// bounded in points. As in Ruppert's algorithm, a ring edge that a neighbouring vertex sees at
+/// more than 90 degrees (it encroaches) is split at its midpoint; a triangle whose smallest angle
+/// is under 20 degrees and has no such edge gets its centroid. Either point stays in its band.
+/// Midpoints of the integer ring vertices are exact in doubles down to tiny edges, so no
+/// construction nests. (CGAL's Delaunay_mesher_2 nests midpoints: with exact constructions it
+/// stalled in GMP, with inexact ones a later constraint insertion crashed.)
+void RefinePenumbra(CDT& cdt, const std::vector<Paths>& levels, int maximumPoints)
+{
+  const double sinMin = std::sin(glm::radians(20.0));
+  // Nothing shorter than 1e-5 of the extent is split: that would only make more slivers.
+  const double minLength = 1e-5 * IntegerExtent;
+  const int count = static_cast<int>(levels.size());
+  int budget = maximumPoints;
+  for (int round = 0; round < 8 && budget > 0; ++round)
   {
-    const double sinMin = std::sin(glm::radians(20.0));
-    // Nothing shorter than 1e-5 of the extent is split: that would only make more slivers.
-    const double minLength = 1e-5 * IntegerExtent;
-    int budget = this->MaximumRefinementPoints;
-    for (int round = 0; round < 8 && budget > 0; ++round)
+    const std::vector<int> coverage = Classify(cdt, levels);
+    std::vector<CDT::Point> steiner;
+    auto penumbra = [&](CDT::Face_handle f)
+    { return !cdt.is_infinite(f) && coverage[f->info()] > 0 && coverage[f->info()] < count; };
+    for (auto f : cdt.finite_face_handles())
     {
-      const std::vector<int> coverage = classify();
-      std::vector<CDT::Point> steiner;
-      auto penumbra = [&](CDT::Face_handle f)
-      { return !cdt.is_infinite(f) && coverage[f->info()] > 0 && coverage[f->info()] < count; };
-      for (auto f : cdt.finite_face_handles())
+      if (!penumbra(f) || static_cast<int>(steiner.size()) >= budget)
       {
-        if (!penumbra(f) || static_cast<int>(steiner.size()) >= budget)
+        continue;
+      }
+      glm::dvec2 p[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        p[i] = ToDouble(f->vertex(i)->point());
+      }
+      bool split = false;
+      for (int i = 0; i < 3; ++i)
+      {
+        // Edge i is opposite vertex i; each constrained edge is looked at from both sides, and
+        // split once: from the side whose face handle sorts first.
+        const glm::dvec2 a = p[CDT::ccw(i)], b = p[CDT::cw(i)];
+        if (!f->is_constrained(i) || glm::length(b - a) < minLength ||
+          glm::dot(a - p[i], b - p[i]) >= 0.0)
         {
           continue;
         }
-        glm::dvec2 p[3];
-        for (int i = 0; i < 3; ++i)
+        split = true;
+        const CDT::Face_handle g = f->neighbor(i);
+        const int j = g->index(f);
+        const bool encroachedFromThere = !cdt.is_infinite(g) && penumbra(g) &&
+          glm::dot(a - ToDouble(g->vertex(j)->point()), b - ToDouble(g->vertex(j)->point())) < 0.0;
+        if (!encroachedFromThere || &*f < &*g)
         {
-          p[i] = ToDouble(f->vertex(i)->point());
-        }
-        bool split = false;
-        for (int i = 0; i < 3; ++i)
-        {
-          // Edge i is opposite vertex i; each constrained edge is looked at from both sides, and
-          // split once: from the side whose face handle sorts first.
-          const glm::dvec2 a = p[CDT::ccw(i)], b = p[CDT::cw(i)];
-          if (!f->is_constrained(i) || glm::length(b - a) < minLength ||
-            glm::dot(a - p[i], b - p[i]) >= 0.0)
-          {
-            continue;
-          }
-          split = true;
-          const CDT::Face_handle g = f->neighbor(i);
-          const int j = g->index(f);
-          const bool encroachedFromThere = !cdt.is_infinite(g) && penumbra(g) &&
-            glm::dot(a - ToDouble(g->vertex(j)->point()), b - ToDouble(g->vertex(j)->point())) <
-              0.0;
-          if (!encroachedFromThere || &*f < &*g)
-          {
-            const glm::dvec2 m = 0.5 * (a + b);
-            steiner.emplace_back(m.x, m.y);
-          }
-        }
-        const double ab = glm::length(p[1] - p[0]), bd = glm::length(p[2] - p[1]),
-                     da = glm::length(p[0] - p[2]);
-        const double shortest = std::min({ ab, bd, da });
-        // sin of the smallest angle (opposite the shortest edge) = 2 area / (the other two edges)
-        const double others = shortest == ab ? bd * da : shortest == bd ? ab * da : ab * bd;
-        const double twiceArea =
-          std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
-        if (!split && shortest > minLength && twiceArea < sinMin * others)
-        {
-          const glm::dvec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
-          steiner.emplace_back(centroid.x, centroid.y);
+          const glm::dvec2 m = 0.5 * (a + b);
+          steiner.emplace_back(m.x, m.y);
         }
       }
-      if (steiner.empty())
+      const double ab = glm::length(p[1] - p[0]), bd = glm::length(p[2] - p[1]),
+                   da = glm::length(p[0] - p[2]);
+      const double shortest = std::min({ ab, bd, da });
+      // sin of the smallest angle (opposite the shortest edge) = 2 area / (the other two edges)
+      const double others = shortest == ab ? bd * da : shortest == bd ? ab * da : ab * bd;
+      const double twiceArea =
+        std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+      if (!split && shortest > minLength && twiceArea < sinMin * others)
       {
-        break;
+        const glm::dvec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
+        steiner.emplace_back(centroid.x, centroid.y);
       }
-      budget -= static_cast<int>(steiner.size());
-      cdt.insert(steiner.begin(), steiner.end());
     }
-  }
-  if (this->OutputLitRegion)
-  {
-    const ClipperLib::IntPoint a = toInt(plo), b = toInt(phi);
-    const CDT::Point corners[4] = { { double(a.X), double(a.Y) }, { double(b.X), double(a.Y) },
-      { double(b.X), double(b.Y) }, { double(a.X), double(b.Y) } };
-    for (int i = 0; i < 4; ++i)
+    if (steiner.empty())
     {
-      cdt.insert_constraint(corners[i], corners[(i + 1) % 4]);
+      break;
     }
+    budget -= static_cast<int>(steiner.size());
+    cdt.insert(steiner.begin(), steiner.end());
   }
+}
 
-  const std::vector<int> coverage = classify();
+/// The frame's rectangle as constraints, so that the lit region around the shadow is output.
+void AddLitRegion(CDT& cdt, const IntegerFrame& frame)
+{
+  const ClipperLib::IntPoint a = frame.ToInt(frame.Lo), b = frame.ToInt(frame.Hi);
+  const CDT::Point corners[4] = { { double(a.X), double(a.Y) }, { double(b.X), double(a.Y) },
+    { double(b.X), double(b.Y) }, { double(a.X), double(b.Y) } };
+  for (int i = 0; i < 4; ++i)
+  {
+    cdt.insert_constraint(corners[i], corners[(i + 1) % 4]);
+  }
+}
 
-  // A penumbra vertex takes the mean coverage of a small disk around it: the angle-weighted mean
-  // of its faces' coverages (outside the hull counts 0). On a straight ring between k - 1 and k
-  // that is k - 1/2; where rings cross, their average; inside a band, the band's own coverage.
+/// Coverage at every finite vertex (numbered in its info), in samples.
+/// A penumbra vertex takes the mean coverage of a small disk around it: the angle-weighted mean
+/// of its faces' coverages (outside the hull counts 0). On a straight ring between k - 1 and k
+/// that is k - 1/2; where rings cross, their average; inside a band, the band's own coverage.
+std::vector<double> VertexCoverage(CDT& cdt, const std::vector<int>& coverage, int count)
+{
   std::vector<double> sumCoverage;
   vtkIdType vertexCount = 0;
   for (auto v : cdt.finite_vertex_handles())
@@ -732,9 +655,23 @@ int vtkPlanarSoftShadowFilter::RequestData(
       value[freeVertices[j]] = sum / neighbours[j].size();
     }
   }
+  return value;
+}
 
-  // Umbra, penumbra and lit triangles have their own points, so that the umbra is flat 0 and the
-  // lit region flat 1 whatever their neighbours.
+/// Areas in plane units, and the integral of the shadow (1 - intensity) over the plane.
+struct ShadowAreas
+{
+  double Umbra = 0.0, Penumbra = 0.0, Integral = 0.0;
+};
+
+/// The output triangles (integer frame coordinates): faces covered by no sample are left out
+/// unless `outputLitRegion`.
+/// Umbra, penumbra and lit triangles have their own points, so that the umbra is flat 0 and the
+/// lit region flat 1 whatever their neighbours.
+void EmitTriangles(CDT& cdt, const std::vector<int>& coverage, const std::vector<double>& value,
+  int count, bool outputLitRegion, double scale, Result& result, ShadowAreas& areas)
+{
+  const vtkIdType vertexCount = static_cast<vtkIdType>(value.size());
   std::vector<vtkIdType> pointOf[3];
   for (auto& ids_ : pointOf)
   {
@@ -743,7 +680,7 @@ int vtkPlanarSoftShadowFilter::RequestData(
   for (auto f : cdt.finite_face_handles())
   {
     const int c = coverage[f->info()];
-    if (c == 0 && !this->OutputLitRegion)
+    if (c == 0 && !outputLitRegion)
     {
       continue;
     }
@@ -781,14 +718,168 @@ int vtkPlanarSoftShadowFilter::RequestData(
       (scale * scale);
     if (region == 0)
     {
-      this->UmbraArea += area;
+      areas.Umbra += area;
     }
     else if (region == 1)
     {
-      this->PenumbraArea += area;
+      areas.Penumbra += area;
     }
-    this->ShadowIntegral += area * (1.0 - mean);
+    areas.Integral += area * (1.0 - mean);
   }
+}
+
+/// The result's triangles on the plane, lifted by `offset` along its normal, with their
+/// "LightIntensity" point and "ShadowRegion" cell arrays (empty arrays when there is none).
+void WriteOutput(const Result& result, const PlaneFrame& plane, double offset,
+  const IntegerFrame& frame, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(result.Points.size()));
+  const glm::dvec3 lift = plane.Origin + offset * plane.Normal;
+  for (size_t i = 0; i < result.Points.size(); ++i)
+  {
+    const glm::dvec2 uv = result.Points[i] / frame.Scale + frame.Centre;
+    const glm::dvec3 x = lift + uv.x * plane.E1 + uv.y * plane.E2;
+    points->SetPoint(static_cast<vtkIdType>(i), x.x, x.y, x.z);
+  }
+  vtkNew<vtkFloatArray> intensity;
+  intensity->SetName("LightIntensity");
+  intensity->SetNumberOfValues(static_cast<vtkIdType>(result.Intensity.size()));
+  std::copy(result.Intensity.begin(), result.Intensity.end(), intensity->GetPointer(0));
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkUnsignedCharArray> regions;
+  regions->SetName("ShadowRegion");
+  regions->SetNumberOfValues(static_cast<vtkIdType>(result.Regions.size()));
+  for (size_t t = 0; t < result.Regions.size(); ++t)
+  {
+    triangles->InsertNextCell(3, &result.Triangles[3 * t]);
+    regions->SetValue(static_cast<vtkIdType>(t), result.Regions[t]);
+  }
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  output->GetPointData()->SetScalars(intensity);
+  output->GetCellData()->SetScalars(regions);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkPlanarSoftShadowFilter::vtkPlanarSoftShadowFilter() = default;
+vtkPlanarSoftShadowFilter::~vtkPlanarSoftShadowFilter() = default;
+
+//------------------------------------------------------------------------------
+int vtkPlanarSoftShadowFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkPlanarSoftShadowFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->UmbraArea = this->PenumbraArea = this->ShadowIntegral = 0.0;
+  this->NumberOfUsedSamples = 0;
+
+  Result result;
+  PlaneFrame plane;
+  plane.Origin = glm::dvec3(this->PlaneOrigin[0], this->PlaneOrigin[1], this->PlaneOrigin[2]);
+  plane.Normal = glm::dvec3(this->PlaneNormal[0], this->PlaneNormal[1], this->PlaneNormal[2]);
+  IntegerFrame frame;
+  // Everything that can go wrong ends here, with an empty output that still has the arrays.
+  auto finish = [&]()
+  {
+    WriteOutput(result, plane, this->Offset, frame, output);
+    return 1;
+  };
+
+  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    return finish();
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkWarningMacro("Input has no polygons or triangle strips (only vertices or lines cast no "
+                    "shadow on a plane); the output is empty.");
+    return finish();
+  }
+  if (!std::isfinite(glm::dot(plane.Normal, plane.Normal)) || glm::length(plane.Normal) <= 0.0 ||
+    !std::isfinite(glm::dot(plane.Origin, plane.Origin)))
+  {
+    vtkErrorMacro("PlaneNormal must be a finite, non-zero vector and PlaneOrigin finite.");
+    return finish();
+  }
+  plane.Normal = glm::normalize(plane.Normal);
+  penumbra::PlaneBasis(plane.Normal, plane.E1, plane.E2);
+  plane.ToPlane = glm::transpose(glm::dmat3(plane.E1, plane.E2, plane.Normal));
+
+  // Caster polygons in plane coordinates; points with non-finite coordinates drop their cells.
+  glm::dvec3 lo, hi;
+  vtkIdType droppedCells = 0;
+  const std::vector<Polygon3> casters = CasterPolygons(input, plane, lo, hi, droppedCells);
+  if (droppedCells > 0)
+  {
+    vtkWarningMacro(<< droppedCells << " cells with non-finite or invalid points were dropped.");
+  }
+  if (casters.empty())
+  {
+    return finish();
+  }
+
+  // The light, sampled.
+  const glm::dvec3 light(this->LightPosition[0], this->LightPosition[1], this->LightPosition[2]);
+  const double height = this->Positional ? glm::dot(light - plane.Origin, plane.Normal)
+                                         : glm::dot(glm::normalize(light), plane.Normal);
+  if (!std::isfinite(height) || height <= 0.0 || !std::isfinite(this->LightRadius))
+  {
+    vtkErrorMacro("The light must be strictly above the plane (on the side PlaneNormal points "
+                  "to) and finite; the output is empty.");
+    return finish();
+  }
+  int dropped = 0;
+  const std::vector<glm::dvec4> samples = SampleLight(
+    this->Positional ? light : glm::normalize(light), this->Positional, this->LightRadius,
+    this->LightSamples, this->SamplePattern, 0.5 * (lo + hi), plane.Origin, plane.ToPlane, dropped);
+  if (dropped > 0)
+  {
+    vtkWarningMacro(<< dropped << " light samples on or below the plane were left out.");
+  }
+  const int count = static_cast<int>(samples.size());
+  this->NumberOfUsedSamples = count;
+  if (count == 0 ||
+    !FrameProjections(casters, samples, this->OutputLitRegion ? this->LitMargin : 0.0, frame))
+  {
+    return finish();
+  }
+
+  // Nested coverage levels, triangulated with every ring as a constraint, refined in the
+  // penumbra, classified, then a coverage at every vertex and the output triangles.
+  const std::vector<Paths> levels = CoverageLevels(casters, samples, frame);
+  CDT cdt;
+  if (levels[0].empty() || !TriangulateLevels(levels, cdt))
+  {
+    return finish();
+  }
+  if (this->Refine && this->MaximumRefinementPoints > 0)
+  {
+    RefinePenumbra(cdt, levels, this->MaximumRefinementPoints);
+  }
+  if (this->OutputLitRegion)
+  {
+    AddLitRegion(cdt, frame);
+  }
+  const std::vector<int> coverage = Classify(cdt, levels);
+  const std::vector<double> value = VertexCoverage(cdt, coverage, count);
+  ShadowAreas areas;
+  EmitTriangles(
+    cdt, coverage, value, count, this->OutputLitRegion != 0, frame.Scale, result, areas);
+  this->UmbraArea = areas.Umbra;
+  this->PenumbraArea = areas.Penumbra;
+  this->ShadowIntegral = areas.Integral;
   return finish();
 }
 
