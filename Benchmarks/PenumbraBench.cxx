@@ -26,6 +26,7 @@
 
 #include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
+#include "penumbraOptions.h"
 #include "penumbraShadowMap.h"
 
 #include "vtkPlanarSoftShadowFilter.h"
@@ -164,101 +165,39 @@ void Usage(const char* program)
 
 bool ParseArguments(int argc, char* argv[], Options& options)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help")
-    {
-      Usage(argv[0]);
-      std::exit(EXIT_SUCCESS);
-    }
-    if (arg == "--quick")
-    {
-      options.Quick = true;
-      continue;
-    }
-    if (arg == "--no-plot")
-    {
-      options.Plot = false;
-      continue;
-    }
-    if (arg == "--no-noise-check")
-    {
-      options.NoiseCheck = false;
-      continue;
-    }
-    if (i + 1 >= argc)
-    {
-      std::fprintf(stderr, "%s: missing value after %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    const char* value = argv[++i];
-    bool ok = true;
-    if (arg == "--output" || arg == "-o")
-    {
-      options.Output = value;
-    }
-    else if (arg == "--width")
-    {
-      ok = ParseInt(value, 16, 8192, options.Width);
-      options.SizeGiven = true;
-    }
-    else if (arg == "--height")
-    {
-      ok = ParseInt(value, 16, 8192, options.Height);
-      options.SizeGiven = true;
-    }
-    else if (arg == "--frames")
-    {
-      ok = ParseInt(value, 1, 100000, options.Frames);
-      options.FramesGiven = true;
-    }
-    else if (arg == "--max-seconds")
-    {
-      ok = ParseDouble(value, 0.0, options.MaxSeconds);
-      options.MaxGiven = true;
-    }
-    else if (arg == "--truth-samples")
-    {
-      ok = ParseInt(value, 1, 65536, options.TruthSamples);
-      options.TruthGiven = true;
-    }
-    else if (arg == "--scenes")
-    {
-      options.Scenes = SplitList(value);
-      ok = !options.Scenes.empty();
-    }
-    else if (arg == "--methods")
-    {
-      options.Methods = SplitList(value);
-      ok = !options.Methods.empty();
-    }
-    else if (arg == "--radii")
-    {
-      options.Radii.clear();
-      for (const std::string& item : SplitList(value))
+  using namespace penumbra::bench;
+  const std::vector<Option> table = { FlagOption("--quick", [&] { options.Quick = true; }),
+    FlagOption("--no-plot", [&] { options.Plot = false; }),
+    FlagOption("--no-noise-check", [&] { options.NoiseCheck = false; }),
+    TextOption("--output", options.Output, "-o"),
+    IntOption("--width", 16, 8192, options.Width, &options.SizeGiven),
+    IntOption("--height", 16, 8192, options.Height, &options.SizeGiven),
+    IntOption("--frames", 1, 100000, options.Frames, &options.FramesGiven),
+    DoubleOption("--max-seconds", 0.0, options.MaxSeconds, &options.MaxGiven),
+    IntOption("--truth-samples", 1, 65536, options.TruthSamples, &options.TruthGiven),
+    ListOption("--scenes", options.Scenes), ListOption("--methods", options.Methods),
+    ValueOption("--radii",
+      [&](const char* value)
       {
-        double r = 0.0;
-        ok = ok && ParseDouble(item.c_str(), 0.0, r);
-        options.Radii.push_back(r);
-      }
-      ok = ok && !options.Radii.empty();
-    }
-    else if (arg == "--images")
-    {
-      options.Images = value;
-      ok = options.Images == "classic" || options.Images == "all" || options.Images == "none";
-    }
-    else
-    {
-      std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    if (!ok)
-    {
-      std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], value, arg.c_str());
-      return false;
-    }
+        options.Radii.clear();
+        bool ok = true;
+        for (const std::string& item : SplitList(value))
+        {
+          double r = 0.0;
+          ok = ok && ParseDouble(item.c_str(), 0.0, r);
+          options.Radii.push_back(r);
+        }
+        return ok && !options.Radii.empty();
+      }),
+    ValueOption("--images",
+      [&](const char* value)
+      {
+        options.Images = value;
+        return options.Images == "classic" || options.Images == "all" || options.Images == "none";
+      }) };
+  if (!ParseOptions(argc, argv, table, Usage))
+  {
+    return false;
   }
   if (options.Quick)
   {

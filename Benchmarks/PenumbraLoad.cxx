@@ -23,6 +23,7 @@
 // or a child process failed; 2 on a usage error.
 
 #include "penumbraBenchSupport.h"
+#include "penumbraOptions.h"
 
 #include "vtkSoftShadowPass.h"
 
@@ -171,80 +172,28 @@ void Usage(const char* program)
 
 bool ParseArguments(int argc, char* argv[], Options& options)
 {
+  using namespace penumbra::bench;
   bool sizeGiven = false, framesGiven = false, jobsGiven = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help")
-    {
-      Usage(argv[0]);
-      std::exit(EXIT_SUCCESS);
-    }
-    if (arg == "--smoke")
-    {
-      options.Smoke = true;
-      continue;
-    }
-    if (i + 1 >= argc)
-    {
-      std::fprintf(stderr, "%s: missing value after %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    const std::string value = argv[++i];
-    bool ok = true;
-    if (arg == "--scenes" || arg == "--methods")
-    {
-      const auto& known = arg == "--scenes" ? AllScenes : AllMethods;
-      auto& list = arg == "--scenes" ? options.Scenes : options.Methods;
-      list = SplitList(value);
-      ok = !list.empty();
-      for (const std::string& item : list)
+  const std::vector<Option> table = { FlagOption("--smoke", [&] { options.Smoke = true; }),
+    ListOption("--scenes", options.Scenes, &AllScenes),
+    ListOption("--methods", options.Methods, &AllMethods),
+    IntOption("--frames", 1, 1000000, options.Frames, &framesGiven),
+    IntOption("--jobs", 1, 64, options.Jobs, &jobsGiven),
+    ValueOption("--size",
+      [&](const char* value)
       {
-        if (std::find(known.begin(), known.end(), item) == known.end())
-        {
-          std::fprintf(stderr, "%s: unknown %s '%s'\n", argv[0], arg.c_str() + 2, item.c_str());
-          ok = false;
-        }
-      }
-    }
-    else if (arg == "--frames")
-    {
-      options.Frames = std::atoi(value.c_str());
-      ok = options.Frames >= 1;
-      framesGiven = true;
-    }
-    else if (arg == "--jobs")
-    {
-      options.Jobs = std::atoi(value.c_str());
-      ok = options.Jobs >= 1 && options.Jobs <= 64;
-      jobsGiven = true;
-    }
-    else if (arg == "--size")
-    {
-      ok = std::sscanf(value.c_str(), "%dx%d", &options.Width, &options.Height) == 2 &&
-        options.Width >= 16 && options.Height >= 16 && options.Width <= 8192 &&
-        options.Height <= 8192;
-      sizeGiven = true;
-    }
-    else if (arg == "--max-seconds")
-    {
-      options.MaxSeconds = std::atof(value.c_str());
-      ok = options.MaxSeconds > 0.0;
-    }
-    else if (arg == "--output" || arg == "-o")
-    {
-      options.Output = value;
-    }
-    else
-    {
-      std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    if (!ok)
-    {
-      std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], value.c_str(), arg.c_str());
-      return false;
-    }
+        sizeGiven = true;
+        return std::sscanf(value, "%dx%d", &options.Width, &options.Height) == 2 &&
+          options.Width >= 16 && options.Height >= 16 && options.Width <= 8192 &&
+          options.Height <= 8192;
+      }),
+    ValueOption("--max-seconds",
+      [&](const char* value)
+      { return ParseDouble(value, 0.0, options.MaxSeconds) && options.MaxSeconds > 0.0; }),
+    TextOption("--output", options.Output, "-o") };
+  if (!ParseOptions(argc, argv, table, Usage))
+  {
+    return false;
   }
   if (options.Smoke)
   {

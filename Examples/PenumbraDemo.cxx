@@ -20,6 +20,7 @@
 // Shared with PenumbraBench (header-only): error metrics and VTK's shadow maps.
 #include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
+#include "penumbraOptions.h"
 #include "penumbraShadowMap.h"
 
 #include "vtkActor.h"
@@ -58,7 +59,6 @@
 using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
 using penumbra::bench::GrabFrame;
-using penumbra::bench::ParseInt;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteGrey;
@@ -88,53 +88,13 @@ void Usage(const char* program)
 
 bool ParseArguments(int argc, char* argv[], Options& options)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help")
-    {
-      Usage(argv[0]);
-      std::exit(EXIT_SUCCESS);
-    }
-    if (i + 1 >= argc)
-    {
-      std::fprintf(stderr, "%s: missing value after %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    const char* value = argv[++i];
-    bool ok = true;
-    if (arg == "--output" || arg == "-o")
-    {
-      options.Output = value;
-    }
-    else if (arg == "--width")
-    {
-      ok = ParseInt(value, 16, 16384, options.Width);
-    }
-    else if (arg == "--height")
-    {
-      ok = ParseInt(value, 16, 16384, options.Height);
-    }
-    else if (arg == "--frames")
-    {
-      ok = ParseInt(value, 1, 16384, options.Frames);
-    }
-    else if (arg == "--truth-samples")
-    {
-      ok = ParseInt(value, 1, 16384, options.TruthSamples);
-    }
-    else
-    {
-      std::fprintf(stderr, "%s: unknown option %s\n", argv[0], arg.c_str());
-      return false;
-    }
-    if (!ok)
-    {
-      std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], value, arg.c_str());
-      return false;
-    }
-  }
-  return true;
+  using namespace penumbra::bench;
+  return ParseOptions(argc, argv,
+    { TextOption("--output", options.Output, "-o"), IntOption("--width", 16, 16384, options.Width),
+      IntOption("--height", 16, 16384, options.Height),
+      IntOption("--frames", 1, 16384, options.Frames),
+      IntOption("--truth-samples", 1, 16384, options.TruthSamples) },
+    Usage);
 }
 
 /// Renders `warmUp` frames, then `frames` timed ones, the camera orbiting one degree before each
