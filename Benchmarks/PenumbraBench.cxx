@@ -95,7 +95,6 @@
 namespace
 {
 using penumbra::bench::Clock;
-using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
 using penumbra::bench::GrabFrame;
 using penumbra::bench::ParseDouble;
@@ -229,23 +228,11 @@ bool ParseArguments(int argc, char* argv[], Options& options)
 // centre (cone 55 degrees, covering the whole ground), one camera orbiting around (0, 0, 1).
 //--------------------------------------------------------------------------------------------------
 
-struct Scene
-{
-  std::string Name;
-  std::vector<vtkSmartPointer<vtkActor>> Actors;
-  vtkIdType Triangles = 0;
-};
+using Scene = penumbra::bench::SceneActors;
 
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
   return penumbra::bench::MakeShadedActor(penumbra::bench::DetachedOutput(source), r, g, b);
-}
-
-void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
-{
-  scene.Triangles +=
-    CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
-  scene.Actors.push_back(actor);
 }
 
 void AddGround(Scene& scene)
@@ -259,7 +246,7 @@ void AddGround(Scene& scene)
   ground->GetProperty()->SetSpecular(0.0);
   // The receiver plane of the planar methods (plateaus); other methods ignore the mark.
   vtkSoftShadowPass::SetShadowPlane(ground, true);
-  AddActor(scene, ground);
+  scene.Add(ground);
 }
 
 /// Spheres and boxes on the ground plane, one of the spheres floating.
@@ -282,7 +269,7 @@ Scene MakeClassic()
     sphere->SetRadius(b.R);
     sphere->SetThetaResolution(64);
     sphere->SetPhiResolution(32);
-    AddActor(scene, MakeActor(sphere, b.Colour[0], b.Colour[1], b.Colour[2]));
+    scene.Add(MakeActor(sphere, b.Colour[0], b.Colour[1], b.Colour[2]));
   }
   struct Box
   {
@@ -300,7 +287,7 @@ Scene MakeClassic()
     auto actor = MakeActor(cube, b.Colour[0], b.Colour[1], b.Colour[2]);
     actor->SetPosition(b.X, b.Y, 0.5 * b.Sz);
     actor->RotateZ(b.Angle);
-    AddActor(scene, actor);
+    scene.Add(actor);
   }
   return scene;
 }
@@ -322,7 +309,7 @@ Scene MakeIsosurface()
   actor->SetScale(0.1);
   actor->SetPosition(0.0, 0.0, 2.4);
   actor->RotateZ(20.0);
-  AddActor(scene, actor);
+  scene.Add(actor);
   return scene;
 }
 
@@ -363,7 +350,7 @@ Scene MakeGlyphs()
   glyph->SetScaleModeToDataScalingOff();
   glyph->SetScaleFactor(0.9);
   glyph->OrientOn();
-  AddActor(scene, MakeActor(glyph, 0.30, 0.50, 0.85));
+  scene.Add(MakeActor(glyph, 0.30, 0.50, 0.85));
   return scene;
 }
 
@@ -385,7 +372,7 @@ Scene MakeLarge()
   auto actor = MakeActor(source, 0.75, 0.75, 0.80);
   actor->RotateX(35.0);
   actor->SetPosition(0.0, 0.0, 2.6);
-  AddActor(scene, actor);
+  scene.Add(actor);
   return scene;
 }
 
@@ -428,7 +415,7 @@ Scene MakeStreamTubes()
   tubes->SetRadius(0.06);
   tubes->SetNumberOfSides(10);
   tubes->CappingOff();
-  AddActor(scene, MakeActor(tubes, 0.35, 0.70, 0.55));
+  scene.Add(MakeActor(tubes, 0.35, 0.70, 0.55));
   return scene;
 }
 

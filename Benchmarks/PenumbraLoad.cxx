@@ -223,24 +223,14 @@ struct LightPose
   double FocalPoint[3];
 };
 
-struct Scene
+struct Scene : penumbra::bench::SceneActors
 {
-  std::string Name;
-  std::vector<vtkSmartPointer<vtkActor>> Actors;
   std::vector<vtkSmartPointer<vtkLight>> Lights; ///< the shadowing lights, collection index 0..n-1
   std::vector<LightPose> Poses;                  ///< their starting poses
-  vtkIdType Triangles = 0;
-  std::size_t Datasets = 0; ///< distinct polydata objects
+  std::size_t Datasets = 0;                      ///< distinct polydata objects
   int DefaultFrames = 5;
   double CameraPosition[3], CameraFocalPoint[3], CameraViewAngle = 30.0;
 };
-
-void AddActor(Scene& scene, vtkSmartPointer<vtkActor> actor)
-{
-  scene.Triangles +=
-    CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
-  scene.Actors.push_back(actor);
-}
 
 void AddGround(Scene& scene, double halfX, double halfY)
 {
@@ -250,7 +240,7 @@ void AddGround(Scene& scene, double halfX, double halfY)
   plane->SetPoint2(-halfX, halfY, 0.0);
   auto ground = MakeShadedActor(DetachedOutput(plane), 0.85, 0.85, 0.82);
   ground->GetProperty()->SetSpecular(0.0);
-  AddActor(scene, ground);
+  scene.Add(ground);
 }
 
 /// A scene light: positional (point if cone >= 180, else spot) or directional (from `position`
@@ -347,7 +337,7 @@ Scene MakeActors1000()
     const double z = kind == 0 ? 0.3 + 1.2 * unit(random) : 0.5 * size;
     actor->SetPosition(x, y, z);
     actor->RotateZ(360.0 * unit(random));
-    AddActor(scene, actor);
+    scene.Add(actor);
   }
   scene.Datasets = datasets.size() + 1;
   const double light[3] = { 6.0, -5.0, 16.0 };
@@ -425,7 +415,7 @@ Scene MakeLights8()
   auto ring = MakeShadedActor(MakeTorus(1.2, 0.4, 96, 48), 0.85, 0.85, 0.85);
   ring->RotateX(60.0);
   ring->SetPosition(0.0, 0.0, 2.0);
-  AddActor(scene, ring);
+  scene.Add(ring);
   struct Ball
   {
     double X, Y, Z, R;
@@ -437,7 +427,7 @@ Scene MakeLights8()
     sphere->SetRadius(b.R);
     sphere->SetThetaResolution(48);
     sphere->SetPhiResolution(24);
-    AddActor(scene, MakeShadedActor(DetachedOutput(sphere), 0.9, 0.9, 0.9));
+    scene.Add(MakeShadedActor(DetachedOutput(sphere), 0.9, 0.9, 0.9));
   }
   vtkNew<vtkCubeSource> box;
   box->SetXLength(1.0);
@@ -446,7 +436,7 @@ Scene MakeLights8()
   auto boxActor = MakeShadedActor(DetachedOutput(box), 0.9, 0.9, 0.9);
   boxActor->SetPosition(1.5, -2.0, 1.2);
   boxActor->RotateZ(25.0);
-  AddActor(scene, boxActor);
+  scene.Add(boxActor);
   vtkNew<vtkConeSource> cone;
   cone->SetResolution(32);
   cone->SetHeight(1.8);
@@ -454,7 +444,7 @@ Scene MakeLights8()
   cone->SetDirection(0.0, 0.0, 1.0);
   auto coneActor = MakeShadedActor(DetachedOutput(cone), 0.9, 0.9, 0.9);
   coneActor->SetPosition(-2.0, -2.2, 0.9);
-  AddActor(scene, coneActor);
+  scene.Add(coneActor);
   scene.Datasets = 6;
 
   // 8 lights around the scene, 45 degrees apart, each its own colour; the camera looks from
@@ -500,7 +490,7 @@ Scene MakeMesh(bool smoke)
     smoke ? MakeTorus(2.4, 0.8, 1000, 500) : MakeTorus(2.4, 0.8, 2000, 1000), 0.75, 0.75, 0.80);
   actor->RotateX(35.0);
   actor->SetPosition(0.0, 0.0, 2.6);
-  AddActor(scene, actor);
+  scene.Add(actor);
   scene.Datasets = 2;
   const double light[3] = { 4.0, -6.0, 10.0 };
   AddLight(scene, true, light, 55.0, 0.5, 1.0, 1.0, 1.0, 1.0);

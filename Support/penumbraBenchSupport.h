@@ -198,6 +198,22 @@ inline vtkIdType CountTriangles(vtkPolyData* data)
   return triangles;
 }
 
+/// A timed scene's actors and the triangles they draw: what the benchmark and the load test
+/// build their scenes from.
+struct SceneActors
+{
+  std::string Name;
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
+  vtkIdType Triangles = 0;
+
+  void Add(vtkSmartPointer<vtkActor> actor)
+  {
+    this->Triangles +=
+      CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
+    this->Actors.push_back(actor);
+  }
+};
+
 struct Timing
 {
   int Frames = 0;
