@@ -200,6 +200,62 @@ void TestAutomaticChoice(const Scene& base)
   }
 }
 
+/// Of the pixels either image shadows, the share where they differ by more than 1/N; `shadowed`
+/// is set to their number.
+double ShareOffStep(const std::vector<float>& a, const std::vector<float>& b, int& shadowed)
+{
+  int off = 0;
+  shadowed = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    if (a[i] < 1.0f || b[i] < 1.0f)
+    {
+      ++shadowed;
+      off += std::abs(a[i] - b[i]) > 1.0f / Samples + 1e-4f;
+    }
+  }
+  return shadowed ? double(off) / shadowed : 1.0;
+}
+
+/// Counting wedges are cut to the receivers' box (penumbra::StableReceiverBox): a receiver that
+/// moves within the kept box changes no wedge, one that leaves it gets wedges cut to a new box.
+/// Either way the counted image must stay the averaged one: a stale box would cut the moved
+/// receiver's penumbrae away.
+void TestReceiversBox()
+{
+  vtkSmartPointer<vtkActor> ground;
+  Scene scene{ "moving receiver",
+    [&ground](vtkRenderer* r)
+    {
+      ground = MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8);
+      r->AddActor(ground);
+      r->AddActor(MakeActor(SphereSource(-0.8, 1.6, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
+    } };
+  SceneWindow view(scene);
+  vtkSoftShadowPass* pass = view.Pass;
+  for (const double drop : { 0.0, 0.3, 2.5 })
+  {
+    ground->SetPosition(0.0, -drop, 0.0);
+    view.Renderer->ResetCameraClippingRange();
+    pass->SetMethodToAveragedHardShadows();
+    view.Window->Render();
+    const std::vector<float> averaged = Visibility(pass);
+    pass->SetMethodToSoftShadowVolumes();
+    view.Window->Render();
+    const vtkIdType before = pass->GetNumberOfSilhouetteUpdates(); // counts every rebuild
+    view.Window->Render(); // changes nothing the first did not
+    const vtkIdType updates = pass->GetNumberOfSilhouetteUpdates() - before;
+    int shadowed = 0;
+    const double off = ShareOffStep(averaged, Visibility(pass), shadowed);
+    std::printf("ground lowered by %.1f: shadowed %d px, counting differs from averaging by more "
+                "than 1/N on %.2f%%\n",
+      drop, shadowed, 100.0 * off);
+    Check(shadowed > Width * Height / 100 && off <= 0.01,
+      "a receiver lowered by " + std::to_string(drop) + " keeps the averaged penumbra");
+    Check(updates == 0, "a steady frame rebuilds no silhouette");
+  }
+}
+
 vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)
 {
   auto ground = MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8);
@@ -296,6 +352,7 @@ int main()
     RunScene(scene);
   }
   TestAutomaticChoice(scenes[0]);
+  TestReceiversBox();
   TestStageTimes(scenes[0]);
   return penumbra_test::Finish();
 }
