@@ -150,10 +150,10 @@ void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& ligh
     this->SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
   }
   vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
   frame.AttachColour(this->CentreCount, 0);
   ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
 }
 
 void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
@@ -180,6 +180,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     return false;
   }
   vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
   const GLuint zero = 0;
   glClearTexImage(this->SampleCounters->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
@@ -226,7 +227,6 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
   }
-  ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -256,9 +256,6 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   }
   this->SampleCounters->Deactivate();
   this->CentreCount->Deactivate();
-  ostate->vtkglDisable(GL_DEPTH_CLAMP);
-  ostate->vtkglDisable(GL_STENCIL_TEST);
-  ostate->vtkglEnable(GL_BLEND);
   return true;
 }
 

@@ -112,6 +112,7 @@ bool PlateauTechnique::RenderTexture(
   }
   const int resolution = this->Settings.Resolution;
   vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
   // The plateau texture: seen down the normal, the smallest depth (darkest) wins.
   ostate->PushFramebufferBindings();
   this->Framebuffer->Bind();
@@ -137,7 +138,6 @@ bool PlateauTechnique::RenderTexture(
     this->VAO, program, this->VAOProgram, this->Vertices, { { "plateauVertex", 0, 3 } });
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(this->Triangles.size()));
   this->VAO->Release();
-  ostate->vtkglDepthMask(GL_FALSE);
   ostate->PopFramebufferBindings();
 
   this->TextureCurrent = true;
@@ -233,6 +233,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   {
     return 0;
   }
+  ScopedDrawState saved(ostate);
   ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
@@ -261,7 +262,6 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   frame.FullScreen->Draw(resolve, this->ResolveVAO);
   this->Depth->Deactivate();
   frame.DepthCopy->Deactivate();
-  ostate->vtkglEnable(GL_DEPTH_TEST);
   return static_cast<vtkIdType>(this->Triangles.size() / 3);
 }
 

@@ -31,6 +31,52 @@ std::pair<vtkLight*, int> ShadowLight::VolumeKey(std::size_t k) const
   return { this->Light, this->CountsCentreInColour() ? CentreVolume : static_cast<int>(k) };
 }
 
+ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
+  : State(state)
+  , Blend(state, GL_BLEND)
+  , StencilTest(state, GL_STENCIL_TEST)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , CullFace(state, GL_CULL_FACE)
+  , DepthClamp(state, GL_DEPTH_CLAMP)
+  , ColorMask(state)
+  , DepthMask(state)
+  , DepthFunc(state)
+  , ClearColor(state)
+  , Viewport(state)
+{
+  static const GLenum names[2][7] = {
+    { GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL,
+      GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK },
+    { GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
+      GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK }
+  };
+  for (int face = 0; face < 2; ++face)
+  {
+    for (int k = 0; k < 7; ++k)
+    {
+      glGetIntegerv(names[face][k], &this->Stencil[face][k]);
+    }
+  }
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->CullFaceMode);
+  glGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquationRGB);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquationAlpha);
+}
+
+ScopedDrawState::~ScopedDrawState()
+{
+  vtkOpenGLState* state = this->State;
+  const GLenum faces[2] = { GL_FRONT, GL_BACK };
+  for (int face = 0; face < 2; ++face)
+  {
+    const int* s = this->Stencil[face];
+    state->vtkglStencilFuncSeparate(faces[face], s[0], s[1], static_cast<unsigned int>(s[2]));
+    state->vtkglStencilOpSeparate(faces[face], s[3], s[4], s[5]);
+    state->vtkglStencilMaskSeparate(faces[face], static_cast<unsigned int>(s[6]));
+  }
+  state->vtkglCullFace(this->CullFaceMode);
+  state->vtkglBlendEquationSeparate(this->BlendEquationRGB, this->BlendEquationAlpha);
+}
+
 vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
   const char* fragmentShader, const char* name, const char* instead)
 {
@@ -101,6 +147,7 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
     return;
   }
   vtkOpenGLState* ostate = this->Window->GetState();
+  ScopedDrawState saved(ostate);
   // A point inside a wedge lies behind its front faces and in front of its back faces. When
   // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
   // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
@@ -130,6 +177,7 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
 void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
+  ScopedDrawState saved(ostate);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -18,6 +18,7 @@
 
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLState.h" // for the scoped savers
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkType.h"
 
@@ -106,6 +107,32 @@ public:
 private:
   vtkNew<vtkOpenGLBufferObject> Buffer;
   std::size_t Generation = 1;
+};
+
+/// Saves the GL state the pass's drawing changes and restores it when it goes out of scope,
+/// through vtkOpenGLState: VTK's scoped savers for what they cover (enables, masks, depth
+/// function, clear colour, viewport), and the stencil functions, operations and write masks of
+/// both faces, the culled face and the blend equations beside them, which VTK 9.1 has none for.
+class ScopedDrawState
+{
+public:
+  explicit ScopedDrawState(vtkOpenGLState* state);
+  ~ScopedDrawState();
+  ScopedDrawState(const ScopedDrawState&) = delete;
+  ScopedDrawState& operator=(const ScopedDrawState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglEnableDisable Blend, StencilTest, DepthTest, CullFace, DepthClamp;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  /// Front and back: function, reference, value mask, then fail, depth fail, depth pass, then
+  /// the write mask.
+  int Stencil[2][7];
+  int CullFaceMode = 0, BlendEquationRGB = 0, BlendEquationAlpha = 0;
 };
 
 /// What the techniques add to the pass's statistics.

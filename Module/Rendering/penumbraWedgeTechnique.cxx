@@ -28,6 +28,7 @@ vtkIdType WedgeTechnique::UpdateCaster(
 void WedgeTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight&)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
+  ScopedDrawState saved(ostate);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDepthFunc(GL_LEQUAL);
   frame.DrawResolve(1.0f);
@@ -43,6 +44,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     return;
   }
   vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
   frame.DepthCopy->Activate();
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglEnable(GL_BLEND);
@@ -65,7 +67,6 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     frame.DrawWedgeBuffer(
       program, *caster, caster->Wedges[light.Light], WedgeCache::Attributes(), light);
   }
-  ostate->vtkglCullFace(GL_BACK);
   ostate->vtkglDisable(GL_CULL_FACE);
 
   // Cap by the part of the light above each visible point's own plane (GL_MIN).
@@ -85,10 +86,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglBlendEquation(GL_MIN);
     frame.FullScreen->Draw(horizon, this->HorizonVAO);
-    ostate->vtkglBlendEquation(GL_FUNC_ADD);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
   }
-  ostate->vtkglDisable(GL_DEPTH_CLAMP);
   frame.DepthCopy->Deactivate();
 }
 

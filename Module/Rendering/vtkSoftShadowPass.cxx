@@ -810,6 +810,8 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   penumbra::ShadowFrame frame = internals.MakeFrame();
   for (const auto& light : internals.Lights)
   {
+    // Each light's volumes and technique leave the state as they found it.
+    penumbra::ScopedDrawState saved(ostate);
     // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
     // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
     // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
