@@ -7,12 +7,15 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRayTracedVisibility.h"
@@ -205,6 +208,66 @@ inline void CheckAgainstTruth(
     name + ": shadow in view (" + std::to_string(c.Shadowed) + " px)");
   Check(c.MismatchFraction() <= 0.002, name + ": agrees with ray-traced truth");
 }
+
+/// A window with one renderer drawn through a vtkSoftShadowPass, lit by one positional scene
+/// light, and helpers to add casters and compare the shadows with the truth.
+struct PassScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkSoftShadowPass> Pass;
+  vtkNew<vtkLight> Light;
+  std::vector<vtkSmartPointer<vtkObject>> Keep;
+
+  explicit PassScene(int width = 200, int height = 150)
+  {
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetBackground(0.1, 0.1, 0.2);
+    this->Renderer->SetPass(this->Pass);
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPositional(true);
+    this->Light->SetConeAngle(180);
+    this->Light->SetPosition(-2, 6, 3);
+    this->Light->SetFocalPoint(0, 0, 0);
+    this->Renderer->AddLight(this->Light);
+  }
+
+  vtkActor* Add(vtkPolyDataAlgorithm* source, double r, double g, double b)
+  {
+    auto actor = MakeActor(source, r, g, b);
+    this->Renderer->AddActor(actor);
+    this->Keep.push_back(source);
+    return actor;
+  }
+
+  vtkActor* Ground(double half = 5.0) { return this->Add(GroundSource(half), 0.85, 0.85, 0.8); }
+
+  vtkActor* Sphere(double x, double y, double z, double radius)
+  {
+    return this->Add(SphereSource(x, y, z, radius, 40, 20), 0.9, 0.3, 0.3);
+  }
+
+  vtkActor* Box(double x, double y, double z, double sx, double sy, double sz)
+  {
+    return this->Add(BoxSource(x, y, z, sx, sy, sz), 0.3, 0.5, 0.9);
+  }
+
+  void Camera(double px, double py, double pz, double fx, double fy, double fz)
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(px, py, pz);
+    camera->SetFocalPoint(fx, fy, fz);
+    camera->SetViewUp(0, 1, 0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  Comparison Render(int lightIndex = 0)
+  {
+    this->Window->Render();
+    return CompareWithTruth(this->Window, this->Renderer, this->Pass, lightIndex);
+  }
+};
 
 } // namespace penumbra_test
 
