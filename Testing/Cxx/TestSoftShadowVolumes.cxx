@@ -69,9 +69,18 @@ struct SceneWindow : PassScene
   }
 };
 
-void RunScene(const Scene& scene)
+/// What a scene is held to: the shares of shadowed pixels where counting may differ from
+/// averaging by more than 1/N and by more than one half, at a near-plane tolerance.
+struct Limits
 {
-  SceneWindow view(scene);
+  double NearTolerance;
+  double Step;
+  double Half;
+};
+
+void RunScene(const Scene& scene, const Limits& limits)
+{
+  SceneWindow view(scene, limits.NearTolerance);
   vtkRenderer* renderer = view.Renderer;
   vtkRenderWindow* window = view.Window;
   vtkSoftShadowPass* pass = view.Pass;
@@ -118,12 +127,14 @@ void RunScene(const Scene& scene)
   const double half = shadowed ? double(offHalf) / shadowed : 1.0;
   const double maeAveraged = truthPixels ? errorAveraged / truthPixels : 1.0;
   const double maeCounted = truthPixels ? errorCounted / truthPixels : 1.0;
-  std::printf("%-34s shadowed %6d px, differ > 1/N %.2f%%, > 0.5 %.2f%%; MAE vs truth: "
-              "averaged %.4f, counted %.4f\n",
-    scene.Name.c_str(), shadowed, 100.0 * step, 100.0 * half, maeAveraged, maeCounted);
+  std::printf(
+    "near/far %-5g %-34s shadowed %6d px, differ > 1/N %.2f%%, > 0.5 %.2f%%; MAE vs truth: "
+    "averaged %.4f, counted %.4f\n",
+    limits.NearTolerance, scene.Name.c_str(), shadowed, 100.0 * step, 100.0 * half, maeAveraged,
+    maeCounted);
   Check(shadowed > Width * Height / 100, scene.Name + ": shadow in view");
-  Check(step <= 0.01, scene.Name + ": counting equals averaging within 1/N");
-  Check(half <= 0.001, scene.Name + ": no counting pixel off by half");
+  Check(step <= limits.Step, scene.Name + ": counting equals averaging within 1/N");
+  Check(half <= limits.Half, scene.Name + ": no counting pixel off by half");
   Check(maeCounted <= maeAveraged + 0.01, scene.Name + ": as accurate as averaging");
 }
 
@@ -344,7 +355,10 @@ int main()
 
   for (const Scene& scene : scenes)
   {
-    RunScene(scene);
+    // The near plane at 1/100 of the far one, then at VTK's choice for a 24-bit depth buffer:
+    // the point comes from the depth buffer, whose steps grow tenfold (wedges.md).
+    RunScene(scene, { 0.01, 0.01, 0.001 });
+    RunScene(scene, { 0.001, 0.05, 0.005 });
   }
   TestAutomaticChoice(scenes[0]);
   TestReceiversBox();
