@@ -147,13 +147,11 @@ struct TechniqueCounts
 /// What a technique draws with this frame. The pass owns all of it.
 struct ShadowFrame
 {
-  vtkObject* Owner = nullptr; ///< the pass, for warnings
   vtkOpenGLRenderWindow* Window = nullptr;
   int Size[2] = { 0, 0 };
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
   const std::vector<CasterCache*>* Casters = nullptr;
-  Box Receivers; ///< the receivers' box the wedges are cut to
   /// The LI buffer (its framebuffer bound while a light's layer is drawn), its depth copy for
   /// the shaders to read, and its layers.
   LightIntensityBuffer* Buffer = nullptr;

@@ -944,14 +944,12 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
 penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
 {
   penumbra::ShadowFrame frame;
-  frame.Owner = this->Owner;
   frame.Window = this->Window;
   frame.Size[0] = this->Size[0];
   frame.Size[1] = this->Size[1];
   frame.WorldToClip = this->WorldToClip;
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
-  frame.Receivers = this->ReceiverBox;
   frame.Buffer = &this->LI;
   frame.DepthCopy = this->LI.GetDepthCopy();
   frame.LightIntensity = this->LI.GetLayers();
