@@ -25,13 +25,40 @@
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
+
+// Xlib's own header defines macros (None, Status, Bool...) that the tests' code must not see.
+extern "C"
+{
+  struct _XDisplay;
+  _XDisplay* XOpenDisplay(const char* name);
+}
 
 namespace penumbra_test
 {
+
+/**
+ * The process's X connection, retried: Xvfb refuses a few percent of rapid connects, the first
+ * one of a test process included (seen as "bad X server connection ... Aborting" from VTK, which
+ * does not retry). Null after 50 tries, 100 ms apart; VTK then reports it.
+ */
+inline void* OpenDisplayWithRetries()
+{
+  for (int attempt = 0; attempt < 50; ++attempt)
+  {
+    if (_XDisplay* display = XOpenDisplay(nullptr))
+    {
+      return display;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return nullptr;
+}
 
 /**
  * An offscreen render window sharing one X connection with every other window of the process.
@@ -44,6 +71,10 @@ inline vtkSmartPointer<vtkRenderWindow> NewRenderWindow()
   if (!anchor)
   {
     anchor = vtkSmartPointer<vtkRenderWindow>::New();
+    if (void* display = OpenDisplayWithRetries())
+    {
+      anchor->SetDisplayId(display);
+    }
     anchor->SetOffScreenRendering(1);
     anchor->SetSize(1, 1);
     anchor->Render();
