@@ -199,11 +199,8 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   frame.DepthCopy->Activate();
 
-  const float viewport[2] = { static_cast<float>(frame.Size[0]),
-    static_cast<float>(frame.Size[1]) };
-  program->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
+  frame.SetDepthUniforms(program);
   program->SetUniformi("counters", 0);
-  program->SetUniform2f("viewportSize", viewport);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
   // origin for a positional light, or directions, which no origin moves.

@@ -127,6 +127,14 @@ void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
   this->Buffer->AttachColour(texture, layer);
 }
 
+void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program) const
+{
+  const float viewport[2] = { static_cast<float>(this->Size[0]),
+    static_cast<float>(this->Size[1]) };
+  program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
+  program->SetUniform2f("viewportSize", viewport);
+}
+
 void ShadowFrame::DrawResolve(float lightIntensity)
 {
   vtkShaderProgram* program = this->Programs->Ready(this->Window, penumbraResolveVS,
@@ -147,7 +155,6 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
     return;
   }
   vtkOpenGLState* ostate = this->Window->GetState();
-  ScopedDrawState saved(ostate);
   // A point inside a wedge lies behind its front faces and in front of its back faces. When
   // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
   // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
@@ -160,8 +167,7 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
   ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
   ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
   const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), buffer.Origin));
-  const glm::mat4 fromClip(
-    glm::translate(glm::dmat4(1.0), -buffer.Origin) * glm::inverse(this->WorldToClip));
+  const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -buffer.Origin) * this->ClipToWorld);
   const glm::vec4 lightWedge(buffer.LightInWedgeSpace());
   program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
   program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));

@@ -150,6 +150,7 @@ struct ShadowFrame
   vtkOpenGLRenderWindow* Window = nullptr;
   int Size[2] = { 0, 0 };
   glm::dmat4 WorldToClip{ 1.0 };
+  glm::dmat4 ClipToWorld{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
   const std::vector<CasterCache*>* Casters = nullptr;
   /// The LI buffer (its framebuffer bound while a light's layer is drawn), its depth copy for
@@ -165,11 +166,15 @@ struct ShadowFrame
   /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
   /// and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
+  /// Sets the uniforms every shader that reads the scene depth declares: the depth copy's
+  /// texture unit (activated by the caller) and the viewport size.
+  void SetDepthUniforms(vtkShaderProgram* program) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.
   void DrawResolve(float lightIntensity);
   /// Draws one caster's wedge buffer (either kind), if it has any, with the program bound: front
-  /// or back faces as the eye and near plane allow, in wedge coordinates.
+  /// or back faces as the eye and near plane allow, in wedge coordinates. It sets the culled face
+  /// and the depth function: its callers hold a ScopedDrawState, not it, as it runs per caster.
   void DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& caster, WedgeBuffer& buffer,
     const std::vector<VertexAttribute>& attributes, const ShadowLight& light);
 };

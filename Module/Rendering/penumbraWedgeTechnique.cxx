@@ -53,10 +53,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
   ostate->vtkglEnable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
 
-  program->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
-  const float viewport[2] = { static_cast<float>(frame.Size[0]),
-    static_cast<float>(frame.Size[1]) };
-  program->SetUniform2f("viewportSize", viewport);
+  frame.SetDepthUniforms(program);
   program->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
   for (CasterCache* caster : *frame.Casters)
   {
@@ -75,11 +72,9 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
   if (horizon)
   {
     const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
-    const glm::mat4 fromClip(
-      glm::translate(glm::dmat4(1.0), -origin) * glm::inverse(frame.WorldToClip));
+    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -origin) * frame.ClipToWorld);
     const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
-    horizon->SetUniformi("depthTexture", frame.DepthCopy->GetTextureUnit());
-    horizon->SetUniform2f("viewportSize", viewport);
+    frame.SetDepthUniforms(horizon);
     horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
     horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
     horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));

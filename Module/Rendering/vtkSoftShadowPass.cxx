@@ -44,6 +44,7 @@
 
 #include "penumbraCulling.h"
 #include "penumbraLightSamples.h"
+#include "penumbraMatrices.h"
 #include "penumbraShadowVolume.h"
 
 #include "penumbraReceiverDec.h"
@@ -160,14 +161,8 @@ public:
     vtkMatrix3x3* normals;
     static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
       ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
-    // VTK keeps its key matrices transposed for OpenGL: element [i][j] is glm's column i, row j.
-    for (int i = 0; i < 4; ++i)
-    {
-      for (int j = 0; j < 4; ++j)
-      {
-        this->WorldToClip[i][j] = worldToClip->GetElement(i, j);
-      }
-    }
+    // VTK keeps its key matrices transposed for OpenGL.
+    this->WorldToClip = glm::transpose(penumbra::ToGlm(worldToClip));
     const glm::dmat4 clipToWorld = glm::inverse(this->WorldToClip);
     const std::array<glm::dvec2, 4> ndc = { { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } } };
     for (int i = 0; i < 4; ++i)
@@ -786,17 +781,9 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   }
 
   ostate->PushFramebufferBindings();
-  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  penumbra::ScopedDrawState saved(ostate);
   vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable stencilTest(ostate, GL_STENCIL_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
-  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
-  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
-  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_BLEND);
@@ -804,14 +791,12 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
   penumbra::ShadowFrame frame = internals.MakeFrame();
   for (const auto& light : internals.Lights)
   {
     // Each light's volumes and technique leave the state as they found it.
-    penumbra::ScopedDrawState saved(ostate);
+    penumbra::ScopedDrawState savedForLight(ostate);
     // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
     // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
     // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
@@ -864,8 +849,6 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   this->NumberOfFullViewportWedges = frame.Counts.FullViewportWedges;
   this->NumberOfPlateauTriangles = frame.Counts.PlateauTriangles;
   this->NumberOfCountedLights = frame.Counts.CountedLights;
-  ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
-  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   ostate->PopFramebufferBindings();
 }
 
@@ -948,6 +931,7 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.Size[0] = this->Size[0];
   frame.Size[1] = this->Size[1];
   frame.WorldToClip = this->WorldToClip;
+  frame.ClipToWorld = glm::inverse(this->WorldToClip);
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
   frame.Buffer = &this->LI;
