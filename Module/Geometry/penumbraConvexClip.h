@@ -43,6 +43,10 @@ struct Box
   glm::dvec3 Min{ 0.0 }, Max{ 0.0 };
 
   bool Contains(const Box& other) const;
+  bool operator==(const Box& other) const
+  {
+    return this->Valid == other.Valid && this->Min == other.Min && this->Max == other.Max;
+  }
   double Diagonal() const { return this->Valid ? glm::length(this->Max - this->Min) : 0.0; }
   /// Grows the box to hold [min, max] (the first call sets it).
   void Extend(const glm::dvec3& min, const glm::dvec3& max);

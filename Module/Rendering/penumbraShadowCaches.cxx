@@ -187,7 +187,7 @@ enum class WedgeShape
 
 /// Where an edge's fragments can be: its Wedge, or else its LightPyramid, as half-spaces.
 WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
-  double radius, Wedge& wedge, std::vector<HalfSpace>& halfSpaces)
+  double radius, Wedge& wedge, LightPyramid& pyramid, std::vector<HalfSpace>& halfSpaces)
 {
   wedge = Wedge::Build(from, to, light, radius);
   if (wedge.Valid)
@@ -195,7 +195,7 @@ WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dv
     halfSpaces = wedge.HalfSpaces();
     return WedgeShape::Planes;
   }
-  const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
+  pyramid = LightPyramid::Build(from, to, light, radius);
   if (pyramid.Valid)
   {
     halfSpaces = pyramid.HalfSpaces();
@@ -206,10 +206,10 @@ WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dv
 }
 
 /// Appends one edge's fragments' bound, every vertex carrying `attributes`. With a receivers'
-/// box (wedge coordinates) it is the bound cut to the box (and to `sector`): a closed convex
-/// polyhedron. Without one, the wedge or pyramid whole, reaching to infinity, or, for an edge
-/// with neither, a clockwise full-viewport triangle (w = 2, clip space, on the far plane) that
-/// back-face culling keeps: exact but costly.
+/// box (wedge coordinates) it is the bound cut to the box (and, given the edge's two `faces`, to
+/// its silhouette sector): a closed convex polyhedron. Without one, the wedge or pyramid whole,
+/// reaching to infinity, or, for an edge with neither, a clockwise full-viewport triangle (w = 2,
+/// clip space, on the far plane) that back-face culling keeps: exact but costly.
 WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
   double radius, const Box& receivers, const EdgeFace* faces, bool frontFacesOnly,
   const float* attributes, int attributeCount, std::vector<float>& vertices,
@@ -236,8 +236,9 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
     }
   };
   Wedge wedge;
+  LightPyramid pyramid;
   std::vector<HalfSpace> halfSpaces;
-  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, halfSpaces);
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
   if (receivers.Valid)
   {
     if (faces && wedge.Valid)
@@ -267,7 +268,6 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
   }
   else if (shape == WedgeShape::Pyramid)
   {
-    const LightPyramid pyramid = LightPyramid::Build(from, to, light, radius);
     emitShape(pyramid.Vertices, LightPyramid::Triangles());
   }
   else
@@ -285,12 +285,11 @@ glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
   return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
 }
 
-bool WedgeBuffer::BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
-  double radius, const Box& receivers) const
+bool WedgeBuffer::BuiltFor(
+  const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius) const
 {
   return this->ObjectToWorld == objectToWorld && this->LightWorld == lightWorld &&
-    this->Radius == radius && this->Receivers.Valid == receivers.Valid &&
-    this->Receivers.Min == receivers.Min && this->Receivers.Max == receivers.Max;
+    this->Radius == radius;
 }
 
 void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
@@ -304,7 +303,7 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
                                      : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   this->Vertices.clear();
   this->Indices.clear();
-  this->Wedges = this->Fallbacks = this->FullViewport = this->Skipped = 0;
+  this->Wedges = this->Fallbacks = this->FullViewport = 0;
   this->Uploaded = false;
 }
 
@@ -318,8 +317,7 @@ void WedgeBuffer::AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const
     faces, frontFacesOnly, attributes, attributeCount, this->Vertices, this->Indices);
   if (shape == WedgeShape::Nothing)
   {
-    ++this->Skipped;
-    return;
+    return; // the bound misses the receivers' box: nothing to draw
   }
   // Pyramids and edges with no bound of their own are both fallbacks: their caster's wedges are
   // drawn by back faces.
@@ -362,7 +360,7 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
 {
   this->Used = true;
   if (this->VolumeGeneration == centre.Generation &&
-    this->BuiltFor(objectToWorld, lightWorld, radius, receivers))
+    this->BuiltFor(objectToWorld, lightWorld, radius) && this->Receivers == receivers)
   {
     return false;
   }
@@ -395,20 +393,16 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
 {
   this->Used = true;
   const bool sameSilhouette = this->MeshGeneration == mesh.Generation &&
-    this->BuiltFor(objectToWorld, lightWorld, radius, this->Receivers) &&
-    this->FrontFacesOnly == frontFacesOnly;
-  if (sameSilhouette && this->BuiltFor(objectToWorld, lightWorld, radius, receivers))
+    this->BuiltFor(objectToWorld, lightWorld, radius) && this->FrontFacesOnly == frontFacesOnly;
+  if (sameSilhouette && this->Receivers == receivers)
   {
     return false;
   }
-  // The receivers' box changes only the wedges, not which edges are potential silhouettes.
-  std::vector<std::uint32_t> potential = std::move(this->Potential);
   this->Reset(objectToWorld, lightWorld, radius, receivers);
   this->VerticesBuilt = false;
   if (sameSilhouette)
   {
-    this->Potential = std::move(potential);
-    return false;
+    return false; // the receivers' box changes the wedges, not which edges are potential
   }
   this->MeshGeneration = mesh.Generation;
   this->FrontFacesOnly = frontFacesOnly;

@@ -114,7 +114,6 @@ struct WedgeBuffer
   glm::dvec4 LightWorld{ 0.0 };
   double Radius = -1.0;
   Box Receivers;                ///< world space; no receiver lies outside it
-  std::size_t Skipped = 0;      ///< edges whose wedge misses the receivers' box: nothing is drawn
   std::size_t Wedges = 0;       ///< edges with a proper wedge
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
@@ -133,9 +132,9 @@ struct WedgeBuffer
   /// `program`; DrawWedgeBuffer releases both.
   void Bind(vtkShaderProgram* program, const std::vector<VertexAttribute>& attributes);
   void ReleaseGraphicsResources();
-  /// Whether the buffer was built for these inputs.
-  bool BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
-    const Box& receivers) const;
+  /// Whether the buffer was built for this caster matrix and light (its Receivers say for which
+  /// box).
+  bool BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius) const;
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
     const Box& receivers);
