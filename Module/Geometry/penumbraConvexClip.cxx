@@ -149,6 +149,19 @@ ConvexPolyhedron Triangulate(const std::vector<Polygon>& polygons, double tolera
 }
 } // namespace
 
+double ConvexPolyhedron::Volume() const
+{
+  double volume = 0.0;
+  for (std::size_t t = 0; t + 2 < this->Triangles.size(); t += 3)
+  {
+    const glm::dvec3 &a = this->Points[this->Triangles[t]],
+                     &b = this->Points[this->Triangles[t + 1]],
+                     &c = this->Points[this->Triangles[t + 2]];
+    volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  return volume;
+}
+
 bool Box::Contains(const Box& other) const
 {
   return this->Valid && other.Valid && glm::all(glm::lessThanEqual(this->Min, other.Min)) &&

@@ -34,6 +34,8 @@ struct ConvexPolyhedron
   std::vector<glm::dvec3> Points;
   std::vector<std::uint32_t> Triangles; ///< three indices into Points per triangle
   bool Empty() const { return this->Triangles.empty(); }
+  /// The enclosed volume (positive for outward triangles), by the divergence theorem.
+  VTKPENUMBRAGEOMETRY_EXPORT double Volume() const;
 };
 
 /// An axis-aligned box; Valid is false for the unbounded case (no box to cut to).

@@ -36,19 +36,6 @@ bool InsideAll(const glm::dvec3& x, const Box& box, const std::vector<HalfSpace>
   return true;
 }
 
-double Volume(const ConvexPolyhedron& shape)
-{
-  double volume = 0.0;
-  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
-  {
-    const glm::dvec3 &a = shape.Points[shape.Triangles[t]],
-                     &b = shape.Points[shape.Triangles[t + 1]],
-                     &c = shape.Points[shape.Triangles[t + 2]];
-    volume += glm::dot(a, glm::cross(b, c)) / 6.0;
-  }
-  return volume;
-}
-
 /// Every directed edge has its reverse exactly once: a closed, consistently wound surface.
 bool Closed(const ConvexPolyhedron& shape)
 {
@@ -147,7 +134,7 @@ void TestRandomCuts(std::mt19937& rng)
       }
     }
     pointsInside += allInside;
-    volumesAgree += std::abs(Volume(shape) - estimate) <= 4.0 * sigma;
+    volumesAgree += std::abs(shape.Volume() - estimate) <= 4.0 * sigma;
   }
   std::printf("%d cuts: %d non-empty, %d empty\n", trials, nonEmpty, empties);
   Check(nonEmpty > trials / 3 && empties > 0, "the cuts cover both outcomes");
@@ -166,21 +153,22 @@ void TestSpecialCases()
   box.Min = glm::dvec3(-1.0);
   box.Max = glm::dvec3(2.0, 1.0, 1.0);
   const ConvexPolyhedron whole = ClipBox(box, {});
-  Check(Closed(whole) && std::abs(Volume(whole) - 12.0) < 1e-12, "no half-space: the box");
+  Check(Closed(whole) && std::abs(whole.Volume() - 12.0) < 1e-12, "no half-space: the box");
   Check(ClipBox(box, { { { 1, 0, 0 }, -1.5 } }).Empty(), "a half-space beside the box: nothing");
   const ConvexPolyhedron held = ClipBox(box, { { { 1, 0, 0 }, 5.0 } });
-  Check(std::abs(Volume(held) - 12.0) < 1e-12 && held.Points.size() == 8,
+  Check(std::abs(held.Volume() - 12.0) < 1e-12 && held.Points.size() == 8,
     "a half-space that holds the box changes nothing");
   const ConvexPolyhedron faceOn = ClipBox(box, { { { 1, 0, 0 }, 2.0 } });
   Check(Closed(faceOn) && faceOn.Triangles.size() == 36,
     "a plane on a face of the box leaves one face there, not two");
   const ConvexPolyhedron halfBox = ClipBox(box, { { { 2, 0, 0 }, 1.0 } });
-  Check(Closed(halfBox) && std::abs(Volume(halfBox) - 6.0) < 1e-12,
+  Check(Closed(halfBox) && std::abs(halfBox.Volume() - 6.0) < 1e-12,
     "an unnormalized normal cuts where its plane is");
   Check(ClipBox(Box{}, {}).Empty(), "no box: nothing");
   const ConvexPolyhedron ignored = ClipBox(
     box, { { { 0, 0, 0 }, 1.0 }, { { std::nan(""), 0, 0 }, 0.0 }, { { 1, 0, 0 }, INFINITY } });
-  Check(std::abs(Volume(ignored) - 12.0) < 1e-12, "zero, NaN and infinite half-spaces are ignored");
+  Check(
+    std::abs(ignored.Volume() - 12.0) < 1e-12, "zero, NaN and infinite half-spaces are ignored");
   const ConvexPolyhedron sliver = ClipBox(box, { { { 1, 0, 0 }, -1.0 + 1e-14 } });
   Check(sliver.Empty(), "a cut thinner than 1e-12 of the box leaves nothing");
 }

@@ -235,19 +235,6 @@ bool InsidePolyhedron(const ConvexPolyhedron& shape, const glm::dvec3& x, double
   return !shape.Empty();
 }
 
-double Volume(const ConvexPolyhedron& shape)
-{
-  double volume = 0.0;
-  for (std::size_t t = 0; t < shape.Triangles.size(); t += 3)
-  {
-    volume +=
-      glm::dot(shape.Points[shape.Triangles[t]],
-        glm::cross(shape.Points[shape.Triangles[t + 1]], shape.Points[shape.Triangles[t + 2]])) /
-      6.0;
-  }
-  return volume;
-}
-
 /**
  * The region the pass draws for a two-faced potential silhouette edge, its wedge cut to a box
  * and to SilhouetteSector, must hold every point where the edge changes some sample's count.
@@ -304,7 +291,7 @@ int CountRegionMisses(const Caster& caster, const glm::dvec4& light, double radi
       continue;
     }
     std::vector<HalfSpace> planes = wedge.HalfSpaces();
-    wedgeVolume += Volume(ClipBox(box, planes));
+    wedgeVolume += ClipBox(box, planes).Volume();
     for (HalfSpace half : SilhouetteSector(wedge, a, b, faces, 2, frontOnly, 1e-6))
     {
       if (flipSector)
@@ -314,7 +301,7 @@ int CountRegionMisses(const Caster& caster, const glm::dvec4& light, double radi
       planes.push_back(half);
     }
     const ConvexPolyhedron region = ClipBox(box, planes);
-    cutVolume += Volume(region);
+    cutVolume += region.Volume();
     ++cuts;
     cutPoints += region.Points.size();
     cutTriangles += region.Triangles.size() / 3;

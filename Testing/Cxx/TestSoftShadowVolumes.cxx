@@ -69,6 +69,38 @@ struct SceneWindow : PassScene
   }
 };
 
+/// Of the pixels either image shadows (`Shadowed`), the shares where counting and averaging
+/// differ by more than 1/N and by more than one half.
+struct Agreement
+{
+  int Shadowed = 0;
+  double Step = 1.0;
+  double Half = 1.0;
+};
+
+Agreement Compare(const std::vector<float>& averaged, const std::vector<float>& counted)
+{
+  Agreement agreement;
+  int offStep = 0, offHalf = 0;
+  for (std::size_t i = 0; i < averaged.size(); ++i)
+  {
+    if (!(averaged[i] < 1.0f || counted[i] < 1.0f))
+    {
+      continue;
+    }
+    ++agreement.Shadowed;
+    const float difference = std::abs(averaged[i] - counted[i]);
+    offStep += difference > 1.0f / Samples + 1e-4f;
+    offHalf += difference > 0.5f;
+  }
+  if (agreement.Shadowed)
+  {
+    agreement.Step = double(offStep) / agreement.Shadowed;
+    agreement.Half = double(offHalf) / agreement.Shadowed;
+  }
+  return agreement;
+}
+
 /// What a scene is held to: the shares of shadowed pixels where counting may differ from
 /// averaging by more than 1/N and by more than one half, at a near-plane tolerance.
 struct Limits
@@ -102,7 +134,9 @@ void RunScene(const Scene& scene, const Limits& limits)
   auto trueValues =
     vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
 
-  int shadowed = 0, offStep = 0, offHalf = 0;
+  const Agreement agreement = Compare(averaged, counted);
+  const int shadowed = agreement.Shadowed;
+  const double step = agreement.Step, half = agreement.Half;
   double errorAveraged = 0.0, errorCounted = 0.0;
   int truthPixels = 0;
   for (std::size_t i = 0; i < averaged.size(); ++i)
@@ -114,17 +148,7 @@ void RunScene(const Scene& scene, const Limits& limits)
       errorAveraged += std::abs(averaged[i] - t);
       errorCounted += std::abs(counted[i] - t);
     }
-    if (!(averaged[i] < 1.0f || counted[i] < 1.0f))
-    {
-      continue;
-    }
-    ++shadowed;
-    const float difference = std::abs(averaged[i] - counted[i]);
-    offStep += difference > 1.0f / Samples + 1e-4f;
-    offHalf += difference > 0.5f;
   }
-  const double step = shadowed ? double(offStep) / shadowed : 1.0;
-  const double half = shadowed ? double(offHalf) / shadowed : 1.0;
   const double maeAveraged = truthPixels ? errorAveraged / truthPixels : 1.0;
   const double maeCounted = truthPixels ? errorCounted / truthPixels : 1.0;
   std::printf(
@@ -206,23 +230,6 @@ void TestAutomaticChoice(const Scene& base)
   }
 }
 
-/// Of the pixels either image shadows, the share where they differ by more than 1/N; `shadowed`
-/// is set to their number.
-double ShareOffStep(const std::vector<float>& a, const std::vector<float>& b, int& shadowed)
-{
-  int off = 0;
-  shadowed = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-  {
-    if (a[i] < 1.0f || b[i] < 1.0f)
-    {
-      ++shadowed;
-      off += std::abs(a[i] - b[i]) > 1.0f / Samples + 1e-4f;
-    }
-  }
-  return shadowed ? double(off) / shadowed : 1.0;
-}
-
 /// Counting wedges are cut to the receivers' box (penumbra::StableReceiverBox): a receiver that
 /// moves within the kept box changes no wedge, one that leaves it gets wedges cut to a new box.
 /// Either way the counted image must stay the averaged one: a stale box would cut the moved
@@ -251,8 +258,9 @@ void TestReceiversBox()
     const vtkIdType before = pass->GetNumberOfSilhouetteUpdates(); // counts every rebuild
     view.Window->Render(); // changes nothing the first did not
     const vtkIdType updates = pass->GetNumberOfSilhouetteUpdates() - before;
-    int shadowed = 0;
-    const double off = ShareOffStep(averaged, Visibility(pass), shadowed);
+    const Agreement agreement = Compare(averaged, Visibility(pass));
+    const int shadowed = agreement.Shadowed;
+    const double off = agreement.Step;
     std::printf("ground lowered by %.1f: shadowed %d px, counting differs from averaging by more "
                 "than 1/N on %.2f%%\n",
       drop, shadowed, 100.0 * off);
