@@ -51,7 +51,8 @@ class Scene:
         ground = vtkPlaneSource()
         ground.SetOrigin(-6, -6, 0), ground.SetPoint1(6, -6, 0), ground.SetPoint2(-6, 6, 0)
         self.renderer = vtkRenderer()
-        for source in (self.sphere, cone, ground):
+        self.sources = (self.sphere, cone, ground)
+        for source in self.sources:
             self.renderer.AddActor(actor_of(source))
         self.light = penumbra.add_light(self.renderer, (-3.0, -2.0, 9.0))
         self.window = vtkRenderWindow()
@@ -71,6 +72,16 @@ class Scene:
         self.sphere.Update()
         penumbra.vtkSoftShadowPass.SetLightRadius(self.light, radius)
         self.renderer.ResetCameraClippingRange()
+
+    def triangles(self):
+        """Triangles the casters and the ground draw (polygons fanned into triangles)."""
+        count = 0
+        for source in self.sources:
+            source.Update()
+            polys = source.GetOutput().GetPolys()
+            for c in range(polys.GetNumberOfCells()):
+                count += max(0, polys.GetCellSize(c) - 2)
+        return count
 
     def time(self, method, frames):
         if method == "none":
@@ -115,7 +126,7 @@ def main():
         radius = change.get("radius", DEFAULT_RADIUS)
         resolution = change.get("resolution", DEFAULT_RESOLUTION)
         scene.configure(size, radius, resolution)
-        triangles = scene.sphere.GetOutput().GetNumberOfPolys() + 96 + 1
+        triangles = scene.triangles()
         row = {"sweep": sweep, "width": size[0], "height": size[1], "radius": radius,
                "triangles": triangles}
         for method in METHODS:
