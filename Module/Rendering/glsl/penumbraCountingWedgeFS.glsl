@@ -63,9 +63,21 @@ void main()
   vec3 u = fromP * scale;
   vec3 e = edge * scale;
   vec3 n = cross(u, e);
-  vec3 alongAxis = cross(e, n);
-  float alongCentre = dot(towardsCentre * lightScale, alongAxis);
+  vec3 alongAxis = cross(e, n) * lightScale;
+  float alongCentre = dot(towardsCentre, alongAxis);
   float beyond = lightWedge.w != 0.0 ? dot(n, n) : 0.0;
+
+  // Each of SampleCrossing's four tests is linear in the sample s, so one matrix takes s to all
+  // four (triple products rearranged): the side of the plane through the edge and s, the sides
+  // of the edge's ends from the plane through p and the path to s, and the path's end along the
+  // edge's normal. The ends' expressions depend on p, the end and the path alone, so edges that
+  // share an end still decide it alike.
+  vec3 pathFrom = cross(fromP, towardsCentre);
+  vec3 pathTo = cross(edgeToVS - p, towardsCentre);
+  vec3 sampleSide = cross(fromP, edge);
+  mat4x3 toTests = mat4x3(sampleSide, pathFrom, pathTo, alongAxis);
+  vec4 atCentre = lightWedge.w *
+    vec4(dot(edgeFromVS, sampleSide), dot(p, pathFrom), dot(p, pathTo), dot(p, alongAxis));
 
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
   {
@@ -77,24 +89,13 @@ void main()
       {
         break;
       }
-      vec3 towardsSample = lightSamples[i].xyz - lightSamples[i].w * p;
-      float ds = dot(fromP, cross(edge, lightSamples[i].xyz - lightSamples[i].w * edgeFromVS));
-      if (!((dc < 0.0 && ds > 0.0) || (dc > 0.0 && ds < 0.0)))
-      {
-        continue;
-      }
-      // The edge's ends on opposite sides of the plane (p, path): the same expression for every
-      // edge that shares an end, so edges meeting at a vertex decide it alike.
-      vec3 pathNormal = cross(towardsCentre, towardsSample);
-      float sa = dot(edgeFromVS - p, pathNormal);
-      float sb = dot(edgeToVS - p, pathNormal);
-      if (!((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)))
-      {
-        continue;
-      }
-      float t = dc / (dc - ds);
-      float along = alongCentre + t * (dot(towardsSample * lightScale, alongAxis) - alongCentre);
-      if (lightWedge.w != 0.0 ? along >= beyond : along > 0.0)
+      vec4 tests = lightSamples[i].xyz * toTests - atCentre; // (ds, sa, sb, along the normal)
+      float ds = tests.x;
+      bool crossesEdgePlane = dc != 0.0 && ds != 0.0 && (dc < 0.0) != (ds < 0.0);
+      bool crossesPath = tests.y != 0.0 && tests.z != 0.0 && (tests.y < 0.0) != (tests.z < 0.0);
+      float along = alongCentre + dc / (dc - ds) * (tests.w - alongCentre);
+      bool nearer = lightWedge.w != 0.0 ? along >= beyond : along > 0.0;
+      if (crossesEdgePlane && crossesPath && nearer)
       {
         int change = ds > 0.0 ? -multiplicity : multiplicity;
         changes += uint(change) << uint(8 * field);
