@@ -212,6 +212,17 @@ int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b
   return ds > 0.0 ? 1 : -1;
 }
 
+bool EdgePlaneMissesSamples(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+  const glm::dvec4& centre, double spread)
+{
+  // cross(a - p, b - a) . (centre - w a) is the centre's side of the plane (p, a, b) times its
+  // normal's length; a sample moves it by at most spread times that length.
+  const glm::dvec3 sampleSide = glm::cross(a - p, b - a);
+  const glm::dvec3 edgeToCentre = glm::dvec3(centre) - centre.w * a;
+  return std::abs(glm::dot(edgeToCentre, sampleSide)) >
+    (spread + 1e-5 * glm::length(edgeToCentre)) * glm::length(sampleSide);
+}
+
 bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
 {
   double potential = 0.0, weighted = 0.0, silhouettes = 0.0;

@@ -120,6 +120,16 @@ VTKPENUMBRAGEOMETRY_EXPORT double SideOfEdgePlane(
 VTKPENUMBRAGEOMETRY_EXPORT int SampleCrossing(const glm::dvec3& p, const glm::dvec3& a,
   const glm::dvec3& b, const glm::dvec4& centre, const glm::dvec4& sample);
 
+/**
+ * Whether no light sample within `spread` of `centre` (|sample - centre|: both points, or both
+ * directions) can cross the edge a -> b as seen from p: the plane (p, a, b) passes farther than
+ * `spread` from the centre, so every sample lies on the centre's side of it and SampleCrossing
+ * is 0 for all. A float margin of 1e-5 of the centre's distance keeps the counting shader's own
+ * copy of this test on the safe side of rounding. Degenerate input gives false.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool EdgePlaneMissesSamples(const glm::dvec3& p, const glm::dvec3& a,
+  const glm::dvec3& b, const glm::dvec4& centre, double spread);
+
 /// What the choice between counting and averaging the same light samples needs of one caster.
 struct CountingCost
 {

@@ -203,17 +203,23 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
-  // origin for a positional light, or directions, which no origin moves.
+  // origin for a positional light, or directions, which no origin moves. Their spread about the
+  // centre lets a fragment skip an edge whose plane through it misses them all
+  // (penumbra::EdgePlaneMissesSamples).
+  const glm::dvec3 centre = light.World.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(light.World);
   std::vector<float> samples;
   samples.reserve(4 * sampleCount);
+  double spread = 0.0;
   for (const glm::dvec4& sample : light.CountingSamples)
   {
     const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
     samples.insert(samples.end(),
       { static_cast<float>(position.x), static_cast<float>(position.y),
         static_cast<float>(position.z), static_cast<float>(sample.w) });
+    spread = std::max(spread, glm::length(position - centre));
   }
   program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
+  program->SetUniformf("sampleSpread", static_cast<float>(spread));
   for (CasterCache* caster : *frame.Casters)
   {
     if (caster->Culled.count(light.Light))

@@ -396,6 +396,52 @@ void TestDegenerate()
   Check(MultiplicityFrom({ 0, 0, 1 }, a, &face, 1, false) == 0, "NaN normal");
 }
 
+/// EdgePlaneMissesSamples may skip an edge only where no sample crosses it, and must skip a fair
+/// share of random points (most planes through a random point and edge miss a small light);
+/// with the spread understated tenfold (the mutation) it must skip crossings.
+void TestEdgePlaneMisses(
+  const std::vector<std::pair<glm::dvec4, double>>& lights, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  auto point = [&]() { return glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  for (const auto& light : lights)
+  {
+    const glm::dvec4 centre = light.first;
+    const std::vector<glm::dvec4> samples = SpreadLightSamples(
+      centre, centre.w != 0.0 ? light.second : glm::degrees(light.second), 16, glm::dvec3(0.0));
+    double spread = 0.0;
+    for (const glm::dvec4& s : samples)
+    {
+      spread = std::max(spread, glm::length(glm::dvec3(s) - glm::dvec3(centre)));
+    }
+    int skipped = 0, wronglySkipped = 0, understatedMisses = 0;
+    const int trials = 4000;
+    for (int trial = 0; trial < trials; ++trial)
+    {
+      const glm::dvec3 p = point(), a = point(), b = a + 0.3 * (point() - a);
+      bool crosses = false;
+      for (const glm::dvec4& s : samples)
+      {
+        crosses = crosses || SampleCrossing(p, a, b, centre, s) != 0;
+      }
+      const bool skip = EdgePlaneMissesSamples(p, a, b, centre, spread);
+      skipped += skip;
+      wronglySkipped += skip && crosses;
+      understatedMisses += crosses && EdgePlaneMissesSamples(p, a, b, centre, 0.1 * spread);
+    }
+    std::printf("light w=%g: %d of %d edges skipped, %d wrongly; understated spread: %d\n",
+      centre.w, skipped, trials, wronglySkipped, understatedMisses);
+    Check(wronglySkipped == 0, "an edge is skipped only where no sample crosses it");
+    Check(skipped > trials / 4, "the test skips most edges a small light cannot see");
+    Check(understatedMisses > 0, "an understated spread is caught");
+  }
+  const double nan = std::nan("");
+  Check(!EdgePlaneMissesSamples({ nan, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 3, 1 }, 0.1),
+    "NaN p: not skipped");
+  Check(!EdgePlaneMissesSamples({ 2, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 3, 1 }, 0.1),
+    "p on the edge's line: not skipped");
+}
+
 void TestPotentialSilhouetteIsSmall()
 {
   // A far small light sees few potential silhouette edges on a fine closed sphere, and the
@@ -470,6 +516,7 @@ int main()
   }
   Check(totalNonZero > total / 20, "enough occluded samples to test the edge terms");
   TestWedgeRegions(casters, lights, rng);
+  TestEdgePlaneMisses(lights, rng);
   // The mutation: the edge term with the wrong sign must be caught.
   int compared = 0, nonZero = 0;
   const int mutated =

@@ -15,6 +15,7 @@ layout(early_fragment_tests) in;
 //PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;    // (centre, 1) or (direction towards the light, 0), wedge coordinates
 uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT]; // wedge coordinates, same w as lightWedge
+uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
 layout(r32ui) uniform uimage3D counters;
@@ -50,10 +51,20 @@ void main()
   {
     discard; // not a silhouette seen from p
   }
+  // No sample can cross where the plane (p, edge) passes farther from the centre than the
+  // samples spread (penumbra::EdgePlaneMissesSamples, with the same margin).
+  vec3 edge = edgeToVS - edgeFromVS;
+  vec3 sampleSide = cross(fromP, edge);
+  vec3 edgeToCentre = lightWedge.xyz - lightWedge.w * edgeFromVS;
+  if (abs(dot(edgeToCentre, sampleSide)) >
+    (sampleSpread + 1e-5 * length(edgeToCentre)) * length(sampleSide))
+  {
+    discard;
+  }
+
   // Sides of the plane (p, edge) as p's side of the planes through the edge and each light point
   // (penumbraSampleCounting.cxx, SampleCrossing): the centre's plane, from the CPU in double, is
   // its shadow volume's side, so the sign agrees with the rasterized centre count.
-  vec3 edge = edgeToVS - edgeFromVS;
   float dc = dot(fromP, centreNormalVS);
   vec3 towardsCentre = lightWedge.xyz - lightWedge.w * p;
   // The "in front and beyond the edge" test is homogeneous of degree 4 in lengths: scaled by
@@ -74,7 +85,6 @@ void main()
   // share an end still decide it alike.
   vec3 pathFrom = cross(fromP, towardsCentre);
   vec3 pathTo = cross(edgeToVS - p, towardsCentre);
-  vec3 sampleSide = cross(fromP, edge);
   mat4x3 toTests = mat4x3(sampleSide, pathFrom, pathTo, alongAxis);
   vec4 atCentre = lightWedge.w *
     vec4(dot(edgeFromVS, sampleSide), dot(p, pathFrom), dot(p, pathTo), dot(p, alongAxis));
