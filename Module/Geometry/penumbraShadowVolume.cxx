@@ -49,15 +49,16 @@ double ShadowVolume::LightSide(
   return glm::dot(normal, glm::dvec3(light) - light.w * point);
 }
 
-ShadowVolume ShadowVolume::Build(
-  const CasterTopology& topo, const glm::dvec4& light, bool mirrored, bool withCaps)
+ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored,
+  bool withCaps, CountingRule rule)
 {
   ShadowVolume volume;
   const auto n = static_cast<std::uint32_t>(topo.Points.size());
   const bool directional = light.w == 0.0;
 
   // Facing weight per triangle; see the counting rule in the header.
-  const bool frontFacesOnly = FrontFacesSuffice(topo, light);
+  const bool frontFacesOnly =
+    rule == CountingRule::FrontFacesWhereTheySuffice && FrontFacesSuffice(topo, light);
   std::vector<std::int8_t> weight(topo.Triangles.size());
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {

@@ -31,6 +31,16 @@ struct SilhouetteEdge
   std::uint32_t Multiplicity;
 };
 
+/// Which triangles a volume counts: front faces alone where they suffice (FrontFacesSuffice), a
+/// point's count then being 0 or 1 behind a closed mesh, or every triangle, the count then being
+/// the number of surfaces between the point and the light, as a translucent caster's
+/// transmission needs.
+enum class CountingRule
+{
+  FrontFacesWhereTheySuffice,
+  EveryTriangle
+};
+
 struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
 {
   std::vector<SilhouetteEdge> Silhouette;
@@ -50,8 +60,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
    * winding so that world-space volumes stay positively oriented. Without `withCaps` only the
    * silhouette and sides are built (enough for z-pass, and a fraction of the memory).
    */
-  static ShadowVolume Build(
-    const CasterTopology& topo, const glm::dvec4& light, bool mirrored, bool withCaps = true);
+  static ShadowVolume Build(const CasterTopology& topo, const glm::dvec4& light, bool mirrored,
+    bool withCaps = true, CountingRule rule = CountingRule::FrontFacesWhereTheySuffice);
 
   /// Whether front faces alone bound the shadow: a closed, oriented mesh lit from outside.
   static bool FrontFacesSuffice(const CasterTopology& topo, const glm::dvec4& light);

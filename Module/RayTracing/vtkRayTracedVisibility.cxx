@@ -59,6 +59,9 @@ struct Mesh
   std::vector<glm::dvec3> Points;
   std::vector<glm::uvec3> Triangles;
   bool Casts = true;
+  /// Below 1: a translucent surface, invisible to the eye rays (the pass shadows the nearest
+  /// opaque surface) and letting 1 - Opacity of a shadow ray through at each crossing.
+  double Opacity = 1.0;
 };
 
 /// What the shadow rays of one light need, positions relative to the scene origin.
@@ -206,7 +209,9 @@ class vtkRayTracedVisibility::vtkInternals
 public:
   RTCDevice Device = nullptr;
   RTCScene Primary = nullptr;
-  RTCScene Shadow = nullptr;
+  RTCScene Shadow = nullptr;      ///< opaque casters
+  RTCScene Translucent = nullptr; ///< translucent casters
+  bool HasTranslucentCasters = false;
   std::vector<Mesh> Meshes; ///< indexed by primary geometry ID
   glm::dvec3 Origin{ 0.0 };
   double Epsilon = 0.0;
@@ -229,10 +234,13 @@ public:
       rtcReleaseScene(this->Primary);
       this->Primary = nullptr;
     }
-    if (this->Shadow)
+    for (RTCScene* scene : { &this->Shadow, &this->Translucent })
     {
-      rtcReleaseScene(this->Shadow);
-      this->Shadow = nullptr;
+      if (*scene)
+      {
+        rtcReleaseScene(*scene);
+        *scene = nullptr;
+      }
     }
   }
 
@@ -269,6 +277,33 @@ public:
   /// The primary hit of pixel (i, j), its depth, and every light's visibility from it.
   void TracePixel(const PixelCamera& camera, int i, int j, const std::vector<ShadowLight>& lights,
     int samples, unsigned int seed, float* depth) const;
+
+  /// What the translucent casters let through along a shadow ray that no opaque caster blocks:
+  /// the product of 1 - opacity over every translucent surface it crosses, each found by
+  /// tracing on from just past the last one.
+  double Transmission(RTCRay ray) const
+  {
+    double transmission = 1.0;
+    const float farEnd = ray.tfar;
+    for (int crossing = 0; crossing < 256 && transmission > 0.0; ++crossing)
+    {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rayHit;
+      rayHit.ray = ray;
+      rayHit.ray.tfar = farEnd;
+      rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(this->Translucent, &context, &rayHit);
+      if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      {
+        break;
+      }
+      transmission *= 1.0 - this->Meshes[rayHit.hit.geomID].Opacity;
+      ray.tnear = rayHit.ray.tfar + static_cast<float>(this->Epsilon);
+    }
+    return transmission;
+  }
 
   /// Fraction of `light` seen from surface point p (relative to Origin) with unit normal n
   /// facing the viewer.
@@ -314,7 +349,7 @@ public:
     }
 
     const int rows = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples))));
-    int visible = 0;
+    double visible = 0.0;
     for (int k = 0; k < samples; ++k)
     {
       glm::dvec3 direction = w;
@@ -358,10 +393,11 @@ public:
       // rtcOccluded1 sets tfar to -inf on a hit.
       if (ray.tfar >= 0.0f)
       {
-        ++visible;
+        ray.tfar = static_cast<float>(tfar);
+        visible += this->HasTranslucentCasters ? this->Transmission(ray) : 1.0;
       }
     }
-    return static_cast<double>(visible) / samples;
+    return visible / samples;
   }
 };
 
@@ -421,8 +457,8 @@ vtkSmartPointer<vtkImageData> NewImage(int width, int height, const char* name, 
 }
 
 /// Appends the surface triangles of one dataset, transformed by `matrix`, to `meshes`.
-void CollectDataSet(
-  vtkDataObject* data, const double matrix[16], bool casts, std::vector<Mesh>& meshes)
+void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, double opacity,
+  std::vector<Mesh>& meshes)
 {
   vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(data);
   if (!poly)
@@ -445,6 +481,7 @@ void CollectDataSet(
   }
   Mesh mesh;
   mesh.Casts = casts;
+  mesh.Opacity = opacity;
   mesh.Triangles = std::move(topology.Triangles);
   mesh.Points.reserve(topology.Points.size());
   for (const glm::dvec3& point : topology.Points)
@@ -623,10 +660,10 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   return append->GetOutput();
 }
 
-/// The leaves of `node` that are drawn opaque: a block's visibility and opacity hold for the
-/// blocks under it that set none of their own.
+/// The leaves of `node` that are drawn, with their block opacity: a block's visibility and
+/// opacity hold for the blocks under it that set none of their own.
 void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes, bool visible,
-  double opacity, std::vector<vtkDataObject*>& leaves)
+  double opacity, std::vector<std::pair<vtkDataObject*, double>>& leaves)
 {
   if (!node)
   {
@@ -662,18 +699,19 @@ void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attri
       VisibleLeaves(it->GetCurrentDataObject(), attributes, visible, opacity, leaves);
     }
   }
-  else if (visible && opacity >= 1.0)
+  else if (visible && opacity > 0.0)
   {
-    leaves.push_back(node);
+    leaves.emplace_back(node, std::min(opacity, 1.0));
   }
 }
 
-/// Appends what VTK draws opaque of one leaf prop (an actor, or an assembly's part at the
-/// path's composed matrix) to `meshes`.
+/// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
+/// composed matrix) to `meshes`, with the opacity of its property times its block's.
 void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
 {
   vtkMapper* mapper = actor->GetMapper();
-  if (!actor->GetVisibility() || !mapper || actor->GetProperty()->GetOpacity() < 1.0)
+  const double opacity = actor->GetProperty()->GetOpacity();
+  if (!actor->GetVisibility() || !mapper || !(opacity > 0.0))
   {
     return;
   }
@@ -681,20 +719,21 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   double matrix[16];
   vtkMatrix4x4::DeepCopy(matrix, pathMatrix ? pathMatrix : actor->GetMatrix());
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-  std::vector<vtkDataObject*> leaves;
+  std::vector<std::pair<vtkDataObject*, double>> leaves;
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
     blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, 1.0, leaves);
   auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
-  for (vtkDataObject* leaf : leaves)
+  for (const auto& leaf : leaves)
   {
-    auto points = vtkDataSet::SafeDownCast(leaf);
+    auto points = vtkDataSet::SafeDownCast(leaf.first);
+    const double leafOpacity = std::min(opacity * leaf.second, 1.0);
     if (!glyphs)
     {
-      CollectDataSet(leaf, matrix, casts, meshes);
+      CollectDataSet(leaf.first, matrix, casts, leafOpacity, meshes);
     }
     else if (points)
     {
-      CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, meshes);
+      CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, leafOpacity, meshes);
     }
   }
 }
@@ -752,13 +791,14 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
   this->Epsilon = 1e-5 * (diagonal > 0.0 ? diagonal : 1.0);
 
   this->ReleaseScenes();
-  this->Primary = rtcNewScene(this->Device);
-  this->Shadow = rtcNewScene(this->Device);
-  // Robust mode: rays through shared edges and vertices do not slip between triangles.
-  rtcSetSceneFlags(this->Primary, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneFlags(this->Shadow, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(this->Primary, RTC_BUILD_QUALITY_HIGH);
-  rtcSetSceneBuildQuality(this->Shadow, RTC_BUILD_QUALITY_HIGH);
+  this->HasTranslucentCasters = false;
+  for (RTCScene* scene : { &this->Primary, &this->Shadow, &this->Translucent })
+  {
+    *scene = rtcNewScene(this->Device);
+    // Robust mode: rays through shared edges and vertices do not slip between triangles.
+    rtcSetSceneFlags(*scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(*scene, RTC_BUILD_QUALITY_HIGH);
+  }
   for (std::size_t i = 0; i < this->Meshes.size(); ++i)
   {
     Mesh& mesh = this->Meshes[i];
@@ -766,17 +806,25 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
     {
       p -= this->Origin;
     }
+    // Ids are indices into Meshes in every scene: a hit finds its mesh's plane or opacity.
     const unsigned int id = static_cast<unsigned int>(i);
-    this->AddGeometry(this->Primary, id, mesh);
-    triangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    const bool opaque = mesh.Opacity >= 1.0;
+    if (opaque)
+    {
+      this->AddGeometry(this->Primary, id, mesh);
+      triangles += static_cast<vtkIdType>(mesh.Triangles.size());
+    }
     if (mesh.Casts)
     {
-      this->AddGeometry(this->Shadow, id, mesh);
+      this->AddGeometry(opaque ? this->Shadow : this->Translucent, id, mesh);
       casterTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
+      this->HasTranslucentCasters |= !opaque;
     }
   }
-  rtcCommitScene(this->Primary);
-  rtcCommitScene(this->Shadow);
+  for (RTCScene scene : { this->Primary, this->Shadow, this->Translucent })
+  {
+    rtcCommitScene(scene);
+  }
   const RTCError error = rtcGetDeviceError(this->Device);
   if (error != RTC_ERROR_NONE)
   {

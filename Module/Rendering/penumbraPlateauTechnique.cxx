@@ -284,11 +284,12 @@ std::size_t PlateauTechnique::GraphicsMemoryBytes() const
     : 0;
   const std::size_t buffer =
     this->Vertices->GetHandle() ? this->Triangles.size() * sizeof(PlateauVertex) : 0;
-  return texels * 4 + buffer;
+  return texels * 4 + buffer + this->HardShadowTechnique::GraphicsMemoryBytes();
 }
 
 void PlateauTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->HardShadowTechnique::ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->Depth->ReleaseGraphicsResources(window);
   this->Vertices->ReleaseGraphicsResources();

@@ -7,6 +7,7 @@
 #ifndef penumbraPlateauTechnique_h
 #define penumbraPlateauTechnique_h
 
+#include "penumbraHardShadowTechnique.h"
 #include "penumbraPlateaus.h"
 #include "penumbraShadowTechnique.h"
 

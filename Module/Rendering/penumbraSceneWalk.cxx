@@ -101,9 +101,16 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     return; // 2D props and the like: overlays, nothing to cast
   }
   vtkMapper* mapper = actor->GetMapper();
-  if (!mapper || !actor->HasOpaqueGeometry())
+  if (!mapper || !(actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry()))
   {
     return;
+  }
+  if (!actor->HasOpaqueGeometry() && actor->GetProperty()->GetOpacity() >= 1.0 &&
+    !vtkCompositePolyDataMapper2::SafeDownCast(mapper))
+  {
+    this->Warn(owner, leaf,
+      "is drawn translucent with an opacity of 1 (colours with alpha, a texture or "
+      "ForceTranslucent): its shadow takes the opacity, 1, and is opaque");
   }
   // A path's last matrix is the composed one; a plain actor's path carries none.
   const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
@@ -160,16 +167,22 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attri
     return;
   }
   const std::size_t index = part++;
-  if (!visible || opacity * actor->GetProperty()->GetOpacity() < 1.0)
+  opacity *= actor->GetProperty()->GetOpacity();
+  if (!visible || !(opacity > 0.0))
   {
     return;
   }
-  surfaces.push_back({ actor, node, matrix, index });
+  surfaces.push_back({ actor, node, matrix, index, std::min(opacity, 1.0) });
 }
 
 void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
+  const double opacity = std::min(actor->GetProperty()->GetOpacity(), 1.0);
+  if (!(opacity > 0.0))
+  {
+    return;
+  }
   std::vector<vtkDataObject*> sources;
   if (mapper->GetUseSourceTableTree())
   {
@@ -280,7 +293,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
         nonFinite = true;
         continue;
       }
-      surfaces.push_back({ actor, sources[entry], matrix * glyph, part });
+      surfaces.push_back({ actor, sources[entry], matrix * glyph, part, opacity });
     }
   }
   if (nonFinite)

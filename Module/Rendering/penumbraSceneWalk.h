@@ -1,7 +1,7 @@
 /**
  * @file   penumbraSceneWalk.h
- * @brief  What a renderer draws opaque, as surfaces in world space: the casters of
- *         vtkSoftShadowPass.
+ * @brief  What a renderer draws, as surfaces in world space with their opacity: the casters
+ *         of vtkSoftShadowPass.
  *
  * VTK draws far more than top-level actors with a polydata mapper: assembly paths with their
  * composed matrices, the leaves of composite data with their block visibility and opacity, the
@@ -36,7 +36,7 @@ class vtkRenderer;
 namespace penumbra
 {
 
-/// One surface VTK draws opaque.
+/// One surface VTK draws, opaque or translucent.
 struct DrawnSurface
 {
   vtkActor* Actor = nullptr;     ///< the actor whose mapper draws it (an assembly's part, say)
@@ -44,16 +44,17 @@ struct DrawnSurface
   glm::dmat4 ObjectToWorld{ 1.0 };
   /// Which block or glyph of Actor it is; with Actor, the surface's identity between frames.
   std::size_t Part = 0;
+  double Opacity = 1.0; ///< the property's opacity times its block's, in (0, 1]
 };
 
-/// Finds the surfaces a renderer draws opaque, and warns once about what cannot cast.
+/// Finds the surfaces a renderer draws, and warns once about what cannot cast.
 class SceneWalk
 {
 public:
-  /// The opaque surfaces of every visible prop of `renderer` (its view props, not the frustum
-  /// culler's list: a prop outside the view may shadow inside it) that casts shadows
-  /// (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives an assembly's
-  /// parts the assembly's property keys). Warnings go through `owner`.
+  /// The surfaces (opaque, or translucent with their opacity) of every visible prop of `renderer`
+  /// (its view props, not the frustum culler's list: a prop outside the view may shadow inside it)
+  /// that casts shadows (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives
+  /// an assembly's parts the assembly's property keys). Warnings go through `owner`.
   std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
 
 private:

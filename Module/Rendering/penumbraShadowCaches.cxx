@@ -123,18 +123,20 @@ void MeshCache::ReleaseGraphicsResources()
   this->VAOProgram = nullptr;
 }
 
-bool VolumeCache::Update(const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored)
+bool VolumeCache::Update(
+  const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored, CountingRule rule)
 {
   this->Used = true;
   if (this->MeshGeneration == mesh.Generation && this->Light == lightObject &&
-    this->Mirrored == mirrored)
+    this->Mirrored == mirrored && this->Rule == rule)
   {
     return false;
   }
   this->Light = lightObject;
   this->Mirrored = mirrored;
+  this->Rule = rule;
   this->MeshGeneration = mesh.Generation;
-  this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false);
+  this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false, rule);
   ++this->Generation;
   this->HasCaps = false;
   this->Uploaded = false;
@@ -145,7 +147,8 @@ void VolumeCache::EnsureCaps(const MeshCache& mesh)
 {
   if (!this->HasCaps)
   {
-    this->Volume = ShadowVolume::Build(mesh.Topology, this->Light, this->Mirrored, true);
+    this->Volume =
+      ShadowVolume::Build(mesh.Topology, this->Light, this->Mirrored, true, this->Rule);
     this->HasCaps = true;
     this->Uploaded = false;
   }

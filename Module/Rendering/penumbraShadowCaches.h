@@ -66,6 +66,7 @@ struct VolumeCache
 {
   glm::dvec4 Light{ 0.0 };
   bool Mirrored = false;
+  CountingRule Rule = CountingRule::FrontFacesWhereTheySuffice;
   std::size_t MeshGeneration = ~std::size_t(0);
   std::size_t Generation = 0; ///< bumped on every silhouette rebuild
   ShadowVolume Volume;
@@ -74,9 +75,10 @@ struct VolumeCache
   bool Uploaded = false;
   bool Used = false;
 
-  /// Rebuilds the silhouette when the light (object space) or the mesh changed. Returns true
-  /// when it did. Caps are left out until a z-fail draw asks for them.
-  bool Update(const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored);
+  /// Rebuilds the silhouette when the light (object space), the mesh or the counting rule
+  /// changed. Returns true when it did. Caps are left out until a z-fail draw asks for them.
+  bool Update(
+    const MeshCache& mesh, const glm::dvec4& lightObject, bool mirrored, CountingRule rule);
   /// Adds the light and dark caps (z-fail needs them), once per silhouette update.
   void EnsureCaps(const MeshCache& mesh);
   void Upload();
@@ -199,6 +201,10 @@ struct CasterCache
   MeshCache* Mesh = nullptr;
   glm::dmat4 ObjectToWorld{ 1.0 }; ///< actor matrix with the mesh origin folded in
   glm::dvec3 WorldMin{ 0.0 }, WorldMax{ 0.0 };
+  /// As VTK draws it: the property's opacity times its block's. Below 1 the caster lets
+  /// (1 - Opacity) of the light through at each of its surfaces (a translucent caster).
+  double Opacity = 1.0;
+  bool Translucent() const { return this->Opacity < 1.0; }
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;

@@ -180,15 +180,4 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
   this->Counts.FullViewportWedges += static_cast<vtkIdType>(buffer.FullViewport);
 }
 
-void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light)
-{
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  ScopedDrawState saved(ostate);
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  ostate->vtkglDepthFunc(GL_GREATER);
-  frame.DrawResolve(-1.0f / static_cast<float>(light.Samples.size()));
-}
-
 } // namespace penumbra

@@ -200,15 +200,6 @@ public:
   virtual void ReleaseGraphicsResources(vtkWindow*) {}
 };
 
-/// Hard shadows of each of the light's samples, averaged (one sample: hard shadow volumes).
-class HardShadowTechnique : public ShadowTechnique
-{
-public:
-  /// Every geometry pixel with a non-zero stencil count is in this sample's shadow: 1/N of the
-  /// light goes.
-  void ResolveSample(ShadowFrame& frame, const ShadowLight& light) override;
-};
-
 } // namespace penumbra
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkSoftShadowPass.h"
 
 #include "penumbraCountingTechnique.h"
+#include "penumbraHardShadowTechnique.h"
 #include "penumbraLightIntensityBuffer.h"
 #include "penumbraPlateauTechnique.h"
 #include "penumbraShadowCaches.h"
@@ -89,7 +90,7 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  vtkIdType& zFailCount);
+  float weight, vtkIdType& zFailCount);
 
 } // namespace
 
@@ -178,6 +179,13 @@ public:
   /// Brings every caster's volumes and the technique's caches for `light` up to date; returns
   /// the silhouette updates it made.
   vtkIdType UpdateLightCasters(const ShadowLight& light);
+  /// Makes a counted light average `lightSamples` samples, the ones counting took.
+  void AverageInstead(ShadowLight& light, int lightSamples);
+  /// Only averaged hard shadows multiply a sample's light by what translucent casters let
+  /// through: a counted light that one of them shadows averages instead, and wedges and
+  /// plateaus leave them out (culled for the light), each with one warning.
+  void KeepTranslucentCastersAveraged(ShadowLight& light, int lightSamples);
+  std::set<std::string> WarnedTranslucent;
   /// What the techniques draw with this frame.
   penumbra::ShadowFrame MakeFrame();
 
@@ -682,6 +690,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     }
     penumbra::CasterCache* caster = internals.Caches.FindCaster(surface.Actor, surface.Part);
     caster->Mesh = mesh;
+    caster->Opacity = surface.Opacity;
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);
@@ -729,20 +738,68 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
         ++this->NumberOfCulledShadows;
       }
     }
+    internals.KeepTranslucentCastersAveraged(light, this->LightSamples);
     this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     if (light.Technique == &internals.Counting && light.CountingChosenAutomatically &&
       !internals.Counting.IsCheaper(light, internals.Casters))
     {
       // Averaging the same samples gives the same image and is expected to be cheaper here.
-      light.Technique = &internals.Hard;
-      light.Samples = penumbra::SpreadLightSamples(
-        light.World, light.SampleRadius, this->LightSamples, light.SampleTarget);
+      internals.AverageInstead(light, this->LightSamples);
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     }
     if (light.Technique == &internals.Counting)
     {
       internals.Counting.PrepareWedges(light, internals.Casters);
     }
+  }
+}
+
+void vtkSoftShadowPass::vtkInternals::AverageInstead(ShadowLight& light, int lightSamples)
+{
+  light.Technique = &this->Hard;
+  light.Samples =
+    penumbra::SpreadLightSamples(light.World, light.SampleRadius, lightSamples, light.SampleTarget);
+}
+
+void vtkSoftShadowPass::vtkInternals::KeepTranslucentCastersAveraged(
+  ShadowLight& light, int lightSamples)
+{
+  if (light.Technique == &this->Hard)
+  {
+    return;
+  }
+  std::vector<penumbra::CasterCache*> translucent;
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (caster->Translucent() && !caster->Culled.count(light.Light))
+    {
+      translucent.push_back(caster);
+    }
+  }
+  if (translucent.empty())
+  {
+    return;
+  }
+  if (light.Technique == &this->Counting)
+  {
+    if (!light.CountingChosenAutomatically && this->WarnedTranslucent.insert("counting").second)
+    {
+      vtkWarningWithObjectMacro(this->Owner,
+        "Soft shadow volumes do not count translucent casters: a light that one of them "
+        "shadows averages its LightSamples hard shadows instead (the same samples, slower).");
+    }
+    this->AverageInstead(light, lightSamples);
+    return;
+  }
+  if (this->WarnedTranslucent.insert("wedges").second)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "Penumbra wedges and plateaus leave translucent casters out: they cast no shadow. "
+      "Averaged hard shadows and soft shadow volumes shadow them by their opacity.");
+  }
+  for (penumbra::CasterCache* caster : translucent)
+  {
+    caster->Culled.insert(light.Light);
   }
 }
 
@@ -760,7 +817,11 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
-      updates += volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored) ? 1 : 0;
+      const penumbra::CountingRule rule = caster->Translucent()
+        ? penumbra::CountingRule::EveryTriangle
+        : penumbra::CountingRule::FrontFacesWhereTheySuffice;
+      updates +=
+        volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored, rule) ? 1 : 0;
     }
     updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBox);
   }
@@ -824,15 +885,36 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
       }
       window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
+      std::vector<penumbra::CasterCache*> translucent;
       for (penumbra::CasterCache* caster : internals.Casters)
       {
         if (caster->Culled.count(light.Light))
         {
           continue;
         }
+        if (caster->Translucent())
+        {
+          translucent.push_back(caster);
+          continue;
+        }
         this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
           light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
-          countInColour, this->NumberOfZFailVolumes);
+          countInColour, 1.0f, this->NumberOfZFailVolumes);
+      }
+      if (!translucent.empty())
+      {
+        // Only averaged lights keep translucent casters (KeepTranslucentCastersAveraged): each
+        // crossing of one's volume adds log(1 - opacity) to the sample's log transmission, in
+        // colour, while the stencil keeps the opaque casters' count.
+        internals.Hard.BeginTransmission(frame);
+        window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
+        for (penumbra::CasterCache* caster : translucent)
+        {
+          this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
+            light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
+            true, static_cast<float>(-std::log1p(-caster->Opacity)), this->NumberOfZFailVolumes);
+        }
+        internals.Hard.EndTransmission(frame, light);
       }
 
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -858,11 +940,13 @@ namespace
 /// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
 constexpr float CapDepthBias = 5e-5f;
 
-/// Draws one caster's volume for one light into the stencil; returns the triangles drawn.
+/// Draws one caster's volume for one light into the stencil, or with `countInColor` into colour
+/// (-weight per crossing in front of the point, z-pass, or the same total from those behind it,
+/// z-fail); returns the triangles drawn.
 vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  vtkIdType& zFailCount)
+  float weight, vtkIdType& zFailCount)
 {
   penumbra::VolumeCache& volume = caster.Volumes[key];
   if (volume.Volume.CastingTriangles == 0)
@@ -892,7 +976,7 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
-    program->SetUniformf("frontFaceValue", -1.0f); // entering a volume takes the light away
+    program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
     drawn = static_cast<vtkIdType>(sides / 3);
   }
@@ -903,7 +987,7 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
     ostate->vtkglDepthFunc(countInColor ? GL_GEQUAL : GL_LESS);
-    program->SetUniformf("frontFaceValue", 1.0f); // leaving it behind the point does
+    program->SetUniformf("frontFaceValue", weight); // leaving it behind the point does
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
     // The light cap lies on the caster's own surface: pushed away from the eye, a visible point

@@ -120,15 +120,17 @@ int Winding(const CasterTopology& topo, const ShadowVolume& volume, const glm::d
 }
 
 /// Casting triangles crossed by the segment from q to the light, per the counting rule.
-int Occluders(
-  const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q, bool& nearEdge)
+int Occluders(const CasterTopology& topo, const glm::dvec4& light, const glm::dvec3& q,
+  bool& nearEdge, CountingRule rule)
 {
+  const bool frontFacesOnly = rule == CountingRule::FrontFacesWhereTheySuffice &&
+    ShadowVolume::FrontFacesSuffice(topo, light);
   const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - q : glm::dvec3(light) * 1e6;
   int count = 0;
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {
     const int facing = ShadowVolume::Facing(topo, t, light);
-    if (facing == 0 || (ShadowVolume::FrontFacesSuffice(topo, light) && facing < 0))
+    if (facing == 0 || (frontFacesOnly && facing < 0))
     {
       continue;
     }
@@ -162,9 +164,10 @@ bool AnyOccluder(
 
 /// Compares winding and occluder counts at random points around the caster.
 void CheckVolume(const std::string& name, const CasterTopology& topo, const glm::dvec4& light,
-  std::mt19937& rng, int samples = 300)
+  std::mt19937& rng, int samples = 300,
+  CountingRule rule = CountingRule::FrontFacesWhereTheySuffice)
 {
-  const ShadowVolume volume = ShadowVolume::Build(topo, light, false);
+  const ShadowVolume volume = ShadowVolume::Build(topo, light, false, true, rule);
   Check(volume.SilhouetteIsBalanced(topo.Points.size()), name + ": silhouette balanced");
   const glm::dvec3 lo = topo.BoundsMin, hi = topo.BoundsMax;
   const glm::dvec3 size = hi - lo + glm::dvec3(1e-3);
@@ -178,7 +181,7 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
     q +=
       glm::normalize(away) * glm::length(size) * std::uniform_real_distribution<double>(0, 1)(rng);
     bool nearEdge = false;
-    const int expected = Occluders(topo, light, q, nearEdge);
+    const int expected = Occluders(topo, light, q, nearEdge, rule);
     const int winding = Winding(topo, volume, light, q, rng);
     if (nearEdge || winding == std::numeric_limits<int>::min())
     {
@@ -263,6 +266,17 @@ void TestClosedSphere(std::mt19937& rng)
     }
     Check(unit, "closed mesh silhouette multiplicities are 1");
     CheckVolume("sphere", topo, light, rng);
+    // Translucent casters count every surface: two behind a closed sphere, one inside it.
+    CheckVolume("sphere, every triangle", topo, light, rng, 300, CountingRule::EveryTriangle);
+    const ShadowVolume every =
+      ShadowVolume::Build(topo, light, false, true, CountingRule::EveryTriangle);
+    const glm::dvec3 centre = 0.5 * (topo.BoundsMin + topo.BoundsMax);
+    const glm::dvec3 away =
+      glm::normalize(light.w != 0.0 ? centre - glm::dvec3(light) : -glm::dvec3(light));
+    Check(Winding(topo, every, light, centre + 3.0 * away, rng) == 2 &&
+        Winding(topo, every, light, centre + 0.01 * away, rng) == 1 &&
+        Winding(topo, volume, light, centre + 3.0 * away, rng) == 1,
+      "every triangle: two surfaces behind the sphere, one inside; front faces: one behind");
   }
   // A light inside a closed mesh: nothing outside it sees the light.
   Check(!ShadowVolume::FrontFacesSuffice(topo, { 0.1, 0.05, -0.1, 1.0 }),
@@ -362,7 +376,8 @@ void TestMirrored(std::mt19937& rng)
     // Winding in world space: evaluate with the mirrored points, the volume indices unchanged.
     const int winding = Winding(mirrored, volume, light, q, rng);
     bool nearEdge = false;
-    const int expected = Occluders(mirrored, light, q, nearEdge) > 0 ? 1 : 0;
+    const int expected =
+      Occluders(mirrored, light, q, nearEdge, CountingRule::FrontFacesWhereTheySuffice) > 0 ? 1 : 0;
     if (!nearEdge && winding != std::numeric_limits<int>::min() && winding != expected)
     {
       ++mismatches;

@@ -281,7 +281,9 @@ void TestGlyphsByRotation()
 void TestMultiBlock()
 {
   // Blocks: a sphere, a nested multiblock (a box, an empty block, a hidden sphere), a
-  // translucent box. Hidden and translucent blocks cast nothing; the rest cast and receive.
+  // translucent box. Hidden blocks cast nothing, the translucent one casts by its block opacity
+  // (its shadow lets 0.36 through, far enough from the lit 1 for the comparison's 0.5); the
+  // rest cast and receive.
   auto sphere = SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16);
   auto box = BoxSource(1.0, 0.7, 0.3, 0.7, 1.0, 0.7);
   auto hidden = SphereSource(0.0, 1.5, -1.0, 0.5, 24, 12);

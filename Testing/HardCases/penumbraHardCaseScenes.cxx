@@ -1036,6 +1036,10 @@ std::vector<HardCase> BuildCases()
   known("boy_surface", { WEDGES, 0, 0.11, 0, layered });
   known("degenerate_input", { WEDGES, 9, 0.08, 0, layered + " (the duplicated triangle)" });
   known("light_through_face_planes", { WEDGES, 0, 0.05, 0.006, faces });
+  known("translucent_volume_overlay",
+    { WEDGES, 300, 0.13, 0,
+      "penumbra wedges leave translucent casters out, with one warning; the truth and the other "
+      "methods shadow by their opacity" });
   known("light_through_face_planes", { AUTOMATIC, 0, 0.05, 0.006, faces });
   return cases;
 }

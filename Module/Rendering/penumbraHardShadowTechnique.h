@@ -1,0 +1,50 @@
+/**
+ * @file    penumbraHardShadowTechnique.h
+ * @brief   Hard shadow volumes (one light sample) and averaged hard shadows (LightSamples of
+ *          them), translucent casters included: each sample's light is multiplied by what they
+ *          let through.
+ */
+#ifndef penumbraHardShadowTechnique_h
+#define penumbraHardShadowTechnique_h
+
+#include "penumbraShadowTechnique.h"
+
+#include "vtkNew.h"
+#include "vtkTextureObject.h" // for vtkNew<vtkTextureObject>
+
+namespace penumbra
+{
+
+/// Hard shadows of each of the light's samples, averaged (one sample: hard shadow volumes).
+///
+/// Opaque casters count in the stencil: a sample whose count is not 0 takes its 1/N of the light
+/// away. Translucent casters (opacity a < 1) count in colour instead, log(1 - a) for each of
+/// their surfaces between the point and the sample (every triangle counts,
+/// CountingRule::EveryTriangle), so that where the stencil is 0 the sample's light is multiplied
+/// by the transmission exp(sum), as a ray tracer's shadow ray through those surfaces.
+class HardShadowTechnique : public ShadowTechnique
+{
+public:
+  /// Binds the log-transmission target for the translucent casters' volumes of this sample
+  /// (allocated for the viewport on first use, cleared to 0), with additive blending and the
+  /// stencil left as the opaque casters' volumes made it.
+  void BeginTransmission(ShadowFrame& frame);
+  /// Binds the light's layer again after the translucent casters' volumes.
+  void EndTransmission(ShadowFrame& frame, const ShadowLight& light);
+  /// Every geometry pixel with a non-zero stencil count is in this sample's shadow: 1/N of the
+  /// light goes. Where the count is 0 and translucent casters were drawn, 1/N of the light times
+  /// one minus their transmission goes.
+  void ResolveSample(ShadowFrame& frame, const ShadowLight& light) override;
+  /// The log-transmission target, once a translucent caster was drawn: 4 bytes per pixel.
+  std::size_t GraphicsMemoryBytes() const override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+private:
+  vtkNew<vtkTextureObject> LogTransmission;
+  FullScreenTriangle::VAO TransmissionVAO;
+  bool TransmissionDrawn = false;
+};
+
+} // namespace penumbra
+
+#endif
