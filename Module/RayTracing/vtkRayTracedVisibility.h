@@ -16,7 +16,10 @@
  *   light) so that results do not depend on the number of threads;
  * - every visible actor with opacity 1 is seen by primary rays; only those for which
  *   vtkSoftShadowPass::GetCastsShadows() is true block shadow rays; triangles occlude from both
- *   sides, and a light sample below the surface's own plane counts as blocked.
+ *   sides, and a light sample below the surface's own plane counts as blocked;
+ * - translucent actors and blocks (opacity in (0, 1)) are not seen by primary rays; a shadow ray
+ *   that no opaque caster blocks is multiplied by 1 - opacity at each of their triangles it
+ *   crosses (every hit, traced on past the last), as transmission.
  *
  * A surface point inside a positional light's sphere sees all of that light.
  *
