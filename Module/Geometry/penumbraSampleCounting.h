@@ -150,7 +150,7 @@ struct CountingCost
  * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
  * a wedge reaches):
  *
- *   counting / averaging = 0.67 (P / S)^0.53 (rho / 0.016)^0.68 (16 / N)^0.48,
+ *   counting / averaging = 0.36 (P / S)^0.73 (rho / 0.016)^0.65 (16 / N)^0.69,
  *
  * P and S summed over the casters, rho averaged over them weighted by S.
  */
