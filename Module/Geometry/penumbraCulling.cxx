@@ -116,4 +116,26 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, cons
   return true;
 }
 
+glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dmat4& worldToView, const glm::dvec2& current)
+{
+  double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 point((corner & 1) ? boxMax.x : boxMin.x, (corner & 2) ? boxMax.y : boxMin.y,
+      (corner & 4) ? boxMax.z : boxMin.z);
+    const double depth = -(worldToView * glm::dvec4(point, 1.0)).z;
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  if (!(nearest > 0.0) || !std::isfinite(farthest) || !(current.x > 0.0) ||
+    !(current.y > current.x))
+  {
+    return current;
+  }
+  const double tightNear = std::max(current.x, nearest * (1.0 - 1e-3));
+  const double tightFar = std::min(current.y, farthest * (1.0 + 1e-3));
+  return tightFar > tightNear ? glm::dvec2(tightNear, tightFar) : current;
+}
+
 } // namespace penumbra

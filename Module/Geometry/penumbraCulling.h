@@ -36,6 +36,17 @@ VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin
 VTKPENUMBRAGEOMETRY_EXPORT bool ShadowMayReachView(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dvec4& light, double radius, const glm::dmat4& worldToClip);
 
+/**
+ * The camera clipping range (near, far) narrowed to the view depths of the box that holds
+ * everything drawn (`worldToView`: VTK's view matrix, looking down -z), with a relative margin of
+ * 1e-3 so that nothing inside the box is clipped: never wider than `current`, and `current`
+ * itself where the box reaches the eye's plane (its nearest depth is not positive) or is not
+ * finite. A 24-bit depth buffer's steps then span the scene's depth, not VTK's range, which is
+ * expanded by half its length and has its near plane clamped to 1/1000 of the far one.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 TightClippingRange(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dmat4& worldToView, const glm::dvec2& current);
+
 } // namespace penumbra
 
 #endif

@@ -92,6 +92,59 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
   float weight, vtkIdType& zFailCount);
 
+/// Narrows the active camera's clipping range to the depths of every visible prop
+/// (penumbra::TightClippingRange) while it lives, and restores the camera's own range after.
+class ScopedShadowDepthRange
+{
+public:
+  ScopedShadowDepthRange(vtkRenderer* renderer, bool enabled)
+    : Camera(enabled ? renderer->GetActiveCamera() : nullptr)
+  {
+    if (!this->Camera)
+    {
+      return;
+    }
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    vtkPropCollection* props = renderer->GetViewProps();
+    vtkCollectionSimpleIterator it;
+    vtkProp* prop;
+    for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+    {
+      // Every visible prop, UseBounds or not: the depth pass must clip none of them.
+      const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+      if (bounds && vtkMath::AreBoundsInitialized(bounds))
+      {
+        lo = glm::min(lo, glm::dvec3(bounds[0], bounds[2], bounds[4]));
+        hi = glm::max(hi, glm::dvec3(bounds[1], bounds[3], bounds[5]));
+      }
+    }
+    this->Camera->GetClippingRange(this->Saved);
+    const glm::dmat4 worldToView = penumbra::ToGlm(this->Camera->GetViewTransformMatrix());
+    const glm::dvec2 range = this->Camera->GetParallelProjection()
+      ? glm::dvec2(this->Saved[0], this->Saved[1])
+      : penumbra::TightClippingRange(lo, hi, worldToView, glm::make_vec2(this->Saved));
+    if (range.x == this->Saved[0] && range.y == this->Saved[1])
+    {
+      this->Camera = nullptr;
+      return;
+    }
+    this->Camera->SetClippingRange(range.x, range.y);
+  }
+  ~ScopedShadowDepthRange()
+  {
+    if (this->Camera)
+    {
+      this->Camera->SetClippingRange(this->Saved);
+    }
+  }
+  ScopedShadowDepthRange(const ScopedShadowDepthRange&) = delete;
+  ScopedShadowDepthRange& operator=(const ScopedShadowDepthRange&) = delete;
+
+private:
+  vtkCamera* Camera;
+  double Saved[2] = { 0.0, 0.0 };
+};
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -234,6 +287,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << this->GetMethodAsString() << "\n";
   os << indent << "LightSamples: " << this->LightSamples << "\n";
   os << indent << "CollectStageTimes: " << this->CollectStageTimes << "\n";
+  os << indent << "UseTightDepthRange: " << this->UseTightDepthRange << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
   os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
@@ -410,27 +464,32 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   this->AddReceiverKeys(s);
-  internals.UpdateCamera(renderer);
-  this->PrepareFramebuffer(window);
   {
-    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-    internals.LI.GetLayers()->Activate();
-    this->RenderDepth(s);
-    internals.LI.GetLayers()->Deactivate();
+    // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
+    ScopedShadowDepthRange depthRange(renderer, this->UseTightDepthRange);
+    internals.UpdateCamera(renderer);
+    this->PrepareFramebuffer(window);
+    {
+      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+      internals.LI.GetLayers()->Activate();
+      this->RenderDepth(s);
+      internals.LI.GetLayers()->Deactivate();
+    }
+    {
+      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
+      this->UpdateCasters(s);
+    }
+    // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
+    // plateaus without a receiver plane fall back to hard shadows.
+    if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
+          [&](const vtkInternals::ShadowLight& light)
+          { return light.Technique != &internals.Hard; }))
+    {
+      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+      internals.LI.CopyDepth(window->GetState());
+    }
+    this->RenderLightIntensity(renderer, window);
   }
-  {
-    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
-    this->UpdateCasters(s);
-  }
-  // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
-  // plateaus without a receiver plane fall back to hard shadows.
-  if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-        [&](const vtkInternals::ShadowLight& light) { return light.Technique != &internals.Hard; }))
-  {
-    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-    internals.LI.CopyDepth(window->GetState());
-  }
-  this->RenderLightIntensity(renderer, window);
   internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
   this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());

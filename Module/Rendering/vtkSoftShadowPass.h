@@ -281,6 +281,21 @@ public:
   double GetStageCPUMilliseconds(int stage);
   double GetStageGPUMilliseconds(int stage);
 
+  ///@{
+  /**
+   * Whether the pass draws its depth, shadow volumes and wedges with the camera's clipping range
+   * narrowed to the depths of everything visible (every visible prop's bounds, UseBounds or
+   * not), restoring the camera's range before the scene is drawn. On by default: VTK's own
+   * range is expanded by half its length and its near plane clamped to 1/1000 of the far one,
+   * so that a 24-bit depth buffer's steps span far more than the scene, and the shadows' tests
+   * against the depth of each pixel (counting's point above all) lose precision with them
+   * (Documentation/wedges.md). The camera is modified twice a frame while on.
+   */
+  vtkSetMacro(UseTightDepthRange, bool);
+  vtkGetMacro(UseTightDepthRange, bool);
+  vtkBooleanMacro(UseTightDepthRange, bool);
+  ///@}
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -309,6 +324,7 @@ protected:
   double ReceiverPlaneNormal[3] = { 0.0, 0.0, 1.0 };
   bool UseReceiverPlane = false;
   bool CollectStageTimes = false;
+  bool UseTightDepthRange = true;
   vtkIdType NumberOfPlateauTriangles = 0;
   int NumberOfCountedLights = 0;
   int NumberOfAveragedLights = 0;

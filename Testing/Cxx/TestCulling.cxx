@@ -131,6 +131,50 @@ std::vector<glm::dvec4> LightPoints(const Case& c, std::mt19937& rng)
   }
   return points;
 }
+/// TightClippingRange: every point of random boxes, seen by random cameras, lies within the
+/// range; the range is never wider than the camera's, is narrower for a box well in front of
+/// the eye, and stays the camera's where the box reaches the eye's plane.
+void TestTightClippingRange(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  int clipped = 0, wider = 0, narrowed = 0, keptAtEye = 0, boxesAtEye = 0;
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    const glm::dvec3 eye(10.0 * u(rng), 10.0 * u(rng), 10.0 * u(rng));
+    const glm::dvec3 centre(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+    const glm::dvec3 half(0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng));
+    const glm::dmat4 view = glm::lookAt(eye, centre, glm::dvec3(0.0, 1.0, 0.0));
+    const double distance = glm::length(centre - eye);
+    const glm::dvec2 current(distance / 1000.0, 3.0 * distance + 10.0);
+    const glm::dvec2 range =
+      penumbra::TightClippingRange(centre - half, centre + half, view, current);
+    wider += range.x < current.x || range.y > current.y;
+    bool reachesEye = false;
+    for (int k = 0; k < 200; ++k)
+    {
+      const glm::dvec3 p = centre + half * glm::dvec3(u(rng), u(rng), u(rng));
+      const double depth = -(view * glm::dvec4(p, 1.0)).z;
+      reachesEye |= depth <= 0.0;
+      clipped += depth > current.x && depth < current.y && (depth < range.x || depth > range.y);
+    }
+    if (reachesEye)
+    {
+      ++boxesAtEye;
+      keptAtEye += range == current;
+    }
+    narrowed += range.x > 2.0 * current.x;
+  }
+  std::printf("     tight range: %d narrowed, %d points clipped, %d wider, %d of %d boxes at the "
+              "eye kept the camera's range\n",
+    narrowed, clipped, wider, keptAtEye, boxesAtEye);
+  Check(clipped == 0 && wider == 0, "the tight range clips nothing of the box and is never wider");
+  Check(narrowed > 500, "the tight range narrows the near plane for boxes in front of the eye");
+  Check(boxesAtEye > 0 && keptAtEye == boxesAtEye, "a box at the eye keeps the camera's range");
+  const double nan = std::nan("");
+  Check(penumbra::TightClippingRange({ nan, 0, 0 }, { 1, 1, 1 }, glm::dmat4(1.0), { 0.1, 10 }) ==
+      glm::dvec2(0.1, 10),
+    "a NaN box keeps the camera's range");
+}
 } // namespace
 
 int main()
@@ -192,5 +236,6 @@ int main()
     "z-pass is chosen only where no volume reaches the near plane");
   Check(nearYesConfirmed > 0, "volumes that do reach the near plane are found");
   Check(viewNo > 100 && viewNoWrong == 0, "a shadow is culled only where it cannot reach the view");
+  TestTightClippingRange(rng);
   return penumbra_test::Finish();
 }
