@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace penumbra
 {
@@ -136,6 +138,86 @@ glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax
   const double tightNear = std::max(current.x, nearest * (1.0 - 1e-3));
   const double tightFar = std::min(current.y, farthest * (1.0 + 1e-3));
   return tightFar > tightNear ? glm::dvec2(tightNear, tightFar) : current;
+}
+
+PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax,
+  const glm::dvec4& light, const Box& scene, const glm::dmat4& worldToClip, int width, int height)
+{
+  const PixelRect whole{ 0, 0, width, height };
+  if (!scene.Valid)
+  {
+    return whole;
+  }
+  // The cone's sides: planes through the light and each edge of the caster's box between a face
+  // that faces the light and one that does not (for a direction, planes along it).
+  const glm::dvec3 centre = 0.5 * (casterMin + casterMax);
+  const glm::dvec3 towardsLight(light);
+  std::vector<HalfSpace> cone;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      // Face (axis, side) faces the light when the light lies beyond its plane.
+      auto faces = [&](int a, int s)
+      {
+        const double plane = s ? casterMax[a] : casterMin[a];
+        const double beyond = light.w != 0.0 ? towardsLight[a] - plane : towardsLight[a];
+        return s ? beyond > 0.0 : beyond < 0.0;
+      };
+      for (int other = axis + 1; other < 3; ++other)
+      {
+        for (int otherSide = 0; otherSide < 2; ++otherSide)
+        {
+          if (faces(axis, side) == faces(other, otherSide))
+          {
+            continue;
+          }
+          // The edge shared by the two faces runs along the third axis.
+          const int along = 3 - axis - other;
+          glm::dvec3 a, b;
+          a[axis] = b[axis] = side ? casterMax[axis] : casterMin[axis];
+          a[other] = b[other] = otherSide ? casterMax[other] : casterMin[other];
+          a[along] = casterMin[along];
+          b[along] = casterMax[along];
+          const glm::dvec3 spread = light.w != 0.0 ? a - towardsLight : towardsLight;
+          glm::dvec3 normal = glm::cross(b - a, spread);
+          if (glm::dot(normal, centre - a) > 0.0)
+          {
+            normal = -normal;
+          }
+          cone.push_back({ normal, glm::dot(normal, a) });
+        }
+      }
+    }
+  }
+  if (cone.empty())
+  {
+    return whole; // the light inside the box, or on its faces' planes: the shadow is anywhere
+  }
+  const ConvexPolyhedron shadow = ClipBox(scene, cone);
+  if (shadow.Empty())
+  {
+    return {};
+  }
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& point : shadow.Points)
+  {
+    const glm::dvec4 clip = worldToClip * glm::dvec4(point, 1.0);
+    if (!(clip.w > 0.0))
+    {
+      return whole;
+    }
+    const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  }
+  auto pixel = [](double ndc, int size) { return (0.5 * ndc + 0.5) * size; };
+  PixelRect rect;
+  rect.X0 = static_cast<int>(std::max(0.0, std::floor(pixel(lo.x, width)) - 1.0));
+  rect.Y0 = static_cast<int>(std::max(0.0, std::floor(pixel(lo.y, height)) - 1.0));
+  rect.X1 = static_cast<int>(std::min<double>(width, std::ceil(pixel(hi.x, width)) + 1.0));
+  rect.Y1 = static_cast<int>(std::min<double>(height, std::ceil(pixel(hi.y, height)) + 1.0));
+  return rect.Empty() ? PixelRect{} : rect;
 }
 
 } // namespace penumbra

@@ -8,6 +8,7 @@
 #ifndef penumbraCulling_h
 #define penumbraCulling_h
 
+#include "penumbraConvexClip.h"
 #include "vtkPenumbraGeometryModule.h" // for export macro
 
 #include <glm/glm.hpp>
@@ -35,6 +36,31 @@ VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin
  */
 VTKPENUMBRAGEOMETRY_EXPORT bool ShadowMayReachView(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dvec4& light, double radius, const glm::dmat4& worldToClip);
+
+/// A rectangle of pixels [X0, X1) x [Y0, Y1) of a viewport.
+struct PixelRect
+{
+  int X0 = 0, Y0 = 0, X1 = 0, Y1 = 0;
+  bool Empty() const { return this->X1 <= this->X0 || this->Y1 <= this->Y0; }
+  bool operator==(const PixelRect& other) const
+  {
+    return this->X0 == other.X0 && this->Y0 == other.Y0 && this->X1 == other.X1 &&
+      this->Y1 == other.Y1;
+  }
+};
+
+/**
+ * The pixels of a `width` x `height` viewport whose visible point can lie in the shadow that the
+ * box casterMin..casterMax casts from one light point (position, 1) or direction (towards it, 0),
+ * given that every visible point lies in `scene`: the projection of `scene` cut to the cone (or
+ * prism) from the light through the caster's box, grown by a pixel. A shadow volume drawn with
+ * this scissor counts the same at every pixel that matters, since outside the cone its count is
+ * zero. The whole viewport where the light is inside the caster's box, `scene` is invalid, or
+ * the cut reaches behind the eye; an empty rectangle where the cone misses `scene`.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT PixelRect ShadowScissor(const glm::dvec3& casterMin,
+  const glm::dvec3& casterMax, const glm::dvec4& light, const Box& scene,
+  const glm::dmat4& worldToClip, int width, int height);
 
 /**
  * The camera clipping range (near, far) narrowed to the view depths of the box that holds

@@ -92,37 +92,24 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
   float weight, vtkIdType& zFailCount);
 
-/// Narrows the active camera's clipping range to the depths of every visible prop
+/// Narrows the active camera's clipping range to the depths of the box of every visible prop
 /// (penumbra::TightClippingRange) while it lives, and restores the camera's own range after.
 class ScopedShadowDepthRange
 {
 public:
-  ScopedShadowDepthRange(vtkRenderer* renderer, bool enabled)
-    : Camera(enabled ? renderer->GetActiveCamera() : nullptr)
+  ScopedShadowDepthRange(vtkRenderer* renderer, const penumbra::Box& scene, bool enabled)
+    : Camera(enabled && scene.Valid ? renderer->GetActiveCamera() : nullptr)
   {
     if (!this->Camera)
     {
       return;
     }
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    vtkPropCollection* props = renderer->GetViewProps();
-    vtkCollectionSimpleIterator it;
-    vtkProp* prop;
-    for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
-    {
-      // Every visible prop, UseBounds or not: the depth pass must clip none of them.
-      const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
-      if (bounds && vtkMath::AreBoundsInitialized(bounds))
-      {
-        lo = glm::min(lo, glm::dvec3(bounds[0], bounds[2], bounds[4]));
-        hi = glm::max(hi, glm::dvec3(bounds[1], bounds[3], bounds[5]));
-      }
-    }
     this->Camera->GetClippingRange(this->Saved);
     const glm::dmat4 worldToView = penumbra::ToGlm(this->Camera->GetViewTransformMatrix());
     const glm::dvec2 range = this->Camera->GetParallelProjection()
       ? glm::dvec2(this->Saved[0], this->Saved[1])
-      : penumbra::TightClippingRange(lo, hi, worldToView, glm::make_vec2(this->Saved));
+      : penumbra::TightClippingRange(
+          scene.Min, scene.Max, worldToView, glm::make_vec2(this->Saved));
     if (range.x == this->Saved[0] && range.y == this->Saved[1])
     {
       this->Camera = nullptr;
@@ -176,6 +163,10 @@ public:
   /// Holds every receiver (penumbra::StableReceiverBox): wedges are cut to it.
   penumbra::Box ReceiverBox;
   void UpdateReceiverBox();
+  /// Holds every visible prop, UseBounds or not, so every pixel's visible point: the depth
+  /// range and the volumes' scissors are narrowed to it. Invalid when a prop has no finite bounds.
+  penumbra::Box SceneBox;
+  void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
 
   std::string ShaderConfiguration;
@@ -466,7 +457,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->AddReceiverKeys(s);
   {
     // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
-    ScopedShadowDepthRange depthRange(renderer, this->UseTightDepthRange);
+    internals.UpdateSceneBox(renderer);
+    ScopedShadowDepthRange depthRange(renderer, internals.SceneBox, this->UseTightDepthRange);
     internals.UpdateCamera(renderer);
     this->PrepareFramebuffer(window);
     {
@@ -665,6 +657,29 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
       AddRenderPassKey(prop, this);
       internals.Receivers.push_back(prop);
     }
+  }
+}
+
+void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
+{
+  this->SceneBox = penumbra::Box();
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  {
+    const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+    {
+      continue; // 2D props and empty ones: nothing in depth
+    }
+    if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+    {
+      this->SceneBox = penumbra::Box();
+      return;
+    }
+    this->SceneBox.Extend(
+      glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
   }
 }
 
@@ -945,6 +960,16 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
       }
       window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
       std::vector<penumbra::CasterCache*> translucent;
+      // Each volume only where its cone from the sample meets the scene: elsewhere it counts 0.
+      ostate->vtkglEnable(GL_SCISSOR_TEST);
+      auto scissor = [&](const penumbra::CasterCache& caster)
+      {
+        const penumbra::PixelRect rect =
+          penumbra::ShadowScissor(caster.WorldMin, caster.WorldMax, light.Samples[k],
+            internals.SceneBox, internals.WorldToClip, internals.Size[0], internals.Size[1]);
+        ostate->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
+        return !rect.Empty();
+      };
       for (penumbra::CasterCache* caster : internals.Casters)
       {
         if (caster->Culled.count(light.Light))
@@ -956,25 +981,34 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
           translucent.push_back(caster);
           continue;
         }
-        this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-          light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
-          countInColour, 1.0f, this->NumberOfZFailVolumes);
+        if (scissor(*caster))
+        {
+          this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
+            light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
+            countInColour, 1.0f, this->NumberOfZFailVolumes);
+        }
       }
       if (!translucent.empty())
       {
         // Only averaged lights keep translucent casters (KeepTranslucentCastersAveraged): each
         // crossing of one's volume adds log(1 - opacity) to the sample's log transmission, in
         // colour, while the stencil keeps the opaque casters' count.
+        ostate->vtkglDisable(GL_SCISSOR_TEST); // the target is cleared whole
         internals.Hard.BeginTransmission(frame);
+        ostate->vtkglEnable(GL_SCISSOR_TEST);
         window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
         for (penumbra::CasterCache* caster : translucent)
         {
-          this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-            light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
-            true, static_cast<float>(-std::log1p(-caster->Opacity)), this->NumberOfZFailVolumes);
+          if (scissor(*caster))
+          {
+            this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
+              light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
+              true, static_cast<float>(-std::log1p(-caster->Opacity)), this->NumberOfZFailVolumes);
+          }
         }
         internals.Hard.EndTransmission(frame, light);
       }
+      ostate->vtkglDisable(GL_SCISSOR_TEST);
 
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane

@@ -131,6 +131,63 @@ std::vector<glm::dvec4> LightPoints(const Case& c, std::mt19937& rng)
   }
   return points;
 }
+/// ShadowScissor: every point of a scene box that the caster box shadows, in front of the eye,
+/// projects inside the rectangle; the rectangle is often well inside the viewport; and a cone
+/// that misses the scene gives an empty one.
+void TestShadowScissor(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  const int width = 320, height = 240;
+  int outside = 0, shadowed = 0, small = 0, cases = 0;
+  for (int trial = 0; trial < 1500; ++trial)
+  {
+    const Case c = RandomCase(rng);
+    penumbra::Box scene;
+    scene.Valid = true;
+    scene.Min = glm::dvec3(-2.0, -1.5, -2.0) + 0.3 * glm::dvec3(u(rng), u(rng), u(rng));
+    scene.Max = glm::dvec3(2.0, 0.5, 2.0) + 0.3 * glm::dvec3(u(rng), u(rng), u(rng));
+    const penumbra::PixelRect rect =
+      penumbra::ShadowScissor(c.Lo, c.Hi, c.Light, scene, c.WorldToClip, width, height);
+    ++cases;
+    small += !rect.Empty() && (rect.X1 - rect.X0) * (rect.Y1 - rect.Y0) < width * height / 2;
+    for (int k = 0; k < 400; ++k)
+    {
+      const glm::dvec3 p =
+        scene.Min + (scene.Max - scene.Min) * glm::dvec3(unit(rng), unit(rng), unit(rng));
+      if (!InShadow(p, c.Light, c.Lo, c.Hi))
+      {
+        continue;
+      }
+      const glm::dvec4 clip = c.WorldToClip * glm::dvec4(p, 1.0);
+      if (!(clip.w > 0.0) || std::abs(clip.x) > clip.w || std::abs(clip.y) > clip.w)
+      {
+        continue; // behind the eye or outside the view: no pixel
+      }
+      ++shadowed;
+      const double x = (0.5 * clip.x / clip.w + 0.5) * width;
+      const double y = (0.5 * clip.y / clip.w + 0.5) * height;
+      outside += x < rect.X0 || x > rect.X1 || y < rect.Y0 || y > rect.Y1;
+    }
+  }
+  std::printf("     shadow scissor: %d shadowed points seen, %d outside their rectangle; %d of %d "
+              "rectangles under half the viewport\n",
+    shadowed, outside, small, cases);
+  Check(shadowed > 3000 && outside == 0, "every shadowed point lies inside its scissor");
+  Check(small > cases / 4, "the scissor is often well inside the viewport");
+  penumbra::Box far;
+  far.Valid = true;
+  far.Min = glm::dvec3(10.0, 10.0, 10.0);
+  far.Max = glm::dvec3(11.0, 11.0, 11.0);
+  const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 20), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+  const glm::dmat4 toClip = glm::perspective(0.5, 4.0 / 3.0, 0.1, 100.0) * view;
+  Check(penumbra::ShadowScissor({ -1, -1, -1 }, { 1, 1, 1 }, { 0, 5, 0, 1 }, far, toClip, 320, 240)
+          .Empty(),
+    "a shadow that misses the scene box has an empty scissor");
+  Check(penumbra::ShadowScissor({ -1, -1, -1 }, { 1, 1, 1 }, { 0, 0, 0, 1 }, far, toClip, 320,
+          240) == penumbra::PixelRect{ 0, 0, 320, 240 },
+    "a light inside the caster's box: the whole viewport");
+}
+
 /// TightClippingRange: every point of random boxes, seen by random cameras, lies within the
 /// range; the range is never wider than the camera's, is narrower for a box well in front of
 /// the eye, and stays the camera's where the box reaches the eye's plane.
@@ -237,5 +294,6 @@ int main()
   Check(nearYesConfirmed > 0, "volumes that do reach the near plane are found");
   Check(viewNo > 100 && viewNoWrong == 0, "a shadow is culled only where it cannot reach the view");
   TestTightClippingRange(rng);
+  TestShadowScissor(rng);
   return penumbra_test::Finish();
 }
