@@ -194,6 +194,21 @@ PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax
   {
     return whole; // the light inside the box, or on its faces' planes: the shadow is anywhere
   }
+  // The shadow lies beyond the caster: along the axis away from the light, not before the box's
+  // nearest corner (for a point light, when no corner lies behind it).
+  const glm::dvec3 origin = light.w != 0.0 ? towardsLight : glm::dvec3(0.0);
+  const glm::dvec3 away = light.w != 0.0 ? centre - towardsLight : -towardsLight;
+  double start = std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 point((corner & 1) ? casterMax.x : casterMin.x,
+      (corner & 2) ? casterMax.y : casterMin.y, (corner & 4) ? casterMax.z : casterMin.z);
+    start = std::min(start, glm::dot(away, point - origin));
+  }
+  if (light.w == 0.0 || start >= 0.0)
+  {
+    cone.push_back({ -away, -(start + glm::dot(away, origin)) });
+  }
   const ConvexPolyhedron shadow = ClipBox(scene, cone);
   if (shadow.Empty())
   {
