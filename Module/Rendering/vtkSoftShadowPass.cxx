@@ -1048,7 +1048,10 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   }
   const bool zFail =
     penumbra::VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
-  if (zFail)
+  // Points seen through a translucent caster lie behind its light cap, which z-pass must then
+  // count too; behind an opaque one nothing is seen.
+  const bool seeThrough = caster.Translucent();
+  if (zFail || seeThrough)
   {
     volume.EnsureCaps(*caster.Mesh);
   }
@@ -1065,13 +1068,20 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   vtkIdType drawn = 0;
   if (!zFail)
   {
-    // z-pass: count volume faces in front of the visible surface; caps are not needed.
+    // z-pass: count volume faces in front of the visible surface; caps are not needed but for
+    // a translucent caster's light cap.
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
     program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
     drawn = static_cast<vtkIdType>(sides / 3);
+    if (seeThrough)
+    {
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
+      drawn += static_cast<vtkIdType>(lightCap / 3);
+    }
   }
   else
   {

@@ -144,6 +144,23 @@ void TestHardShadows()
   }
 }
 
+/// Looking through the glass sphere at its own shadow (the eye behind the light): z-pass must
+/// count the sphere's own surface, which lies between the eye and the shadowed ground.
+void TestSeenThroughCaster()
+{
+  GlassScene scene(0.5);
+  scene.Pass->SetMethodToHardVolumes();
+  const glm::dvec3 light(-2, 6, 3), centre(-1.0, 1.4, 0.0);
+  const glm::dvec3 eye = light + 0.6 * (light - centre);
+  scene.Camera(eye.x, eye.y, eye.z, centre.x, centre.y, centre.z);
+  const Agreement agreement = CompareTruth(scene, 1, 0.02f);
+  std::printf("through the glass: compared %d px (%d partly lit), %d off by > 0.02\n",
+    agreement.Compared, agreement.Partial, agreement.Off);
+  Check(scene.Pass->GetNumberOfZFailVolumes() == 0, "the view through the glass is z-pass");
+  Check(agreement.Partial > agreement.Compared / 20, "the shadow is seen through the glass");
+  Check(agreement.Off <= agreement.Compared / 500, "a shadow seen through its caster is right");
+}
+
 /// A soft light averaging 16 samples against a 256-ray truth; the counting method averages
 /// the same samples instead, warning once, with the same image; wedges leave translucent
 /// casters out with one warning.
@@ -205,6 +222,7 @@ void TestSoftShadows()
 int main()
 {
   TestHardShadows();
+  TestSeenThroughCaster();
   TestSoftShadows();
   return penumbra_test::Finish();
 }
