@@ -13,9 +13,7 @@
 
 #include "vtkAssembly.h"
 #include "vtkBitArray.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
@@ -466,19 +464,11 @@ void TestWarnings()
   slice->RotateX(90.0);
   view.Renderer->AddViewProp(slice);
 
-  std::vector<std::string> warnings;
-  vtkNew<vtkCallbackCommand> counter;
-  counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
-    { static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text)); });
-  view.Pass->AddObserver(vtkCommand::WarningEvent, counter);
+  const WarningLog log(view.Pass);
+  const std::vector<std::string>& warnings = log.Messages;
   view.Render();
   view.Render();
-  auto count = [&](const std::string& needle)
-  {
-    return std::count_if(warnings.begin(), warnings.end(),
-      [&](const std::string& w) { return w.find(needle) != std::string::npos; });
-  };
+  auto count = [&](const std::string& needle) { return log.Count(needle); };
   for (const std::string& w : warnings)
   {
     std::printf("     warning: %s", w.c_str());

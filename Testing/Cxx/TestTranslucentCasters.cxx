@@ -10,9 +10,6 @@
 // plus 0.01.
 #include "penumbraTestHarness.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
-
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -169,17 +166,8 @@ void TestSoftShadows()
   GlassScene scene(0.5);
   vtkSoftShadowPass::SetLightRadius(scene.Light, 0.4);
   scene.Pass->SetLightSamples(16);
-  std::vector<std::string> warnings;
-  vtkNew<vtkCallbackCommand> counter;
-  counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
-    { static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text)); });
-  scene.Pass->AddObserver(vtkCommand::WarningEvent, counter);
-  auto count = [&](const std::string& needle)
-  {
-    return std::count_if(warnings.begin(), warnings.end(),
-      [&](const std::string& w) { return w.find(needle) != std::string::npos; });
-  };
+  const WarningLog log(scene.Pass);
+  auto count = [&](const std::string& needle) { return log.Count(needle); };
 
   scene.Pass->SetMethodToAveragedHardShadows();
   const Agreement averaged = CompareTruth(scene, 256, 0.1f);

@@ -7,7 +7,9 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -25,6 +27,7 @@
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -142,6 +145,28 @@ inline vtkSmartPointer<vtkCubeSource> BoxSource(
   cube->SetZLength(sz);
   return cube;
 }
+
+/// The warnings an object sends from construction on, and how many of them contain a text.
+struct WarningLog
+{
+  std::vector<std::string> Messages;
+  vtkNew<vtkCallbackCommand> Callback;
+
+  explicit WarningLog(vtkObject* source)
+  {
+    this->Callback->SetClientData(&this->Messages);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* client, void* text) {
+        static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text));
+      });
+    source->AddObserver(vtkCommand::WarningEvent, this->Callback);
+  }
+  std::ptrdiff_t Count(const std::string& needle) const
+  {
+    return std::count_if(this->Messages.begin(), this->Messages.end(),
+      [&](const std::string& message) { return message.find(needle) != std::string::npos; });
+  }
+};
 
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
 struct Comparison
