@@ -135,8 +135,14 @@ glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax
   {
     return current;
   }
-  const double tightNear = std::max(current.x, nearest * (1.0 - 1e-3));
   const double tightFar = std::min(current.y, farthest * (1.0 + 1e-3));
+  // No nearer to the far plane than 0.8 of it: float depth from the vertex transforms loses
+  // about (far + near) / (far - near) times its precision, here at most 9.
+  const double tightNear = std::max(current.x, std::min(nearest * (1.0 - 1e-3), 0.8 * tightFar));
+  if (tightNear > 0.8 * tightFar)
+  {
+    return current;
+  }
   return tightFar > tightNear ? glm::dvec2(tightNear, tightFar) : current;
 }
 

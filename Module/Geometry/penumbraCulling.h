@@ -68,7 +68,9 @@ VTKPENUMBRAGEOMETRY_EXPORT PixelRect ShadowScissor(const glm::dvec3& casterMin,
  * 1e-3 so that nothing inside the box is clipped: never wider than `current`, and `current`
  * itself where the box reaches the eye's plane (its nearest depth is not positive) or is not
  * finite. A 24-bit depth buffer's steps then span the scene's depth, not VTK's range, which is
- * expanded by half its length and has its near plane clamped to 1/1000 of the far one.
+ * expanded by half its length and has its near plane clamped to 1/1000 of the far one. The near
+ * plane stays at most 0.8 of the far one, so that a thin or distant scene's (far + near) /
+ * (far - near), by which the vertex transforms' float depth loses precision, is at most 9.
  */
 VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 TightClippingRange(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dmat4& worldToView, const glm::dvec2& current);

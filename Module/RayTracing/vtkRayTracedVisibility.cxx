@@ -660,8 +660,9 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   return append->GetOutput();
 }
 
-/// The leaves of `node` that are drawn, with their block opacity: a block's visibility and
-/// opacity hold for the blocks under it that set none of their own.
+/// The leaves of `node` that are drawn, with their opacity: a block's visibility and opacity
+/// hold for the blocks under it that set none of their own, and a block's opacity replaces the
+/// actor's (`opacity` on entry), as vtkCompositePolyDataMapper2 draws them.
 void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes, bool visible,
   double opacity, std::vector<std::pair<vtkDataObject*, double>>& leaves)
 {
@@ -706,7 +707,8 @@ void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attri
 }
 
 /// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
-/// composed matrix) to `meshes`, with the opacity of its property times its block's.
+/// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
+/// property's; 1 where VTK draws it opaque.
 void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
 {
   vtkMapper* mapper = actor->GetMapper();
@@ -721,12 +723,12 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::vector<std::pair<vtkDataObject*, double>> leaves;
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
-    blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, 1.0, leaves);
+    blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, opacity, leaves);
   auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
   for (const auto& leaf : leaves)
   {
     auto points = vtkDataSet::SafeDownCast(leaf.first);
-    const double leafOpacity = std::min(opacity * leaf.second, 1.0);
+    const double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
     if (!glyphs)
     {
       CollectDataSet(leaf.first, matrix, casts, leafOpacity, meshes);

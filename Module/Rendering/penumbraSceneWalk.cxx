@@ -133,8 +133,19 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::size_t part = 0;
+  const std::size_t first = surfaces.size();
   this->Blocks(actor, composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, data,
-    matrix, true, 1.0, part, surfaces);
+    matrix, true, actor->GetProperty()->GetOpacity(), part, surfaces);
+  if (!composite)
+  {
+    // One surface, drawn as the actor says: opaque (ForceOpaque, say) or in the translucent
+    // pass (colours with alpha, a texture, ForceTranslucent).
+    for (std::size_t i = first; i < surfaces.size(); ++i)
+    {
+      surfaces[i].SeenThrough = !actor->HasOpaqueGeometry();
+      surfaces[i].Opacity = surfaces[i].SeenThrough ? surfaces[i].Opacity : 1.0;
+    }
+  }
 }
 
 void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attributes,
@@ -167,18 +178,20 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attri
     return;
   }
   const std::size_t index = part++;
-  opacity *= actor->GetProperty()->GetOpacity();
   if (!visible || !(opacity > 0.0))
   {
     return;
   }
-  surfaces.push_back({ actor, node, matrix, index, std::min(opacity, 1.0) });
+  const bool translucent = opacity < 1.0 || actor->GetForceTranslucent();
+  surfaces.push_back(
+    { actor, node, matrix, index, translucent ? std::min(opacity, 1.0) : 1.0, translucent });
 }
 
 void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
-  const double opacity = std::min(actor->GetProperty()->GetOpacity(), 1.0);
+  const bool seenThrough = !actor->HasOpaqueGeometry();
+  const double opacity = seenThrough ? std::min(actor->GetProperty()->GetOpacity(), 1.0) : 1.0;
   if (!(opacity > 0.0))
   {
     return;
@@ -293,7 +306,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
         nonFinite = true;
         continue;
       }
-      surfaces.push_back({ actor, sources[entry], matrix * glyph, part, opacity });
+      surfaces.push_back({ actor, sources[entry], matrix * glyph, part, opacity, seenThrough });
     }
   }
   if (nonFinite)

@@ -44,7 +44,13 @@ struct DrawnSurface
   glm::dmat4 ObjectToWorld{ 1.0 };
   /// Which block or glyph of Actor it is; with Actor, the surface's identity between frames.
   std::size_t Part = 0;
-  double Opacity = 1.0; ///< the property's opacity times its block's, in (0, 1]
+  /// What its shadow lets through: the block's opacity where one is set, else the property's
+  /// (as vtkCompositePolyDataMapper2 replaces one by the other), in (0, 1]; 1 where VTK draws
+  /// the surface opaque (ForceOpaque included).
+  double Opacity = 1.0;
+  /// VTK draws it in the translucent pass, so it is not in the depth pass and points behind it
+  /// are seen through it (opacity 1 too, for colours with alpha or a texture).
+  bool SeenThrough = false;
 };
 
 /// Finds the surfaces a renderer draws, and warns once about what cannot cast.

@@ -201,10 +201,12 @@ struct CasterCache
   MeshCache* Mesh = nullptr;
   glm::dmat4 ObjectToWorld{ 1.0 }; ///< actor matrix with the mesh origin folded in
   glm::dvec3 WorldMin{ 0.0 }, WorldMax{ 0.0 };
-  /// As VTK draws it: the property's opacity times its block's. Below 1 the caster lets
+  /// As VTK draws it (penumbra::DrawnSurface::Opacity). Below 1 the caster lets
   /// (1 - Opacity) of the light through at each of its surfaces (a translucent caster).
   double Opacity = 1.0;
   bool Translucent() const { return this->Opacity < 1.0; }
+  /// Not in the depth pass (VTK draws it translucent): points behind it are seen through it.
+  bool SeenThrough = false;
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;

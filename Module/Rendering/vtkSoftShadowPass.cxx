@@ -765,6 +765,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     penumbra::CasterCache* caster = internals.Caches.FindCaster(surface.Actor, surface.Part);
     caster->Mesh = mesh;
     caster->Opacity = surface.Opacity;
+    caster->SeenThrough = surface.SeenThrough;
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);
@@ -918,6 +919,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->PushFramebufferBindings();
   penumbra::ScopedDrawState saved(ostate);
   vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(ostate); // the volumes' scissors change it
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -1050,7 +1052,7 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     penumbra::VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
   // Points seen through a translucent caster lie behind its light cap, which z-pass must then
   // count too; behind an opaque one nothing is seen.
-  const bool seeThrough = caster.Translucent();
+  const bool seeThrough = caster.SeenThrough;
   if (zFail || seeThrough)
   {
     volume.EnsureCaps(*caster.Mesh);
@@ -1097,7 +1099,9 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
     // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
     // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
     // push cannot move it behind any other visible point.
-    program->SetUniformf("capDepthBias", CapDepthBias);
+    // A caster seen through is not in the depth pass: its cap needs no push, and one could move
+    // it behind an opaque point just behind it.
+    program->SetUniformf("capDepthBias", seeThrough ? 0.0f : CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
       reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
     program->SetUniformf("capDepthBias", 0.0f);

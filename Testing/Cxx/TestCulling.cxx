@@ -194,7 +194,7 @@ void TestShadowScissor(std::mt19937& rng)
 void TestTightClippingRange(std::mt19937& rng)
 {
   std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
-  int clipped = 0, wider = 0, narrowed = 0, keptAtEye = 0, boxesAtEye = 0;
+  int clipped = 0, wider = 0, narrowed = 0, keptAtEye = 0, boxesAtEye = 0, thick = 0;
   for (int trial = 0; trial < 2000; ++trial)
   {
     const glm::dvec3 eye(10.0 * u(rng), 10.0 * u(rng), 10.0 * u(rng));
@@ -220,6 +220,7 @@ void TestTightClippingRange(std::mt19937& rng)
       keptAtEye += range == current;
     }
     narrowed += range.x > 2.0 * current.x;
+    thick += range == current || range.x <= 0.8 * range.y;
   }
   std::printf("     tight range: %d narrowed, %d points clipped, %d wider, %d of %d boxes at the "
               "eye kept the camera's range\n",
@@ -227,6 +228,7 @@ void TestTightClippingRange(std::mt19937& rng)
   Check(clipped == 0 && wider == 0, "the tight range clips nothing of the box and is never wider");
   Check(narrowed > 500, "the tight range narrows the near plane for boxes in front of the eye");
   Check(boxesAtEye > 0 && keptAtEye == boxesAtEye, "a box at the eye keeps the camera's range");
+  Check(thick == 2000, "the tight near plane stays within 0.8 of the far one");
   const double nan = std::nan("");
   Check(penumbra::TightClippingRange({ nan, 0, 0 }, { 1, 1, 1 }, glm::dmat4(1.0), { 0.1, 10 }) ==
       glm::dvec2(0.1, 10),

@@ -882,6 +882,32 @@ void TestDelegateChain()
   cameraPass->SetDelegatePass(sequence);
   scene.Renderer->SetPass(cameraPass);
   CheckAgainstTruth("inside a vtkCameraPass / vtkSequencePass chain", scene.Render());
+
+  // The passes after it draw whole: a translucent sphere against the sky, drawn by the chain's
+  // vtkTranslucentPass, looks the same with shadows on and off (the pass restores the scissor
+  // box its volumes set).
+  vtkActor* glass = scene.Sphere(-1.5, 1.8, -2.5, 0.3);
+  glass->GetProperty()->SetOpacity(0.5);
+  vtkSoftShadowPass::SetCastsShadows(glass, false);
+  scene.Renderer->SetWorldPoint(-1.5, 1.8, -2.5, 1.0);
+  scene.Renderer->WorldToDisplay();
+  const int x = static_cast<int>(scene.Renderer->GetDisplayPoint()[0]);
+  const int y = static_cast<int>(scene.Renderer->GetDisplayPoint()[1]);
+  auto colourAt = [&]()
+  {
+    scene.Window->Render();
+    unsigned char* rgb = scene.Window->GetPixelData(x, y, x, y, 0);
+    const std::array<int, 3> colour = { rgb[0], rgb[1], rgb[2] };
+    delete[] rgb;
+    return colour;
+  };
+  scene.Pass->ShadowsEnabledOff();
+  const std::array<int, 3> unshadowed = colourAt();
+  scene.Pass->ShadowsEnabledOn();
+  const std::array<int, 3> shadowed = colourAt();
+  std::printf("     glass at (%d, %d) after the pass: %d %d %d, without shadows %d %d %d\n", x, y,
+    shadowed[0], shadowed[1], shadowed[2], unshadowed[0], unshadowed[1], unshadowed[2]);
+  Check(shadowed == unshadowed, "translucent geometry after the pass is drawn whole");
 }
 
 void TestBadInput()
