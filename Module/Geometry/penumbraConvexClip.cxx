@@ -13,11 +13,7 @@ using Polygon = std::vector<glm::dvec3>;
 /// The six outward, counter-clockwise faces of the box.
 std::vector<Polygon> BoxFaces(const Box& box)
 {
-  auto corner = [&](int i)
-  {
-    return glm::dvec3((i & 1) ? box.Max.x : box.Min.x, (i & 2) ? box.Max.y : box.Min.y,
-      (i & 4) ? box.Max.z : box.Min.z);
-  };
+  auto corner = [&](int i) { return BoxCorner(box.Min, box.Max, i); };
   static const int faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
     { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
   std::vector<Polygon> polygons;

@@ -38,6 +38,12 @@ struct ConvexPolyhedron
   VTKPENUMBRAGEOMETRY_EXPORT double Volume() const;
 };
 
+/// Corner `i` (0 to 7) of the box min..max: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+inline glm::dvec3 BoxCorner(const glm::dvec3& min, const glm::dvec3& max, int i)
+{
+  return glm::dvec3((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z);
+}
+
 /// An axis-aligned box; Valid is false for the unbounded case (no box to cut to).
 struct Box
 {

@@ -124,9 +124,7 @@ glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax
   double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
   for (int corner = 0; corner < 8; ++corner)
   {
-    const glm::dvec3 point((corner & 1) ? boxMax.x : boxMin.x, (corner & 2) ? boxMax.y : boxMin.y,
-      (corner & 4) ? boxMax.z : boxMin.z);
-    const double depth = -(worldToView * glm::dvec4(point, 1.0)).z;
+    const double depth = -(worldToView * glm::dvec4(BoxCorner(boxMin, boxMax, corner), 1.0)).z;
     nearest = std::min(nearest, depth);
     farthest = std::max(farthest, depth);
   }
@@ -207,9 +205,7 @@ PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax
   double start = std::numeric_limits<double>::infinity();
   for (int corner = 0; corner < 8; ++corner)
   {
-    const glm::dvec3 point((corner & 1) ? casterMax.x : casterMin.x,
-      (corner & 2) ? casterMax.y : casterMin.y, (corner & 4) ? casterMax.z : casterMin.z);
-    start = std::min(start, glm::dot(away, point - origin));
+    start = std::min(start, glm::dot(away, BoxCorner(casterMin, casterMax, corner) - origin));
   }
   if (light.w == 0.0 || start >= 0.0)
   {

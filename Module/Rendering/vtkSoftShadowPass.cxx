@@ -773,10 +773,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     caster->WorldMax = -caster->WorldMin;
     for (int corner = 0; corner < 8; ++corner)
     {
-      const glm::dvec3 local((corner & 1) ? topo.BoundsMax.x : topo.BoundsMin.x,
-        (corner & 2) ? topo.BoundsMax.y : topo.BoundsMin.y,
-        (corner & 4) ? topo.BoundsMax.z : topo.BoundsMin.z);
-      const glm::dvec3 world(caster->ObjectToWorld * glm::dvec4(local, 1.0));
+      const glm::dvec3 world(caster->ObjectToWorld *
+        glm::dvec4(penumbra::BoxCorner(topo.BoundsMin, topo.BoundsMax, corner), 1.0));
       caster->WorldMin = glm::min(caster->WorldMin, world);
       caster->WorldMax = glm::max(caster->WorldMax, world);
     }
