@@ -51,6 +51,28 @@ bool DrawsImposters(vtkMapper* mapper)
   return mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper") ||
     mapper->IsA("vtkPointGaussianMapper");
 }
+/// What an actor's own surfaces let through, as VTK draws them: in the opaque pass (ForceOpaque
+/// included) they cast fully; in the translucent pass (opacity below 1, colours with alpha, a
+/// texture, ForceTranslucent) they are seen through and cast by the property's opacity.
+struct DrawnOpacity
+{
+  double Opacity;
+  bool SeenThrough;
+};
+
+DrawnOpacity ActorOpacity(vtkActor* actor)
+{
+  const bool seenThrough = !actor->HasOpaqueGeometry();
+  return { seenThrough ? std::min(actor->GetProperty()->GetOpacity(), 1.0) : 1.0, seenThrough };
+}
+
+/// The same for a block of a composite mapper, whose opacity (the nearest block's that sets
+/// one, else the property's) decides as vtkCompositePolyDataMapper2 does.
+DrawnOpacity BlockOpacity(vtkActor* actor, double opacity)
+{
+  const bool seenThrough = opacity < 1.0 || actor->GetForceTranslucent();
+  return { seenThrough ? std::min(opacity, 1.0) : 1.0, seenThrough };
+}
 } // namespace
 
 std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)
@@ -133,24 +155,14 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::size_t part = 0;
-  const std::size_t first = surfaces.size();
-  this->Blocks(actor, composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, data,
-    matrix, true, actor->GetProperty()->GetOpacity(), part, surfaces);
-  if (!composite)
-  {
-    // One surface, drawn as the actor says: opaque (ForceOpaque, say) or in the translucent
-    // pass (colours with alpha, a texture, ForceTranslucent).
-    for (std::size_t i = first; i < surfaces.size(); ++i)
-    {
-      surfaces[i].SeenThrough = !actor->HasOpaqueGeometry();
-      surfaces[i].Opacity = surfaces[i].SeenThrough ? surfaces[i].Opacity : 1.0;
-    }
-  }
+  this->Blocks(actor, composite != nullptr,
+    composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, data, matrix, true,
+    actor->GetProperty()->GetOpacity(), part, surfaces);
 }
 
-void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attributes,
-  vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
-  std::vector<DrawnSurface>& surfaces)
+void SceneWalk::Blocks(vtkActor* actor, bool composite,
+  vtkCompositeDataDisplayAttributes* attributes, vtkDataObject* node, const glm::dmat4& matrix,
+  bool visible, double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
 {
   // Block attributes apply to a node and everything under it unless a child sets its own,
   // as vtkCompositePolyDataMapper2 applies them.
@@ -168,7 +180,7 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attri
     {
       if (child)
       {
-        this->Blocks(actor, attributes, child, matrix, visible, opacity, part, surfaces);
+        this->Blocks(actor, composite, attributes, child, matrix, visible, opacity, part, surfaces);
       }
       else
       {
@@ -178,21 +190,20 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attri
     return;
   }
   const std::size_t index = part++;
+  // A composite mapper draws each block by its opacity; otherwise the actor decides.
+  const DrawnOpacity drawn = composite ? BlockOpacity(actor, opacity) : ActorOpacity(actor);
   if (!visible || !(opacity > 0.0))
   {
     return;
   }
-  const bool translucent = opacity < 1.0 || actor->GetForceTranslucent();
-  surfaces.push_back(
-    { actor, node, matrix, index, translucent ? std::min(opacity, 1.0) : 1.0, translucent });
+  surfaces.push_back({ actor, node, matrix, index, drawn.Opacity, drawn.SeenThrough });
 }
 
 void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
-  const bool seenThrough = !actor->HasOpaqueGeometry();
-  const double opacity = seenThrough ? std::min(actor->GetProperty()->GetOpacity(), 1.0) : 1.0;
-  if (!(opacity > 0.0))
+  const DrawnOpacity drawn = ActorOpacity(actor);
+  if (!(drawn.Opacity > 0.0))
   {
     return;
   }
@@ -306,7 +317,8 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
         nonFinite = true;
         continue;
       }
-      surfaces.push_back({ actor, sources[entry], matrix * glyph, part, opacity, seenThrough });
+      surfaces.push_back(
+        { actor, sources[entry], matrix * glyph, part, drawn.Opacity, drawn.SeenThrough });
     }
   }
   if (nonFinite)

@@ -66,8 +66,9 @@ public:
 private:
   void Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
-  void Blocks(vtkActor* actor, vtkCompositeDataDisplayAttributes* attributes, vtkDataObject* node,
-    const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
+  /// `composite`: drawn by a vtkCompositePolyDataMapper2, which decides per block.
+  void Blocks(vtkActor* actor, bool composite, vtkCompositeDataDisplayAttributes* attributes,
+    vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
     std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
