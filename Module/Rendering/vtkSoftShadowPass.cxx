@@ -660,6 +660,34 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
   }
 }
 
+namespace
+{
+/// What a prop's bounds add to a box: nothing (no bounds: 2D props, empty data), their extent,
+/// or nothing because they are not finite (Unknown).
+enum class PropExtent
+{
+  None,
+  Finite,
+  Unknown
+};
+
+PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
+{
+  const double* bounds = prop->GetBounds();
+  if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    return PropExtent::None;
+  }
+  if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+  {
+    return PropExtent::Unknown;
+  }
+  box.Extend(
+    glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
+  return PropExtent::Finite;
+}
+} // namespace
+
 void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
 {
   this->SceneBox = penumbra::Box();
@@ -668,18 +696,12 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
   vtkProp* prop;
   for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
   {
-    const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
-    if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
-    {
-      continue; // 2D props and empty ones: nothing in depth
-    }
-    if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+    // 2D props and empty ones add nothing in depth; one of unknown extent, no box at all.
+    if (prop->GetVisibility() && ExtendByProp(this->SceneBox, prop) == PropExtent::Unknown)
     {
       this->SceneBox = penumbra::Box();
       return;
     }
-    this->SceneBox.Extend(
-      glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
   }
 }
 
@@ -688,15 +710,11 @@ void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
   penumbra::Box current;
   for (vtkProp* prop : this->Receivers)
   {
-    const double* bounds = prop->GetBounds();
-    if (!bounds || !vtkMath::AreBoundsInitialized(bounds) ||
-      !std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+    if (ExtendByProp(current, prop) != PropExtent::Finite)
     {
       this->ReceiverBox = penumbra::Box(); // a receiver of unknown extent: nothing to cut to
       return;
     }
-    current.Extend(
-      glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
   }
   this->ReceiverBox = penumbra::StableReceiverBox(this->ReceiverBox, current);
 }
@@ -887,12 +905,13 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     }
     const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
     const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
+    // A translucent caster's count is the number of its surfaces in the way.
+    const penumbra::CountingRule rule = caster->Translucent()
+      ? penumbra::CountingRule::EveryTriangle
+      : penumbra::CountingRule::FrontFacesWhereTheySuffice;
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
-      const penumbra::CountingRule rule = caster->Translucent()
-        ? penumbra::CountingRule::EveryTriangle
-        : penumbra::CountingRule::FrontFacesWhereTheySuffice;
       updates +=
         volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored, rule) ? 1 : 0;
     }
