@@ -129,31 +129,22 @@ void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& ligh
   // lights hold none.
   const int width = frame.Size[0], height = frame.Size[1];
   const unsigned int words = static_cast<unsigned int>((light.CountingSamples.size() + 3) / 4);
-  if (this->CentreCount->GetContext() != frame.Window)
+  if (this->SampleCounters->GetContext() != frame.Window)
   {
-    this->CentreCount->SetContext(frame.Window);
     this->SampleCounters->SetContext(frame.Window);
   }
-  if (static_cast<int>(this->CentreCount->GetWidth()) != width ||
-    static_cast<int>(this->CentreCount->GetHeight()) != height ||
+  if (static_cast<int>(this->SampleCounters->GetWidth()) != width ||
+    static_cast<int>(this->SampleCounters->GetHeight()) != height ||
     this->SampleCounters->GetDepth() != words)
   {
-    for (vtkTextureObject* texture : { this->CentreCount.Get(), this->SampleCounters.Get() })
-    {
-      texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    }
-    this->CentreCount->Allocate2D(width, height, 1, VTK_FLOAT);
+    this->SampleCounters->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->SampleCounters->SetMagnificationFilter(vtkTextureObject::Nearest);
     this->SampleCounters->SetInternalFormat(GL_R32UI);
     this->SampleCounters->SetFormat(GL_RED_INTEGER);
     this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
     this->SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
   }
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
-  frame.AttachColour(this->CentreCount, 0);
-  ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  frame.AttachClearedFloatTarget(this->CentreCount);
 }
 
 void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)

@@ -13,26 +13,8 @@ namespace penumbra
 
 void HardShadowTechnique::BeginTransmission(ShadowFrame& frame)
 {
-  const int width = frame.Size[0], height = frame.Size[1];
-  if (this->LogTransmission->GetContext() != frame.Window)
-  {
-    this->LogTransmission->SetContext(frame.Window);
-  }
-  if (static_cast<int>(this->LogTransmission->GetWidth()) != width ||
-    static_cast<int>(this->LogTransmission->GetHeight()) != height)
-  {
-    this->LogTransmission->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->LogTransmission->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->LogTransmission->Allocate2D(width, height, 1, VTK_FLOAT);
-  }
+  frame.AttachClearedFloatTarget(this->LogTransmission);
   vtkOpenGLState* ostate = frame.Window->GetState();
-  frame.AttachColour(this->LogTransmission, 0);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  {
-    vtkOpenGLState::ScopedglClearColor clearColor(ostate);
-    ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  }
   ostate->vtkglDisable(GL_STENCIL_TEST); // the stencil keeps the opaque casters' count
   ostate->vtkglEnable(GL_BLEND);
   this->TransmissionDrawn = true;

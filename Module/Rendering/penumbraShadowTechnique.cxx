@@ -127,6 +127,27 @@ void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
   this->Buffer->AttachColour(texture, layer);
 }
 
+void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture) const
+{
+  if (texture->GetContext() != this->Window)
+  {
+    texture->SetContext(this->Window);
+  }
+  if (static_cast<int>(texture->GetWidth()) != this->Size[0] ||
+    static_cast<int>(texture->GetHeight()) != this->Size[1])
+  {
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->Allocate2D(this->Size[0], this->Size[1], 1, VTK_FLOAT);
+  }
+  vtkOpenGLState* ostate = this->Window->GetState();
+  this->AttachColour(texture, 0);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+  ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
 void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program) const
 {
   const float viewport[2] = { static_cast<float>(this->Size[0]),

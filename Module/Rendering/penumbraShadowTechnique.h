@@ -166,6 +166,10 @@ struct ShadowFrame
   /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
   /// and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
+  /// Makes `texture` a float (R32F) target of the viewport's size in this window, allocating it
+  /// when it is not one yet, attaches it as AttachColour does and clears it to 0 with colour
+  /// writes on: where a technique adds counts with additive blending.
+  void AttachClearedFloatTarget(vtkTextureObject* texture) const;
   /// Sets the uniforms every shader that reads the scene depth declares: the depth copy's
   /// texture unit (activated by the caller) and the viewport size.
   void SetDepthUniforms(vtkShaderProgram* program) const;
