@@ -9,9 +9,12 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -141,83 +144,6 @@ void AppendStrip(vtkIdType npts, const vtkIdType* ids, std::vector<glm::uvec3>& 
   }
 }
 
-void BuildEdges(CasterTopology& topo)
-{
-  struct HalfEdge
-  {
-    std::uint32_t A, B, Triangle;
-    std::int32_t Sign;
-  };
-  // Half-edges grouped by their smaller end with a counting sort (linear in the mesh), then
-  // each group (a vertex's few edges) sorted by the other end: a comparison sort of all of them
-  // cost most of a rebuild on time-varying data.
-  std::vector<std::uint32_t> groupStart(topo.Points.size() + 1, 0);
-  for (const glm::uvec3& tri : topo.Triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++groupStart[std::min(tri[k], tri[(k + 1) % 3]) + 1];
-    }
-  }
-  for (std::size_t v = 1; v < groupStart.size(); ++v)
-  {
-    groupStart[v] += groupStart[v - 1];
-  }
-  std::vector<HalfEdge> halfEdges(topo.Triangles.size() * 3);
-  std::vector<std::uint32_t> next(groupStart.begin(), groupStart.end() - 1);
-  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
-  {
-    const glm::uvec3& tri = topo.Triangles[t];
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
-      const HalfEdge half = from < to ? HalfEdge{ from, to, t, +1 } : HalfEdge{ to, from, t, -1 };
-      halfEdges[next[half.A]++] = half;
-    }
-  }
-  for (std::size_t v = 0; v + 1 < groupStart.size(); ++v)
-  {
-    std::sort(halfEdges.begin() + groupStart[v], halfEdges.begin() + groupStart[v + 1],
-      [](const HalfEdge& l, const HalfEdge& r)
-      { return l.B != r.B ? l.B < r.B : l.Triangle < r.Triangle; });
-  }
-
-  topo.Uses.reserve(halfEdges.size());
-  topo.Edges.reserve(halfEdges.size() / 2 + 1); // about two uses an edge
-  TopologyReport& report = topo.Report;
-  for (std::size_t i = 0; i < halfEdges.size();)
-  {
-    std::size_t j = i;
-    Edge edge{ halfEdges[i].A, halfEdges[i].B, static_cast<std::uint32_t>(topo.Uses.size()), 0,
-      EdgeKind::Boundary };
-    for (; j < halfEdges.size() && halfEdges[j].A == edge.A && halfEdges[j].B == edge.B; ++j)
-    {
-      topo.Uses.push_back({ halfEdges[j].Triangle, halfEdges[j].Sign });
-    }
-    edge.UseCount = static_cast<std::uint32_t>(j - i);
-    if (edge.UseCount == 1)
-    {
-      edge.Kind = EdgeKind::Boundary;
-      ++report.BoundaryEdges;
-    }
-    else if (edge.UseCount == 2)
-    {
-      const bool opposite = topo.Uses[edge.FirstUse].Sign != topo.Uses[edge.FirstUse + 1].Sign;
-      edge.Kind = opposite ? EdgeKind::Manifold : EdgeKind::Inconsistent;
-      report.InconsistentEdges += opposite ? 0 : 1;
-    }
-    else
-    {
-      edge.Kind = EdgeKind::NonManifold;
-      ++report.NonManifoldEdges;
-    }
-    topo.Edges.push_back(edge);
-    i = j;
-  }
-  topo.ClosedAndOriented = !topo.Edges.empty() && report.BoundaryEdges == 0 &&
-    report.InconsistentEdges == 0 && report.NonManifoldEdges == 0;
-}
-
 /// Appends the triangles of `triangles` whose points `map` sends to three distinct finite
 /// points of topo.Points, counting the others in `report`.
 void AddTriangles(const std::vector<glm::uvec3>& triangles, const std::vector<std::uint32_t>& map,
@@ -323,27 +249,209 @@ void KeepRepresentatives(CasterTopology& topo, const std::vector<std::uint32_t>&
   }
 }
 
-/// Welds the ends of topo's boundary edges closer than `tolerance`; when any merge, builds the
-/// triangles and edges again (counting the merged points in `report`).
-void WeldSeams(CasterTopology& topo, double tolerance, TopologyReport& report)
+/// Empties `topo` but keeps the capacity of its arrays.
+void ClearKeepingStorage(CasterTopology& topo)
 {
-  std::vector<std::uint32_t> seamPoints;
-  std::vector<char> isSeam(topo.Points.size(), 0);
-  for (const Edge& edge : topo.Edges)
+  topo.Origin = topo.BoundsMin = topo.BoundsMax = glm::dvec3(0.0);
+  topo.Points.clear();
+  topo.Triangles.clear();
+  topo.Edges.clear();
+  topo.Uses.clear();
+  topo.ClosedAndOriented = false;
+  topo.Report = TopologyReport();
+}
+
+/// Sorts a vertex's few half-edges as integers (the other end, then the triangle): groups
+/// average six entries, where std::sort's set-up costs more than the sort.
+void InsertionSort(std::uint64_t* first, std::uint64_t* last)
+{
+  for (std::uint64_t* i = first + 1; i < last; ++i)
   {
-    if (edge.Kind != EdgeKind::Boundary)
+    const std::uint64_t key = *i;
+    std::uint64_t* j = i;
+    for (; j > first && *(j - 1) > key; --j)
     {
-      continue;
+      *j = *(j - 1);
     }
-    for (const std::uint32_t end : { edge.A, edge.B })
+    *j = key;
+  }
+}
+
+/// Whether the edge's uses, [first, first + count) of `uses`, make it boundary, manifold,
+/// inconsistently wound or non-manifold.
+EdgeKind ClassifyEdge(const EdgeUse* uses, std::uint32_t count)
+{
+  if (count == 1)
+  {
+    return EdgeKind::Boundary;
+  }
+  if (count == 2)
+  {
+    return uses[0].Sign != uses[1].Sign ? EdgeKind::Manifold : EdgeKind::Inconsistent;
+  }
+  return EdgeKind::NonManifold;
+}
+
+/// Values that every build overwrites: grows, never shrinks, never initialized (a vector's
+/// resize would write each element once more before the build does).
+template <typename T>
+class ScratchArray
+{
+public:
+  T* Get(std::size_t count)
+  {
+    if (count > this->Capacity)
     {
-      if (!isSeam[end])
-      {
-        isSeam[end] = 1;
-        seamPoints.push_back(end);
-      }
+      this->Values.reset(new T[count]);
+      this->Capacity = count;
+    }
+    return this->Values.get();
+  }
+  std::size_t GetBytes() const { return this->Capacity * sizeof(T); }
+
+private:
+  std::unique_ptr<T[]> Values;
+  std::size_t Capacity = 0;
+};
+
+} // namespace
+
+struct TopologyScratch
+{
+  std::vector<glm::dvec3> InputPoints;
+  std::vector<glm::uvec3> InputTriangles;
+  std::vector<std::uint32_t> PointMap;
+  std::vector<std::uint32_t> GroupStart; ///< per point: its first half-edge
+  ScratchArray<std::uint32_t> GroupFill;
+  ScratchArray<std::uint32_t> EdgeStart; ///< per point: its first edge
+  /// Half-edges grouped by their smaller end: the other end << 32 | triangle << 1 | reversed.
+  ScratchArray<std::uint64_t> HalfEdges;
+};
+
+namespace
+{
+
+/// Groups topo's half-edges by their smaller end, with a counting sort: linear, and stable, so
+/// each group stays in triangle order (a comparison sort of all of them cost most of a rebuild).
+void GroupHalfEdges(TopologyScratch& scratch, const CasterTopology& topo)
+{
+  std::vector<std::uint32_t>& start = scratch.GroupStart;
+  start.assign(topo.Points.size() + 1, 0);
+  for (const glm::uvec3& tri : topo.Triangles)
+  {
+    ++start[std::min(tri.x, tri.y) + 1];
+    ++start[std::min(tri.y, tri.z) + 1];
+    ++start[std::min(tri.z, tri.x) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::uint32_t* fill = scratch.GroupFill.Get(topo.Points.size());
+  std::copy(start.begin(), start.end() - 1, fill);
+  std::uint64_t* halves = scratch.HalfEdges.Get(3 * topo.Triangles.size());
+  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
+  {
+    const glm::uvec3& tri = topo.Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
+      const bool reversed = to < from;
+      const std::uint32_t low = reversed ? to : from, high = reversed ? from : to;
+      halves[fill[low]++] =
+        std::uint64_t(high) << 32 | std::uint64_t(t) << 1 | std::uint64_t(reversed);
     }
   }
+}
+
+std::uint32_t OtherEnd(std::uint64_t half)
+{
+  return static_cast<std::uint32_t>(half >> 32);
+}
+
+/// Edges and uses from the grouped half-edges. Every half-edge is one use, at its own index, and
+/// every point's edges start at a prefix sum of the edges before it: the points are independent
+/// and run in parallel, and the result does not depend on how they were split.
+void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
+{
+  GroupHalfEdges(scratch, topo);
+  const std::vector<std::uint32_t>& start = scratch.GroupStart;
+  const vtkIdType pointCount = static_cast<vtkIdType>(topo.Points.size());
+  std::uint64_t* const halves = scratch.HalfEdges.Get(3 * topo.Triangles.size());
+  std::uint32_t* const edgeStart = scratch.EdgeStart.Get(topo.Points.size() + 1);
+  topo.Uses.resize(3 * topo.Triangles.size());
+  vtkSMPTools::For(0, pointCount,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType a = begin; a < end; ++a)
+      {
+        InsertionSort(halves + start[a], halves + start[a + 1]);
+        std::uint32_t edges = 0;
+        for (std::uint32_t h = start[a]; h < start[a + 1]; ++h)
+        {
+          const std::uint32_t low = static_cast<std::uint32_t>(halves[h]);
+          topo.Uses[h].Triangle = low >> 1;
+          topo.Uses[h].Sign = (low & 1u) ? -1 : +1;
+          edges += h == start[a] || OtherEnd(halves[h]) != OtherEnd(halves[h - 1]);
+        }
+        edgeStart[a + 1] = edges;
+      }
+    });
+  edgeStart[0] = 0;
+  std::partial_sum(edgeStart, edgeStart + pointCount + 1, edgeStart);
+
+  topo.Edges.resize(edgeStart[pointCount]);
+  std::atomic<std::size_t> boundary{ 0 }, inconsistent{ 0 }, nonManifold{ 0 };
+  vtkSMPTools::For(0, pointCount,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::size_t counts[4] = { 0, 0, 0, 0 };
+      for (vtkIdType a = begin; a < end; ++a)
+      {
+        Edge* edge = topo.Edges.data() + edgeStart[a];
+        for (std::uint32_t h = start[a]; h < start[a + 1]; ++edge)
+        {
+          // Fields written in place: an Edge temporary went through the stack in 32-bit stores
+          // reloaded as wider ones, a store-forwarding stall that took half the build.
+          edge->A = static_cast<std::uint32_t>(a);
+          edge->B = OtherEnd(halves[h]);
+          edge->FirstUse = h;
+          while (h < start[a + 1] && OtherEnd(halves[h]) == edge->B)
+          {
+            ++h;
+          }
+          edge->UseCount = h - edge->FirstUse;
+          edge->Kind = ClassifyEdge(topo.Uses.data() + edge->FirstUse, edge->UseCount);
+          ++counts[static_cast<int>(edge->Kind)];
+        }
+      }
+      boundary += counts[static_cast<int>(EdgeKind::Boundary)];
+      inconsistent += counts[static_cast<int>(EdgeKind::Inconsistent)];
+      nonManifold += counts[static_cast<int>(EdgeKind::NonManifold)];
+    });
+  TopologyReport& report = topo.Report;
+  report.BoundaryEdges = boundary;
+  report.InconsistentEdges = inconsistent;
+  report.NonManifoldEdges = nonManifold;
+  topo.ClosedAndOriented = !topo.Edges.empty() && report.BoundaryEdges == 0 &&
+    report.InconsistentEdges == 0 && report.NonManifoldEdges == 0;
+}
+
+/// Welds the ends of topo's boundary edges closer than `tolerance`; when any merge, builds the
+/// triangles and edges again (counting the merged points in `report`).
+void WeldSeams(
+  TopologyScratch& scratch, CasterTopology& topo, double tolerance, TopologyReport& report)
+{
+  // Sorted rather than flagged: an array over all points would cost a full-size allocation on
+  // every rebuild of an open mesh, where the boundary is a small part of it.
+  std::vector<std::uint32_t> seamPoints;
+  for (const Edge& edge : topo.Edges)
+  {
+    if (edge.Kind == EdgeKind::Boundary)
+    {
+      seamPoints.push_back(edge.A);
+      seamPoints.push_back(edge.B);
+    }
+  }
+  std::sort(seamPoints.begin(), seamPoints.end());
+  seamPoints.erase(std::unique(seamPoints.begin(), seamPoints.end()), seamPoints.end());
   std::vector<glm::dvec3> seamPositions(seamPoints.size()), welded;
   for (std::size_t i = 0; i < seamPoints.size(); ++i)
   {
@@ -368,21 +476,22 @@ void WeldSeams(CasterTopology& topo, double tolerance, TopologyReport& report)
     map[seamPoints[i]] = group;
   }
   report.WeldedPoints += seamPoints.size() - welded.size();
-  const std::vector<glm::uvec3> triangles = std::move(topo.Triangles);
-  std::vector<glm::dvec3> points = std::move(topo.Points);
-  const glm::dvec3 origin = topo.Origin;
-  topo = CasterTopology();
-  topo.Origin = origin;
-  topo.Points = std::move(points);
+  // Welding is rare (seams, soups): its copies are not worth keeping between builds.
+  std::vector<glm::uvec3> triangles;
+  triangles.swap(topo.Triangles);
+  topo.Edges.clear();
+  topo.Uses.clear();
+  topo.Report = TopologyReport();
   AddTriangles(triangles, map, topo, report); // merged corners make some degenerate
   KeepRepresentatives(topo, map);
-  BuildEdges(topo);
+  BuildEdges(scratch, topo);
 }
 
-CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
-  const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance, TopologyReport report)
+void BuildFromSoup(TopologyScratch& scratch, const std::vector<glm::dvec3>& points,
+  const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance, TopologyReport report,
+  CasterTopology& topo)
 {
-  CasterTopology topo;
+  ClearKeepingStorage(topo);
   report.InputPoints = points.size();
   // Cells the vtkPolyData path dropped for bad ids were counted there.
   report.InputTriangles = triangles.size() + report.InvalidIndexTriangles;
@@ -408,7 +517,7 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
       ++(inRange ? report.NonFiniteTriangles : report.InvalidIndexTriangles);
     }
     topo.Report = report;
-    return topo;
+    return;
   }
   // Halves first: lo + hi overflows to Inf for points near the largest doubles, and an infinite
   // origin would drop every point as non-finite (and reach the renderer's matrices).
@@ -420,7 +529,8 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   // edges built again if any merged. Data whose points are already shared (contour output, any
   // closed mesh) pays for no welding at all; a triangle soup welds every point, as before.
   topo.Points.resize(points.size());
-  std::vector<std::uint32_t> map(points.size());
+  std::vector<std::uint32_t>& map = scratch.PointMap;
+  map.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     topo.Points[i] = points[i] - topo.Origin;
@@ -431,11 +541,11 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
   {
     KeepRepresentatives(topo, map); // no NaN or infinite point stays in the mesh
   }
-  BuildEdges(topo);
+  BuildEdges(scratch, topo);
   const double tolerance = relativeWeldTolerance * diagonal;
   if (topo.Report.BoundaryEdges > 0 && tolerance > 0.0)
   {
-    WeldSeams(topo, tolerance, report);
+    WeldSeams(scratch, topo, tolerance, report);
   }
   report.BoundaryEdges = topo.Report.BoundaryEdges;
   report.InconsistentEdges = topo.Report.InconsistentEdges;
@@ -456,7 +566,6 @@ CasterTopology BuildFromSoup(const std::vector<glm::dvec3>& points,
     topo.BoundsMax = rhi;
   }
   topo.Report = report;
-  return topo;
 }
 
 } // namespace
@@ -493,14 +602,33 @@ std::string TopologyReport::Describe() const
 CasterTopology CasterTopology::Build(const std::vector<glm::dvec3>& points,
   const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance)
 {
-  return BuildFromSoup(points, triangles, relativeWeldTolerance, TopologyReport());
+  CasterTopology topology;
+  TopologyBuilder().Build(points, triangles, topology, relativeWeldTolerance);
+  return topology;
 }
 
 CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTolerance)
 {
+  CasterTopology topology;
+  TopologyBuilder().Build(input, topology, relativeWeldTolerance);
+  return topology;
+}
+
+void TopologyBuilder::Build(const std::vector<glm::dvec3>& points,
+  const std::vector<glm::uvec3>& triangles, CasterTopology& topology, double relativeWeldTolerance)
+{
+  BuildFromSoup(
+    *this->Scratch, points, triangles, relativeWeldTolerance, TopologyReport(), topology);
+}
+
+void TopologyBuilder::Build(
+  vtkPolyData* input, CasterTopology& topology, double relativeWeldTolerance)
+{
   TopologyReport report;
-  std::vector<glm::dvec3> points;
-  std::vector<glm::uvec3> triangles;
+  std::vector<glm::dvec3>& points = this->Scratch->InputPoints;
+  std::vector<glm::uvec3>& triangles = this->Scratch->InputTriangles;
+  points.clear();
+  triangles.clear();
   if (input && input->GetPoints())
   {
     vtkPoints* pts = input->GetPoints();
@@ -558,7 +686,23 @@ CasterTopology CasterTopology::Build(vtkPolyData* input, double relativeWeldTole
       }
     }
   }
-  return BuildFromSoup(points, triangles, relativeWeldTolerance, report);
+  BuildFromSoup(*this->Scratch, points, triangles, relativeWeldTolerance, report, topology);
+}
+
+TopologyBuilder::TopologyBuilder()
+  : Scratch(new TopologyScratch)
+{
+}
+
+TopologyBuilder::~TopologyBuilder() = default;
+
+std::size_t TopologyBuilder::GetScratchBytes() const
+{
+  const TopologyScratch& scratch = *this->Scratch;
+  return scratch.InputPoints.capacity() * sizeof(glm::dvec3) +
+    scratch.InputTriangles.capacity() * sizeof(glm::uvec3) +
+    (scratch.PointMap.capacity() + scratch.GroupStart.capacity()) * sizeof(std::uint32_t) +
+    scratch.GroupFill.GetBytes() + scratch.EdgeStart.GetBytes() + scratch.HalfEdges.GetBytes();
 }
 
 } // namespace penumbra

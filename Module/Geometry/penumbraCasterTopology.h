@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ class vtkPolyData;
 
 namespace penumbra
 {
+struct TopologyScratch;
 
 enum class EdgeKind : std::uint8_t
 {
@@ -89,11 +91,40 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
   /// Relative weld tolerance used by Build (times the bounds diagonal).
   static constexpr double DefaultWeldTolerance = 1e-7;
 
+  /// One-off builds (a TopologyBuilder each); data rebuilt often should keep a builder.
   static CasterTopology Build(
     vtkPolyData* input, double relativeWeldTolerance = DefaultWeldTolerance);
   /// Same, from raw triangles (used by tests and fuzzing).
   static CasterTopology Build(const std::vector<glm::dvec3>& points,
     const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance = DefaultWeldTolerance);
+};
+
+/**
+ * Builds CasterTopology into storage kept between builds. Data that changes every frame (a
+ * simulation played back) then rebuilds without allocating once its size has settled: fresh
+ * pages cost about as much as the build itself at a million triangles. The edge work runs in
+ * parallel (vtkSMPTools). The scratch held is about 56 bytes per triangle, so keep a builder
+ * only for data that is rebuilt.
+ */
+class VTKPENUMBRAGEOMETRY_EXPORT TopologyBuilder
+{
+public:
+  TopologyBuilder();
+  ~TopologyBuilder();
+  TopologyBuilder(const TopologyBuilder&) = delete;
+  TopologyBuilder& operator=(const TopologyBuilder&) = delete;
+
+  /// Replaces `topology` with that of `input`, reusing its storage.
+  void Build(vtkPolyData* input, CasterTopology& topology,
+    double relativeWeldTolerance = CasterTopology::DefaultWeldTolerance);
+  void Build(const std::vector<glm::dvec3>& points, const std::vector<glm::uvec3>& triangles,
+    CasterTopology& topology, double relativeWeldTolerance = CasterTopology::DefaultWeldTolerance);
+
+  /// Bytes of scratch held for the next build.
+  std::size_t GetScratchBytes() const;
+
+private:
+  std::unique_ptr<TopologyScratch> Scratch;
 };
 
 } // namespace penumbra

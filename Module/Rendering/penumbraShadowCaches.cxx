@@ -72,7 +72,20 @@ bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
   this->Uploaded = false;
 
   vtkSmartPointer<vtkPolyData> surface = SurfaceOf(data);
-  this->Topology = CasterTopology::Build(surface);
+  if (this->Generation > 1 && !this->Builder)
+  {
+    // Data that changed once will likely change again (a simulation played back): keep the
+    // builder's scratch so that later rebuilds allocate nothing. Static data holds none.
+    this->Builder.reset(new TopologyBuilder);
+  }
+  if (this->Builder)
+  {
+    this->Builder->Build(surface, this->Topology);
+  }
+  else
+  {
+    this->Topology = CasterTopology::Build(surface);
+  }
   // Data that changes every frame (a simulation played back) warns once, not every frame.
   const std::string problems = this->Topology.Report.Describe();
   if (!problems.empty() && !this->WarnedProblems)
@@ -97,7 +110,8 @@ void MeshCache::Bind(vtkShaderProgram* program)
   if (!this->Uploaded)
   {
     const std::vector<glm::dvec3>& points = this->Topology.Points;
-    std::vector<float> buffer(points.size() * 8);
+    std::vector<float>& buffer = this->UploadBuffer; // kept: changing data uploads every frame
+    buffer.resize(points.size() * 8);
     for (std::size_t i = 0; i < points.size(); ++i)
     {
       for (int k = 0; k < 3; ++k)

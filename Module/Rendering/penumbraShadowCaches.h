@@ -44,6 +44,9 @@ struct MeshCache
   vtkMTimeType BuiltAt = 0;
   std::size_t Generation = 0; ///< bumped on every rebuild, so volumes know they are stale
   CasterTopology Topology;
+  /// Created on the second build: only data that changes keeps scratch between builds.
+  std::unique_ptr<TopologyBuilder> Builder;
+  std::vector<float> UploadBuffer;
   vtkNew<vtkOpenGLBufferObject> Vertices;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;

@@ -23,9 +23,11 @@
 #include "vtkSphereSource.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <string>
@@ -424,13 +426,87 @@ void TestDegenerateInput()
   Check(none.Sides.empty() && none.LightCap.empty(), "empty caster casts nothing");
 }
 
+/// Whether two builds gave the same topology, field by field.
+bool SameTopology(const CasterTopology& a, const CasterTopology& b)
+{
+  auto sameEdges = [](const std::vector<Edge>& l, const std::vector<Edge>& r)
+  {
+    return std::equal(l.begin(), l.end(), r.begin(), r.end(),
+      [](const Edge& x, const Edge& y)
+      {
+        return x.A == y.A && x.B == y.B && x.FirstUse == y.FirstUse && x.UseCount == y.UseCount &&
+          x.Kind == y.Kind;
+      });
+  };
+  auto sameUses = [](const std::vector<EdgeUse>& l, const std::vector<EdgeUse>& r)
+  {
+    return std::equal(l.begin(), l.end(), r.begin(), r.end(),
+      [](const EdgeUse& x, const EdgeUse& y)
+      { return x.Triangle == y.Triangle && x.Sign == y.Sign; });
+  };
+  const TopologyReport &ra = a.Report, &rb = b.Report;
+  return a.Origin == b.Origin && a.Points == b.Points && a.Triangles == b.Triangles &&
+    sameEdges(a.Edges, b.Edges) && sameUses(a.Uses, b.Uses) && a.BoundsMin == b.BoundsMin &&
+    a.BoundsMax == b.BoundsMax && a.ClosedAndOriented == b.ClosedAndOriented &&
+    ra.InputPoints == rb.InputPoints && ra.WeldedPoints == rb.WeldedPoints &&
+    ra.NonFinitePoints == rb.NonFinitePoints && ra.InputTriangles == rb.InputTriangles &&
+    ra.DegenerateTriangles == rb.DegenerateTriangles &&
+    ra.NonFiniteTriangles == rb.NonFiniteTriangles &&
+    ra.InvalidIndexTriangles == rb.InvalidIndexTriangles && ra.BoundaryEdges == rb.BoundaryEdges &&
+    ra.InconsistentEdges == rb.InconsistentEdges && ra.NonManifoldEdges == rb.NonManifoldEdges;
+}
+
+void TestBuilderReuse()
+{
+  // A builder kept between builds (time-varying data) must give what a fresh build gives,
+  // whatever it built before: larger and smaller meshes, welded soups, NaN points, nothing.
+  vtkNew<vtkSphereSource> big;
+  big->SetThetaResolution(64);
+  big->SetPhiResolution(48);
+  vtkNew<vtkPlaneSource> sheet;
+  sheet->SetResolution(5, 3);
+  vtkNew<vtkTriangleFilter> sheetTriangles;
+  sheetTriangles->SetInputConnection(sheet->GetOutputPort());
+  vtkNew<vtkCubeSource> cube; // split normals: its corners weld
+  vtkNew<vtkTriangleFilter> cubeTriangles;
+  cubeTriangles->SetInputConnection(cube->GetOutputPort());
+  const std::vector<glm::dvec3> soupPoints = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 },
+    { std::nan(""), 0, 0 }, { 0, 0, 1 }, { 1e-12, 0, 0 } };
+  const std::vector<glm::uvec3> soup = { { 0, 1, 2 }, { 0, 3, 2 }, { 5, 2, 4 }, { 1, 2, 4 },
+    { 0, 0, 1 }, { 9, 1, 2 } };
+
+  TopologyBuilder builder;
+  CasterTopology reused;
+  int same = 0, builds = 0;
+  for (int round = 0; round < 2; ++round)
+  {
+    for (vtkPolyDataAlgorithm* source :
+      std::initializer_list<vtkPolyDataAlgorithm*>{ big, sheetTriangles, cubeTriangles })
+    {
+      source->Update();
+      builder.Build(source->GetOutput(), reused);
+      same += SameTopology(reused, CasterTopology::Build(source->GetOutput()));
+      ++builds;
+    }
+    builder.Build(soupPoints, soup, reused);
+    same += SameTopology(reused, CasterTopology::Build(soupPoints, soup));
+    builder.Build(nullptr, reused);
+    same += reused.Empty() && reused.Edges.empty() && reused.Uses.empty() && reused.Points.empty();
+    builds += 2;
+  }
+  Check(same == builds, "a reused builder gives what a fresh build gives");
+  Check(builder.GetScratchBytes() > 0, "the builder keeps its scratch");
+}
+
 void FuzzRandomMeshes(std::mt19937& rng)
 {
   // Random soups over a small shared point set: every kind of non-manifoldness, slivers,
   // duplicates and flipped triangles, lit from random positions and directions.
   std::uniform_real_distribution<double> coord(-1.0, 1.0);
-  int nanFree = 0, balanced = 0;
+  int nanFree = 0, balanced = 0, reusedSame = 0;
   const int meshes = 150;
+  TopologyBuilder builder;
+  CasterTopology reused;
   for (int m = 0; m < meshes; ++m)
   {
     const int pointCount = 4 + static_cast<int>(rng() % 12);
@@ -449,6 +525,8 @@ void FuzzRandomMeshes(std::mt19937& rng)
       t = { rng() % pointCount, rng() % pointCount, rng() % pointCount };
     }
     const CasterTopology topo = CasterTopology::Build(points, tris);
+    builder.Build(points, tris, reused);
+    reusedSame += SameTopology(topo, reused);
     const glm::dvec4 light = rng() % 2
       ? glm::dvec4(3 * coord(rng), 3 * coord(rng), 3 * coord(rng), 1.0)
       : glm::dvec4(coord(rng), coord(rng), coord(rng), 0.0);
@@ -467,6 +545,7 @@ void FuzzRandomMeshes(std::mt19937& rng)
   }
   Check(balanced == meshes, "fuzz: every silhouette balanced");
   Check(nanFree == meshes, "fuzz: no NaN in topology");
+  Check(reusedSame == meshes, "fuzz: a reused builder gives what a fresh build gives");
 }
 
 } // namespace
@@ -481,6 +560,7 @@ int main()
   TestNonOrientable(rng);
   TestMirrored(rng);
   TestDegenerateInput();
+  TestBuilderReuse();
   FuzzRandomMeshes(rng);
   return penumbra_test::Finish();
 }
