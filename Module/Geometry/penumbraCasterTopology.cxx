@@ -14,8 +14,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 namespace penumbra
@@ -144,14 +146,29 @@ void AppendStrip(vtkIdType npts, const vtkIdType* ids, std::vector<glm::uvec3>& 
   }
 }
 
+/// Zero-area triangles occlude nothing and have no facing; the relative test keeps slivers.
+/// Written as !(area > ...) so that a NaN normal (inf - inf in the cross product of points near
+/// 1e300) counts as degenerate instead of passing every comparison.
+bool IsDegenerate(const std::vector<glm::dvec3>& points, const glm::uvec3& tri)
+{
+  const glm::dvec3 e1 = points[tri.y] - points[tri.x];
+  const glm::dvec3 e2 = points[tri.z] - points[tri.x];
+  const glm::dvec3 n = glm::cross(e1, e2);
+  const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
+  return tri.x == tri.y || tri.y == tri.z || tri.z == tri.x ||
+    !(glm::dot(n, n) > 1e-28 * scale * scale);
+}
+
 /// Appends the triangles of `triangles` whose points `map` sends to three distinct finite
 /// points of topo.Points, counting the others in `report`.
-void AddTriangles(const std::vector<glm::uvec3>& triangles, const std::vector<std::uint32_t>& map,
+template <typename Triangles>
+void AddTriangles(const Triangles& triangles, const std::vector<std::uint32_t>& map,
   CasterTopology& topo, TopologyReport& report)
 {
   topo.Triangles.reserve(triangles.size());
-  for (const glm::uvec3& tri : triangles)
+  for (std::size_t t = 0; t < triangles.size(); ++t)
   {
+    const glm::uvec3 tri = triangles[t];
     // Out-of-range indices (malformed input) are dropped and reported apart from NaN points.
     if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size())
     {
@@ -164,14 +181,7 @@ void AddTriangles(const std::vector<glm::uvec3>& triangles, const std::vector<st
       continue;
     }
     const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
-    const glm::dvec3 e1 = topo.Points[w.y] - topo.Points[w.x];
-    const glm::dvec3 e2 = topo.Points[w.z] - topo.Points[w.x];
-    const glm::dvec3 n = glm::cross(e1, e2);
-    // Zero-area triangles occlude nothing and have no facing; relative test keeps slivers.
-    // Written as !(area > ...) so that a NaN normal (inf - inf in the cross product of points
-    // near 1e300) counts as degenerate instead of passing every comparison.
-    const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
-    if (w.x == w.y || w.y == w.z || w.z == w.x || !(glm::dot(n, n) > 1e-28 * scale * scale))
+    if (IsDegenerate(topo.Points, w))
     {
       ++report.DegenerateTriangles;
       continue;
@@ -180,52 +190,67 @@ void AddTriangles(const std::vector<glm::uvec3>& triangles, const std::vector<st
   }
 }
 
-/// The points in double, read straight from float or double storage.
-void ReadPoints(vtkPoints* pts, std::vector<glm::dvec3>& points)
+/// Sends topo's triangles through `map` (welded points) in place, dropping those that become
+/// degenerate.
+void RemapTriangles(
+  CasterTopology& topo, const std::vector<std::uint32_t>& map, TopologyReport& report)
 {
-  const std::size_t count = static_cast<std::size_t>(pts->GetNumberOfPoints());
-  points.resize(count);
-  vtkDataArray* data = pts->GetData();
-  if (auto floats = vtkFloatArray::FastDownCast(data))
+  std::size_t kept = 0;
+  for (const glm::uvec3& tri : topo.Triangles)
   {
-    const float* p = floats->GetPointer(0);
-    for (std::size_t i = 0; i < count; ++i, p += 3)
+    const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
+    if (IsDegenerate(topo.Points, w))
     {
-      points[i] = glm::dvec3(p[0], p[1], p[2]);
-    }
-  }
-  else if (auto doubles = vtkDoubleArray::FastDownCast(data))
-  {
-    std::copy_n(reinterpret_cast<const glm::dvec3*>(doubles->GetPointer(0)), count, points.begin());
-  }
-  else
-  {
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      pts->GetPoint(static_cast<vtkIdType>(i), &points[i].x);
-    }
-  }
-}
-
-/// The triangles of a triangles-only cell array's connectivity; a triangle naming a point that
-/// does not exist is dropped (ids >= 2^32 would alias valid points once narrowed).
-template <typename ConnectivityArray>
-void ReadTriangles(ConnectivityArray* connectivity, vtkIdType pointCount,
-  std::vector<glm::uvec3>& triangles, TopologyReport& report)
-{
-  const auto* ids = connectivity->GetPointer(0);
-  const vtkIdType count = connectivity->GetNumberOfValues() / 3;
-  triangles.reserve(triangles.size() + static_cast<std::size_t>(count));
-  for (vtkIdType t = 0; t < count; ++t, ids += 3)
-  {
-    const vtkIdType a = ids[0], b = ids[1], c = ids[2];
-    if (a < 0 || b < 0 || c < 0 || a >= pointCount || b >= pointCount || c >= pointCount)
-    {
-      ++report.InvalidIndexTriangles;
+      ++report.DegenerateTriangles;
       continue;
     }
-    triangles.emplace_back(a, b, c);
+    topo.Triangles[kept++] = w;
   }
+  topo.Triangles.resize(kept);
+}
+
+/// A vtkPoints' float or double storage, read in place as doubles: a copy would cost as many
+/// fresh pages as the points themselves.
+template <typename Real>
+struct StoredPoints
+{
+  const Real* Values;
+  std::size_t Count;
+
+  std::size_t size() const { return this->Count; }
+  glm::dvec3 operator[](std::size_t i) const
+  {
+    const Real* p = this->Values + 3 * i;
+    return glm::dvec3(p[0], p[1], p[2]);
+  }
+};
+
+/// A triangles-only cell array's connectivity, read in place. A triangle naming a point that
+/// does not exist reads as InvalidIndex corners, which AddTriangles drops and reports (ids >=
+/// 2^32 would alias valid points once narrowed).
+template <typename Id>
+struct StoredTriangles
+{
+  const Id* Ids;
+  std::size_t Count;
+  vtkIdType PointCount;
+
+  std::size_t size() const { return this->Count; }
+  glm::uvec3 operator[](std::size_t t) const
+  {
+    const Id* ids = this->Ids + 3 * t;
+    const bool valid = std::all_of(ids, ids + 3,
+      [this](Id id) { return id >= 0 && static_cast<vtkIdType>(id) < this->PointCount; });
+    return valid ? glm::uvec3(ids[0], ids[1], ids[2]) : glm::uvec3(InvalidIndex);
+  }
+};
+
+template <typename ConnectivityArray>
+StoredTriangles<typename ConnectivityArray::ValueType> TrianglesOf(
+  ConnectivityArray* connectivity, vtkIdType pointCount)
+{
+  return { connectivity->GetPointer(0),
+    static_cast<std::size_t>(connectivity->GetNumberOfValues() / 3), pointCount };
 }
 
 /// Keeps the points that `map` sends to themselves (finite, not welded into another), in
@@ -261,19 +286,45 @@ void ClearKeepingStorage(CasterTopology& topo)
   topo.Report = TopologyReport();
 }
 
-/// Sorts a vertex's few half-edges as integers (the other end, then the triangle): groups
-/// average six entries, where std::sort's set-up costs more than the sort.
-void InsertionSort(std::uint64_t* first, std::uint64_t* last)
+// While the edges are built, each use's slot holds its half-edge as one 64-bit key: the other
+// end << 32 | triangle << 1 | reversed. Sorting a vertex's keys as integers orders its edges
+// by their other end, and the keys need no storage of their own (24 bytes a triangle, fresh
+// pages that cost more than the build itself at millions of triangles). Accessed through
+// memcpy, which compiles to one move and keeps the aliasing rules.
+static_assert(
+  sizeof(EdgeUse) == sizeof(std::uint64_t) && std::is_trivially_copyable<EdgeUse>::value,
+  "an edge use's slot holds a 64-bit half-edge key during the build");
+
+std::uint64_t LoadKey(const EdgeUse& slot)
 {
-  for (std::uint64_t* i = first + 1; i < last; ++i)
+  std::uint64_t key;
+  std::memcpy(&key, &slot, sizeof(key));
+  return key;
+}
+
+void StoreKey(EdgeUse& slot, std::uint64_t key)
+{
+  std::memcpy(&slot, &key, sizeof(key));
+}
+
+std::uint32_t OtherEnd(std::uint64_t key)
+{
+  return static_cast<std::uint32_t>(key >> 32);
+}
+
+/// Sorts a vertex's few keys by insertion: groups average six, where std::sort's set-up costs
+/// more than the sort.
+void InsertionSort(EdgeUse* first, EdgeUse* last)
+{
+  for (EdgeUse* i = first + 1; i < last; ++i)
   {
-    const std::uint64_t key = *i;
-    std::uint64_t* j = i;
-    for (; j > first && *(j - 1) > key; --j)
+    const std::uint64_t key = LoadKey(*i);
+    EdgeUse* j = i;
+    for (; j > first && LoadKey(*(j - 1)) > key; --j)
     {
       *j = *(j - 1);
     }
-    *j = key;
+    StoreKey(*j, key);
   }
 }
 
@@ -324,16 +375,15 @@ struct TopologyScratch
   std::vector<std::uint32_t> GroupStart; ///< per point: its first half-edge
   ScratchArray<std::uint32_t> GroupFill;
   ScratchArray<std::uint32_t> EdgeStart; ///< per point: its first edge
-  /// Half-edges grouped by their smaller end: the other end << 32 | triangle << 1 | reversed.
-  ScratchArray<std::uint64_t> HalfEdges;
 };
 
 namespace
 {
 
-/// Groups topo's half-edges by their smaller end, with a counting sort: linear, and stable, so
-/// each group stays in triangle order (a comparison sort of all of them cost most of a rebuild).
-void GroupHalfEdges(TopologyScratch& scratch, const CasterTopology& topo)
+/// Groups topo's half-edges by their smaller end into topo.Uses, as keys, with a counting sort:
+/// linear, and stable, so each group stays in triangle order (a comparison sort of all of them
+/// cost most of a rebuild).
+void GroupHalfEdges(TopologyScratch& scratch, CasterTopology& topo)
 {
   std::vector<std::uint32_t>& start = scratch.GroupStart;
   start.assign(topo.Points.size() + 1, 0);
@@ -346,7 +396,7 @@ void GroupHalfEdges(TopologyScratch& scratch, const CasterTopology& topo)
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::uint32_t* fill = scratch.GroupFill.Get(topo.Points.size());
   std::copy(start.begin(), start.end() - 1, fill);
-  std::uint64_t* halves = scratch.HalfEdges.Get(3 * topo.Triangles.size());
+  topo.Uses.resize(3 * topo.Triangles.size());
   for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
   {
     const glm::uvec3& tri = topo.Triangles[t];
@@ -355,41 +405,32 @@ void GroupHalfEdges(TopologyScratch& scratch, const CasterTopology& topo)
       const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
       const bool reversed = to < from;
       const std::uint32_t low = reversed ? to : from, high = reversed ? from : to;
-      halves[fill[low]++] =
-        std::uint64_t(high) << 32 | std::uint64_t(t) << 1 | std::uint64_t(reversed);
+      StoreKey(topo.Uses[fill[low]++],
+        std::uint64_t(high) << 32 | std::uint64_t(t) << 1 | std::uint64_t(reversed));
     }
   }
 }
 
-std::uint32_t OtherEnd(std::uint64_t half)
-{
-  return static_cast<std::uint32_t>(half >> 32);
-}
-
-/// Edges and uses from the grouped half-edges. Every half-edge is one use, at its own index, and
-/// every point's edges start at a prefix sum of the edges before it: the points are independent
-/// and run in parallel, and the result does not depend on how they were split.
+/// Edges and uses from the grouped keys. Every half-edge is one use, in its own slot, and every
+/// point's edges start at a prefix sum of the edges before it: the points are independent and
+/// run in parallel, and the result does not depend on how they were split.
 void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
 {
   GroupHalfEdges(scratch, topo);
   const std::vector<std::uint32_t>& start = scratch.GroupStart;
   const vtkIdType pointCount = static_cast<vtkIdType>(topo.Points.size());
-  std::uint64_t* const halves = scratch.HalfEdges.Get(3 * topo.Triangles.size());
+  EdgeUse* const slots = topo.Uses.data();
   std::uint32_t* const edgeStart = scratch.EdgeStart.Get(topo.Points.size() + 1);
-  topo.Uses.resize(3 * topo.Triangles.size());
   vtkSMPTools::For(0, pointCount,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType a = begin; a < end; ++a)
       {
-        InsertionSort(halves + start[a], halves + start[a + 1]);
+        InsertionSort(slots + start[a], slots + start[a + 1]);
         std::uint32_t edges = 0;
         for (std::uint32_t h = start[a]; h < start[a + 1]; ++h)
         {
-          const std::uint32_t low = static_cast<std::uint32_t>(halves[h]);
-          topo.Uses[h].Triangle = low >> 1;
-          topo.Uses[h].Sign = (low & 1u) ? -1 : +1;
-          edges += h == start[a] || OtherEnd(halves[h]) != OtherEnd(halves[h - 1]);
+          edges += h == start[a] || OtherEnd(LoadKey(slots[h])) != OtherEnd(LoadKey(slots[h - 1]));
         }
         edgeStart[a + 1] = edges;
       }
@@ -411,14 +452,21 @@ void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
           // Fields written in place: an Edge temporary went through the stack in 32-bit stores
           // reloaded as wider ones, a store-forwarding stall that took half the build.
           edge->A = static_cast<std::uint32_t>(a);
-          edge->B = OtherEnd(halves[h]);
+          edge->B = OtherEnd(LoadKey(slots[h]));
           edge->FirstUse = h;
-          while (h < start[a + 1] && OtherEnd(halves[h]) == edge->B)
+          for (; h < start[a + 1]; ++h)
           {
-            ++h;
+            const std::uint64_t key = LoadKey(slots[h]);
+            if (OtherEnd(key) != edge->B)
+            {
+              break;
+            }
+            const std::uint32_t low = static_cast<std::uint32_t>(key);
+            slots[h].Triangle = low >> 1;
+            slots[h].Sign = (low & 1u) ? -1 : +1;
           }
           edge->UseCount = h - edge->FirstUse;
-          edge->Kind = ClassifyEdge(topo.Uses.data() + edge->FirstUse, edge->UseCount);
+          edge->Kind = ClassifyEdge(slots + edge->FirstUse, edge->UseCount);
           ++counts[static_cast<int>(edge->Kind)];
         }
       }
@@ -476,20 +524,16 @@ void WeldSeams(
     map[seamPoints[i]] = group;
   }
   report.WeldedPoints += seamPoints.size() - welded.size();
-  // Welding is rare (seams, soups): its copies are not worth keeping between builds.
-  std::vector<glm::uvec3> triangles;
-  triangles.swap(topo.Triangles);
-  topo.Edges.clear();
-  topo.Uses.clear();
   topo.Report = TopologyReport();
-  AddTriangles(triangles, map, topo, report); // merged corners make some degenerate
+  RemapTriangles(topo, map, report); // merged corners make some degenerate
   KeepRepresentatives(topo, map);
   BuildEdges(scratch, topo);
 }
 
-void BuildFromSoup(TopologyScratch& scratch, const std::vector<glm::dvec3>& points,
-  const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance, TopologyReport report,
-  CasterTopology& topo)
+/// The build from any indexable points (glm::dvec3) and triangles (glm::uvec3).
+template <typename Points, typename Triangles>
+void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangles& triangles,
+  double relativeWeldTolerance, TopologyReport report, CasterTopology& topo)
 {
   ClearKeepingStorage(topo);
   report.InputPoints = points.size();
@@ -497,8 +541,9 @@ void BuildFromSoup(TopologyScratch& scratch, const std::vector<glm::dvec3>& poin
   report.InputTriangles = triangles.size() + report.InvalidIndexTriangles;
 
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const glm::dvec3& p : points)
+  for (std::size_t i = 0; i < points.size(); ++i)
   {
+    const glm::dvec3 p = points[i];
     if (IsFinite(p))
     {
       lo = glm::min(lo, p);
@@ -511,8 +556,9 @@ void BuildFromSoup(TopologyScratch& scratch, const std::vector<glm::dvec3>& poin
   }
   if (report.NonFinitePoints == points.size())
   {
-    for (const glm::uvec3& tri : triangles)
+    for (std::size_t t = 0; t < triangles.size(); ++t)
     {
+      const glm::uvec3 tri = triangles[t];
       const bool inRange = tri.x < points.size() && tri.y < points.size() && tri.z < points.size();
       ++(inRange ? report.NonFiniteTriangles : report.InvalidIndexTriangles);
     }
@@ -566,6 +612,93 @@ void BuildFromSoup(TopologyScratch& scratch, const std::vector<glm::dvec3>& poin
     topo.BoundsMax = rhi;
   }
   topo.Report = report;
+}
+
+/// Appends the triangles of `input`'s polygons (ear-cut beyond three corners) and strips.
+void TriangulateCells(
+  vtkPolyData* input, std::vector<glm::uvec3>& triangles, TopologyReport& report)
+{
+  const vtkIdType pointCount = input->GetNumberOfPoints();
+  vtkCellArray* polys = input->GetPolys();
+  if (polys->IsHomogeneous() == 3)
+  {
+    auto append = [&](const auto& stored)
+    {
+      for (std::size_t t = 0; t < stored.size(); ++t)
+      {
+        triangles.push_back(stored[t]);
+      }
+    };
+    if (polys->IsStorage64Bit())
+    {
+      append(TrianglesOf(polys->GetConnectivityArray64(), pointCount));
+    }
+    else
+    {
+      append(TrianglesOf(polys->GetConnectivityArray32(), pointCount));
+    }
+    polys = nullptr;
+  }
+  // A malformed cell naming a point that does not exist would make vtkPolygon read past the
+  // points, and ids >= 2^32 would alias valid points once narrowed: drop the whole cell.
+  auto validIds = [&](vtkIdType count, const vtkIdType* cellIds)
+  {
+    const bool valid = std::all_of(
+      cellIds, cellIds + count, [pointCount](vtkIdType id) { return id >= 0 && id < pointCount; });
+    if (!valid)
+    {
+      report.InvalidIndexTriangles += static_cast<std::size_t>(std::max<vtkIdType>(count - 2, 0));
+    }
+    return valid;
+  };
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> local;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); polys && !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    cells->GetCurrentCell(npts, ids);
+    if (validIds(npts, ids))
+    {
+      TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    strips->GetCurrentCell(npts, ids);
+    if (validIds(npts, ids))
+    {
+      AppendStrip(npts, ids, triangles);
+    }
+  }
+}
+
+/// Calls `build` with the points of `pts`, read in place from float or double storage and
+/// copied into `copy` otherwise.
+template <typename Build>
+void WithPoints(vtkPoints* pts, std::vector<glm::dvec3>& copy, const Build& build)
+{
+  const std::size_t count = static_cast<std::size_t>(pts->GetNumberOfPoints());
+  vtkDataArray* data = pts->GetData();
+  if (auto floats = vtkFloatArray::FastDownCast(data))
+  {
+    build(StoredPoints<float>{ floats->GetPointer(0), count });
+  }
+  else if (auto doubles = vtkDoubleArray::FastDownCast(data))
+  {
+    build(StoredPoints<double>{ doubles->GetPointer(0), count });
+  }
+  else
+  {
+    copy.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      pts->GetPoint(static_cast<vtkIdType>(i), &copy[i].x);
+    }
+    build(copy);
+  }
 }
 
 } // namespace
@@ -624,69 +757,45 @@ void TopologyBuilder::Build(const std::vector<glm::dvec3>& points,
 void TopologyBuilder::Build(
   vtkPolyData* input, CasterTopology& topology, double relativeWeldTolerance)
 {
+  TopologyScratch& scratch = *this->Scratch;
   TopologyReport report;
-  std::vector<glm::dvec3>& points = this->Scratch->InputPoints;
-  std::vector<glm::uvec3>& triangles = this->Scratch->InputTriangles;
-  points.clear();
-  triangles.clear();
-  if (input && input->GetPoints())
+  if (!input || !input->GetPoints())
   {
-    vtkPoints* pts = input->GetPoints();
-    ReadPoints(pts, points);
-    report.SkippedVerts = static_cast<std::size_t>(input->GetNumberOfVerts());
-    report.SkippedLines = static_cast<std::size_t>(input->GetNumberOfLines());
-
-    vtkNew<vtkPolygon> polygon;
-    vtkNew<vtkIdList> local;
-    vtkIdType npts;
-    const vtkIdType* ids;
-    // A malformed cell naming a point that does not exist would make vtkPolygon read past the
-    // points, and ids >= 2^32 would alias valid points once narrowed: drop the whole cell.
-    const vtkIdType pointCount = pts->GetNumberOfPoints();
-    auto validIds = [&](vtkIdType count, const vtkIdType* cellIds)
+    BuildFromSoup(scratch, std::vector<glm::dvec3>(), std::vector<glm::uvec3>(),
+      relativeWeldTolerance, report, topology);
+    return;
+  }
+  report.SkippedVerts = static_cast<std::size_t>(input->GetNumberOfVerts());
+  report.SkippedLines = static_cast<std::size_t>(input->GetNumberOfLines());
+  vtkCellArray* polys = input->GetPolys();
+  const vtkIdType pointCount = input->GetNumberOfPoints();
+  // Triangles only (contour and flying-edges output, most meshes): the connectivity is read in
+  // place. Anything else is triangulated into scratch first.
+  const bool trianglesOnly = polys->IsHomogeneous() == 3 && input->GetNumberOfStrips() == 0;
+  if (!trianglesOnly)
+  {
+    scratch.InputTriangles.clear();
+    TriangulateCells(input, scratch.InputTriangles, report);
+  }
+  WithPoints(input->GetPoints(), scratch.InputPoints,
+    [&](const auto& points)
     {
-      const bool valid = std::all_of(cellIds, cellIds + count,
-        [pointCount](vtkIdType id) { return id >= 0 && id < pointCount; });
-      if (!valid)
+      if (!trianglesOnly)
       {
-        report.InvalidIndexTriangles += static_cast<std::size_t>(std::max<vtkIdType>(count - 2, 0));
+        BuildFromSoup(
+          scratch, points, scratch.InputTriangles, relativeWeldTolerance, report, topology);
       }
-      return valid;
-    };
-    vtkCellArray* cells = input->GetPolys();
-    if (cells->IsHomogeneous() == 3)
-    {
-      // Triangles only (contour and flying-edges output): the connectivity read directly.
-      if (cells->IsStorage64Bit())
+      else if (polys->IsStorage64Bit())
       {
-        ReadTriangles(cells->GetConnectivityArray64(), pointCount, triangles, report);
+        BuildFromSoup(scratch, points, TrianglesOf(polys->GetConnectivityArray64(), pointCount),
+          relativeWeldTolerance, report, topology);
       }
       else
       {
-        ReadTriangles(cells->GetConnectivityArray32(), pointCount, triangles, report);
+        BuildFromSoup(scratch, points, TrianglesOf(polys->GetConnectivityArray32(), pointCount),
+          relativeWeldTolerance, report, topology);
       }
-      cells = nullptr;
-    }
-    auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (polys->GoToFirstCell(); cells && !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-    {
-      polys->GetCurrentCell(npts, ids);
-      if (validIds(npts, ids))
-      {
-        TriangulatePolygon(input, npts, ids, polygon, local, triangles);
-      }
-    }
-    auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-    for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
-    {
-      strips->GetCurrentCell(npts, ids);
-      if (validIds(npts, ids))
-      {
-        AppendStrip(npts, ids, triangles);
-      }
-    }
-  }
-  BuildFromSoup(*this->Scratch, points, triangles, relativeWeldTolerance, report, topology);
+    });
 }
 
 TopologyBuilder::TopologyBuilder()
@@ -702,7 +811,7 @@ std::size_t TopologyBuilder::GetScratchBytes() const
   return scratch.InputPoints.capacity() * sizeof(glm::dvec3) +
     scratch.InputTriangles.capacity() * sizeof(glm::uvec3) +
     (scratch.PointMap.capacity() + scratch.GroupStart.capacity()) * sizeof(std::uint32_t) +
-    scratch.GroupFill.GetBytes() + scratch.EdgeStart.GetBytes() + scratch.HalfEdges.GetBytes();
+    scratch.GroupFill.GetBytes() + scratch.EdgeStart.GetBytes();
 }
 
 } // namespace penumbra

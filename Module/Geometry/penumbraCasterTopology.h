@@ -103,8 +103,9 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
  * Builds CasterTopology into storage kept between builds. Data that changes every frame (a
  * simulation played back) then rebuilds without allocating once its size has settled: fresh
  * pages cost about as much as the build itself at a million triangles. The edge work runs in
- * parallel (vtkSMPTools). The scratch held is about 56 bytes per triangle, so keep a builder
- * only for data that is rebuilt.
+ * parallel (vtkSMPTools). Triangles-only data with float or double points is read in place and
+ * the scratch held is 16 bytes a point (about 8 a triangle); other cells and point types add
+ * their triangulated or converted copy.
  */
 class VTKPENUMBRAGEOMETRY_EXPORT TopologyBuilder
 {
