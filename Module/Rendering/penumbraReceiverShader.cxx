@@ -51,6 +51,14 @@ std::vector<int> ScaleLightTerms(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights)
 {
   std::vector<int> missing;
+  // VTK 9.1 draws unlit surfaces (Lighting off, no normals, point-gaussian splats) with this
+  // statement and no light terms, though the renderer's light uniforms are still declared:
+  // there is nothing for a shadow to scale, and nothing to report.
+  if (fragmentShader.find("gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);") !=
+    std::string::npos)
+  {
+    return missing;
+  }
   for (const ReceiverLight& light : lights)
   {
     // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,

@@ -33,7 +33,8 @@ bool InsertLightFactors(std::string& fragmentShader, const std::string& declarat
 
 /// Scales each light's diffuse and specular (Phong) or radiance (PBR) by its factor. Returns
 /// the shader indices of the lights whose colour the shader declares but none of whose
-/// statements were found (an unlit shader declares no light colour and is not reported).
+/// statements were found. A shader VTK wrote unlit (its ambient-plus-diffuse statement) is left
+/// alone and not reported.
 std::vector<int> ScaleLightTerms(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights);
 

@@ -77,6 +77,13 @@ int main()
   // An unlit shader declares no light colour: nothing to scale, nothing to report.
   std::string unlit = "//VTK::Light::Dec\nvoid main() {\n//VTK::Light::Impl\n}\n";
   Check(penumbra::ScaleLightTerms(unlit, lights).empty(), "an unlit shader is not reported");
+  // VTK's own unlit shader (Lighting off, point-gaussian splats) still declares the renderer's
+  // light colours: it is not reported either, and left as it is.
+  std::string vtkUnlit = "uniform vec3 lightColor0;\nuniform vec3 lightColor1;\nvoid main() {\n"
+                         "  gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);\n}\n";
+  const std::string vtkUnlitBefore = vtkUnlit;
+  Check(penumbra::ScaleLightTerms(vtkUnlit, lights).empty() && vtkUnlit == vtkUnlitBefore,
+    "VTK's unlit shader, light colours declared: not reported, unchanged");
   // Light 1 is not a prefix match of light 10.
   std::string ten = "uniform vec3 lightColor10;\n  diffuse += (df * lightColor10);\n";
   Check(
