@@ -1,5 +1,6 @@
 #include "penumbraGlyphs.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -104,6 +105,57 @@ bool GlyphMatrix(const GlyphSettings& settings, const glm::dvec3& position,
   {
     matrix[column] = glm::dvec4(rotation[column] * size[column], 0.0);
   }
+  matrix[3] = glm::dvec4(position, 1.0);
+  return true;
+}
+
+TriangleMesh ImposterSphereMesh(int segments)
+{
+  const int around = std::max(8, segments + segments % 2);
+  const int rings = around / 2;
+  const double pi = glm::pi<double>();
+  const double radius = 1.0;
+  TriangleMesh mesh;
+  mesh.Points.push_back({ 0.0, 0.0, radius }); // north pole
+  for (int ring = 1; ring < rings; ++ring)
+  {
+    const double polar = pi * ring / rings;
+    for (int k = 0; k < around; ++k)
+    {
+      const double azimuth = 2.0 * pi * k / around;
+      mesh.Points.push_back(radius *
+        glm::dvec3(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+          std::cos(polar)));
+    }
+  }
+  mesh.Points.push_back({ 0.0, 0.0, -radius }); // south pole
+  const std::uint32_t south = static_cast<std::uint32_t>(mesh.Points.size() - 1);
+  auto at = [around](int ring, int k)
+  { return static_cast<std::uint32_t>(1 + (ring - 1) * around + (k % around)); };
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.emplace_back(0u, at(1, k), at(1, k + 1));
+    for (int ring = 1; ring + 1 < rings; ++ring)
+    {
+      mesh.Triangles.emplace_back(at(ring, k), at(ring + 1, k), at(ring + 1, k + 1));
+      mesh.Triangles.emplace_back(at(ring, k), at(ring + 1, k + 1), at(ring, k + 1));
+    }
+    mesh.Triangles.emplace_back(at(rings - 1, k), south, at(rings - 1, k + 1));
+  }
+  return mesh;
+}
+
+bool ImposterSphereMatrix(
+  const glm::dmat4& actorMatrix, const glm::dvec3& centre, double radius, glm::dmat4& matrix)
+{
+  const glm::dvec4 world = actorMatrix * glm::dvec4(centre, 1.0);
+  const glm::dvec3 position = glm::dvec3(world) / world.w;
+  if (!(radius > 0.0) || !std::isfinite(radius) || !std::isfinite(position.x) ||
+    !std::isfinite(position.y) || !std::isfinite(position.z))
+  {
+    return false;
+  }
+  matrix = glm::dmat4(radius);
   matrix[3] = glm::dvec4(position, 1.0);
   return true;
 }

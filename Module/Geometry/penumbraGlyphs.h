@@ -1,7 +1,8 @@
 /**
  * @file penumbraGlyphs.h
  * @brief The matrix VTK 9.1 gives one glyph of a vtkGlyph3DMapper, so that the pass casts each
- * glyph where VTK draws it (vtkOpenGLGlyph3DMapper::RebuildStructures is the reference).
+ * glyph where VTK draws it (vtkOpenGLGlyph3DMapper::RebuildStructures is the reference), and the
+ * triangles and matrix that stand in for one sphere of a vtkOpenGLSphereMapper.
  */
 #ifndef penumbraGlyphs_h
 #define penumbraGlyphs_h
@@ -9,6 +10,8 @@
 #include "vtkPenumbraGeometryModule.h" // for export macro
 
 #include <glm/glm.hpp>
+
+#include <vector>
 
 namespace penumbra
 {
@@ -47,6 +50,29 @@ VTKPENUMBRAGEOMETRY_EXPORT glm::dvec3 GlyphScale(
 VTKPENUMBRAGEOMETRY_EXPORT bool GlyphMatrix(const GlyphSettings& settings,
   const glm::dvec3& position, const double* orientation, const glm::dvec3& scale,
   glm::dmat4& matrix);
+
+/// A closed triangle mesh, outward wound.
+struct TriangleMesh
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<glm::uvec3> Triangles;
+};
+
+/**
+ * A UV sphere of `segments` around (at least 8, even) and segments / 2 rings, its points on the
+ * unit sphere: the caster of one imposter sphere. Inscribed on purpose: every point of the true
+ * sphere lies outside it, so the sphere VTK draws is never shadowed by its own stand-in (a
+ * larger one would put the lit surface just inside its own shadow volume). Its outline lies
+ * inside the true one by at most 1 - cos(pi / segments) of the radius (0.5% at 32).
+ */
+VTKPENUMBRAGEOMETRY_EXPORT TriangleMesh ImposterSphereMesh(int segments);
+
+/// The object-to-world matrix of one sphere of a vtkOpenGLSphereMapper: VTK moves the centre by
+/// the actor's matrix but draws the radius in world units, unscaled (vtkPointGaussianVS.glsl
+/// passes radiusMC on as the view-space radius). Returns false, leaving `matrix` unset, when the
+/// centre or the radius is not finite or the radius is not positive.
+VTKPENUMBRAGEOMETRY_EXPORT bool ImposterSphereMatrix(
+  const glm::dmat4& actorMatrix, const glm::dvec3& centre, double radius, glm::dmat4& matrix);
 
 } // namespace penumbra
 

@@ -28,6 +28,7 @@
 #include "vtkMultiPieceDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLSphereMapper.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -53,11 +54,13 @@
 namespace
 {
 
-/// One actor's (or composite leaf's) triangles in world space, relative to the scene origin.
+/// One actor's (or composite leaf's) triangles in world space, relative to the scene origin, or
+/// its spheres (a vtkOpenGLSphereMapper's), traced as Embree's analytic spheres.
 struct Mesh
 {
   std::vector<glm::dvec3> Points;
   std::vector<glm::uvec3> Triangles;
+  std::vector<glm::dvec4> Spheres; ///< centre, radius
   bool Casts = true;
   /// Below 1: a translucent surface, invisible to the eye rays (the pass shadows the nearest
   /// opaque surface) and letting 1 - Opacity of a shadow ray through at each crossing.
@@ -246,6 +249,29 @@ public:
 
   void AddGeometry(RTCScene scene, unsigned int id, const Mesh& mesh)
   {
+    RTCGeometry geometry = mesh.Spheres.empty() ? this->NewTriangles(mesh) : this->NewSpheres(mesh);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+
+  RTCGeometry NewSpheres(const Mesh& mesh)
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    float* spheres = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX,
+      0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), mesh.Spheres.size()));
+    for (std::size_t i = 0; i < mesh.Spheres.size(); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        spheres[4 * i + k] = static_cast<float>(mesh.Spheres[i][k]);
+      }
+    }
+    return geometry;
+  }
+
+  RTCGeometry NewTriangles(const Mesh& mesh)
+  {
     RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
     float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX,
       0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.Points.size()));
@@ -263,9 +289,7 @@ public:
       indices[3 * i + 1] = mesh.Triangles[i].y;
       indices[3 * i + 2] = mesh.Triangles[i].z;
     }
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(scene, geometry, id);
-    rtcReleaseGeometry(geometry);
+    return geometry;
   }
 
   /// Update's stages, in order: the scene's meshes, Embree's scenes of them (moved next to the
@@ -489,6 +513,47 @@ void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, do
     mesh.Points.push_back(Project(matrix, topology.Origin + point));
   }
   meshes.push_back(std::move(mesh));
+}
+
+/// Reads the name of the array of radii a vtkOpenGLSphereMapper reads (it has no getter).
+struct SphereArrays : vtkOpenGLSphereMapper
+{
+  static constexpr const char* vtkOpenGLSphereMapper::*Scale = &SphereArrays::ScaleArray;
+};
+
+/// Appends the spheres a vtkOpenGLSphereMapper draws: one per input point, of the radius in its
+/// scale array where the input has one, else of its Radius; the centre moved by `matrix`, the
+/// radius not (the mapper's vertex shader takes it as the view-space radius).
+void CollectSpheres(vtkOpenGLSphereMapper* mapper, const double matrix[16], bool casts,
+  double opacity, std::vector<Mesh>& meshes)
+{
+  vtkPolyData* input = mapper->GetInput();
+  // Points without cells have no bounds, and VTK's culler does not draw what has none.
+  if (!input || !input->GetPoints() || !vtkMath::AreBoundsInitialized(mapper->GetBounds()))
+  {
+    return;
+  }
+  const char* scaleName = mapper->*SphereArrays::Scale;
+  vtkDataArray* radii = scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
+  Mesh mesh;
+  mesh.Casts = casts;
+  mesh.Opacity = opacity;
+  for (vtkIdType id = 0; id < input->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    input->GetPoint(id, p);
+    const glm::dvec3 centre = Project(matrix, glm::dvec3(p[0], p[1], p[2]));
+    const double radius = radii ? radii->GetComponent(id, 0) : mapper->GetRadius();
+    if (radius > 0.0 && std::isfinite(radius) && std::isfinite(centre.x) &&
+      std::isfinite(centre.y) && std::isfinite(centre.z))
+    {
+      mesh.Spheres.emplace_back(centre, radius);
+    }
+  }
+  if (!mesh.Spheres.empty())
+  {
+    meshes.push_back(std::move(mesh));
+  }
 }
 
 /// The input points a vtkGlyph3DMapper draws a glyph at: not hidden by `mask` (if any), and
@@ -720,6 +785,11 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   mapper->Update();
   double matrix[16];
   vtkMatrix4x4::DeepCopy(matrix, pathMatrix ? pathMatrix : actor->GetMatrix());
+  if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
+  {
+    CollectSpheres(spheres, matrix, casts, actor->HasOpaqueGeometry() ? 1.0 : opacity, meshes);
+    return;
+  }
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::vector<std::pair<vtkDataObject*, double>> leaves;
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
@@ -786,6 +856,11 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
+    for (const glm::dvec4& sphere : mesh.Spheres)
+    {
+      lo = glm::min(lo, glm::dvec3(sphere) - sphere.w);
+      hi = glm::max(hi, glm::dvec3(sphere) + sphere.w);
+    }
   }
   this->Origin = this->Meshes.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
   const double diagonal = this->Meshes.empty() ? 1.0 : glm::length(hi - lo);
@@ -807,6 +882,10 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
     for (glm::dvec3& p : mesh.Points)
     {
       p -= this->Origin;
+    }
+    for (glm::dvec4& sphere : mesh.Spheres)
+    {
+      sphere -= glm::dvec4(this->Origin, 0.0);
     }
     // Ids are indices into Meshes in every scene: a hit finds its mesh's plane or opacity.
     const unsigned int id = static_cast<unsigned int>(i);
@@ -888,6 +967,64 @@ std::vector<ShadowLight> vtkRayTracedVisibility::vtkInternals::CollectLights(
   return lights;
 }
 
+namespace
+{
+/// The primary hit redone in double against the triangle's plane (a better point to shadow
+/// from), with the triangle's normal facing the viewer.
+void RefineTriangleHit(const Mesh& mesh, const RTCRayHit& rayHit, const glm::dvec3& origin,
+  const glm::dvec3& direction, glm::dvec3& hit, glm::dvec3& normal)
+{
+  const glm::uvec3& triangle = mesh.Triangles[rayHit.hit.primID];
+  const glm::dvec3& a = mesh.Points[triangle.x];
+  normal = glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a);
+  const double normalLength = glm::length(normal);
+  if (normalLength > 0.0)
+  {
+    normal /= normalLength;
+  }
+  else
+  {
+    // Flattened by the actor's matrix: Embree's float normal is all there is.
+    normal = glm::normalize(glm::dvec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
+  }
+  const double cosine = glm::dot(direction, normal);
+  double t = rayHit.ray.tfar;
+  if (std::abs(cosine) > 1e-6)
+  {
+    t = glm::dot(a - origin, normal) / cosine;
+  }
+  hit = origin + t * direction;
+  if (cosine > 0.0)
+  {
+    normal = -normal; // face the viewer
+  }
+}
+
+/// The same against a sphere (centre, radius): its nearest crossing in front of the eye, with
+/// the normal facing the viewer (inward where the eye is inside).
+void RefineSphereHit(const glm::dvec4& sphere, float floatT, const glm::dvec3& origin,
+  const glm::dvec3& direction, glm::dvec3& hit, glm::dvec3& normal)
+{
+  const glm::dvec3 centre(sphere);
+  const glm::dvec3 fromCentre = origin - centre;
+  const double b = glm::dot(fromCentre, direction);
+  const double c = glm::dot(fromCentre, fromCentre) - sphere.w * sphere.w;
+  const double discriminant = b * b - c;
+  double t = floatT;
+  if (discriminant >= 0.0)
+  {
+    const double root = std::sqrt(discriminant);
+    t = -b - root >= 0.0 ? -b - root : -b + root;
+  }
+  hit = origin + t * direction;
+  normal = glm::normalize(hit - centre);
+  if (glm::dot(normal, direction) > 0.0)
+  {
+    normal = -normal;
+  }
+}
+} // namespace
+
 void vtkRayTracedVisibility::vtkInternals::TracePixel(const PixelCamera& camera, int i, int j,
   const std::vector<ShadowLight>& lights, int samples, unsigned int seed, float* depth) const
 {
@@ -927,31 +1064,16 @@ void vtkRayTracedVisibility::vtkInternals::TracePixel(const PixelCamera& camera,
     return; // background: depth 1, visibility 1
   }
 
-  // Redo the hit in double against the triangle's plane: a better point to shadow from.
   const Mesh& mesh = this->Meshes[rayHit.hit.geomID];
-  const glm::uvec3& triangle = mesh.Triangles[rayHit.hit.primID];
-  const glm::dvec3& a = mesh.Points[triangle.x];
-  glm::dvec3 normal = glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a);
-  const double normalLength = glm::length(normal);
-  if (normalLength > 0.0)
+  glm::dvec3 hit, normal;
+  if (mesh.Spheres.empty())
   {
-    normal /= normalLength;
+    RefineTriangleHit(mesh, rayHit, origin, direction, hit, normal);
   }
   else
   {
-    // Flattened by the actor's matrix: Embree's float normal is all there is.
-    normal = glm::normalize(glm::dvec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
-  }
-  const double cosine = glm::dot(direction, normal);
-  double t = rayHit.ray.tfar;
-  if (std::abs(cosine) > 1e-6)
-  {
-    t = glm::dot(a - origin, normal) / cosine;
-  }
-  const glm::dvec3 hit = origin + t * direction;
-  if (cosine > 0.0)
-  {
-    normal = -normal; // face the viewer
+    RefineSphereHit(
+      mesh.Spheres[rayHit.hit.primID], rayHit.ray.tfar, origin, direction, hit, normal);
   }
 
   const glm::dvec3 ndc = Project(camera.ToNDC, hit + this->Origin);

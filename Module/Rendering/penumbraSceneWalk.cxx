@@ -8,6 +8,7 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkBitArray.h"
+#include "vtkCellArray.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -19,6 +20,10 @@
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLSphereMapper.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -26,6 +31,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 
@@ -44,12 +51,17 @@ struct GlyphArrays : vtkGlyph3DMapper
   static constexpr Getter Mask = &GlyphArrays::GetMaskArray;
 };
 
-/// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader): there
-/// are no triangles to cast from.
+/// Reads the name of the array of radii a vtkOpenGLSphereMapper reads (it has no getter).
+struct SphereArrays : vtkOpenGLSphereMapper
+{
+  static constexpr const char* vtkOpenGLSphereMapper::*Scale = &SphereArrays::ScaleArray;
+};
+
+/// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader) that
+/// have no stand-in caster: there are no triangles to cast from.
 bool DrawsImposters(vtkMapper* mapper)
 {
-  return mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper") ||
-    mapper->IsA("vtkPointGaussianMapper");
+  return mapper->IsA("vtkOpenGLStickMapper") || mapper->IsA("vtkPointGaussianMapper");
 }
 /// What an actor's own surfaces let through, as VTK draws them: in the opaque pass (ForceOpaque
 /// included) they cast fully; in the translucent pass (opacity below 1, colours with alpha, a
@@ -146,6 +158,11 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
   {
     this->Glyphs(actor, glyphs, matrix, owner, surfaces);
+    return;
+  }
+  if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
+  {
+    this->Spheres(actor, spheres, matrix, owner, surfaces);
     return;
   }
   vtkDataObject* data = mapper->GetInputDataObject(0, 0);
@@ -325,6 +342,63 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
   {
     this->Warn(
       owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
+  }
+}
+
+void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  const DrawnOpacity drawn = ActorOpacity(actor);
+  vtkPolyData* centres = mapper->GetInput();
+  // Points without cells (no verts) have no bounds in VTK 9.1, and its culler then drops the
+  // actor: nothing is drawn, so nothing casts.
+  if (!(drawn.Opacity > 0.0) || !centres || !centres->GetPoints() ||
+    !vtkMath::AreBoundsInitialized(actor->GetBounds()))
+  {
+    return;
+  }
+  if (!this->UnitSphere)
+  {
+    const TriangleMesh mesh = ImposterSphereMesh(32);
+    vtkNew<vtkPoints> points;
+    for (const glm::dvec3& p : mesh.Points)
+    {
+      points->InsertNextPoint(p.x, p.y, p.z);
+    }
+    vtkNew<vtkCellArray> triangles;
+    for (const glm::uvec3& t : mesh.Triangles)
+    {
+      const vtkIdType ids[3] = { t.x, t.y, t.z };
+      triangles->InsertNextCell(3, ids);
+    }
+    this->UnitSphere = vtkSmartPointer<vtkPolyData>::New();
+    this->UnitSphere->SetPoints(points);
+    this->UnitSphere->SetPolys(triangles);
+  }
+  // As the mapper: every point is a sphere, of the named array's radius where the input has
+  // it, else of the mapper's Radius.
+  const char* scaleName = mapper->*SphereArrays::Scale;
+  vtkDataArray* radii = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
+  bool refused = false;
+  for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
+  {
+    double centre[3];
+    centres->GetPoint(id, centre);
+    const double radius = radii ? radii->GetComponent(id, 0) : mapper->GetRadius();
+    glm::dmat4 sphere;
+    if (!ImposterSphereMatrix(matrix, glm::make_vec3(centre), radius, sphere))
+    {
+      refused = true;
+      continue;
+    }
+    surfaces.push_back({ actor, this->UnitSphere, sphere, static_cast<std::size_t>(id),
+      drawn.Opacity, drawn.SeenThrough });
+  }
+  if (refused)
+  {
+    this->Warn(owner, actor,
+      "has imposter spheres whose centre is not finite or whose radius is not positive and "
+      "finite: those spheres cast no shadow");
   }
 }
 

@@ -5,16 +5,19 @@
  *
  * VTK draws far more than top-level actors with a polydata mapper: assembly paths with their
  * composed matrices, the leaves of composite data with their block visibility and opacity, the
- * instances of a vtkGlyph3DMapper. The walk follows what VTK draws, not what a mapper's input
+ * instances of a vtkGlyph3DMapper, the spheres of a vtkOpenGLSphereMapper (molecules, particles),
+ * cast as tessellated spheres. The walk follows what VTK draws, not what a mapper's input
  * holds: a glyph mapper's input points (a seed plane, an image's bounding box) are never drawn and
- * never cast. What VTK draws but no shadow volume can be built from (imposter mappers, volumes,
- * image slices) gets one warning per prop and reason.
+ * never cast. What VTK draws but no shadow volume can be built from (stick and point-gaussian
+ * imposters, volumes, image slices) gets one warning per prop and reason.
  *
  * The ray tracer (vtkRayTracedVisibility) walks the scene its own way, through VTK's filters,
  * so that a mistake here shows against it.
  */
 #ifndef penumbraSceneWalk_h
 #define penumbraSceneWalk_h
+
+#include "vtkSmartPointer.h"
 
 #include <glm/glm.hpp>
 
@@ -28,6 +31,8 @@ class vtkActor;
 class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
 class vtkGlyph3DMapper;
+class vtkOpenGLSphereMapper;
+class vtkPolyData;
 class vtkMatrix4x4;
 class vtkObject;
 class vtkProp;
@@ -72,10 +77,16 @@ private:
     std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
+  /// One surface per sphere, each an instance of UnitSphere.
+  void Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const glm::dmat4& matrix,
+    vtkObject* owner, std::vector<DrawnSurface>& surfaces);
   /// Warns once per prop and reason.
   void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
 
   std::set<std::pair<vtkProp*, std::string>> Warned;
+  /// The caster of every imposter sphere (penumbra::ImposterSphereMesh), built on first use:
+  /// one topology, instanced by the spheres' matrices.
+  vtkSmartPointer<vtkPolyData> UnitSphere;
 };
 
 } // namespace penumbra

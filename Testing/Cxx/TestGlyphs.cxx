@@ -2,6 +2,7 @@
 // orientation by direction and scaling by magnitude or components (clamped too), and vtkTransform
 // for rotation angles and quaternions. Random points, orientations and scales; every source
 // point must land within 1e-6 of VTK's (its points are float; a wrong rotation is off by 0.1).
+#include "penumbraCasterTopology.h"
 #include "penumbraCheck.h"
 #include "penumbraGlyphs.h"
 
@@ -14,10 +15,13 @@
 #include "vtkPolyData.h"
 #include "vtkTransform.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <string>
@@ -203,11 +207,54 @@ void TestBadInput()
 }
 } // namespace
 
+void TestImposterSphere()
+{
+  // The stand-in for a vtkOpenGLSphereMapper sphere: closed, outward, and as large as a sphere.
+  const penumbra::TriangleMesh sphere = penumbra::ImposterSphereMesh(32);
+  const penumbra::CasterTopology topology =
+    penumbra::CasterTopology::Build(sphere.Points, sphere.Triangles);
+  Check(topology.ClosedAndOriented && topology.Report.DegenerateTriangles == 0,
+    "imposter sphere mesh: closed, oriented, no degenerate triangle");
+  double volume = 0.0, lo = 1e9, hi = 0.0;
+  for (const glm::uvec3& t : sphere.Triangles)
+  {
+    volume +=
+      glm::dot(sphere.Points[t.x], glm::cross(sphere.Points[t.y], sphere.Points[t.z])) / 6.0;
+  }
+  for (const glm::dvec3& p : sphere.Points)
+  {
+    lo = std::min(lo, glm::length(p));
+    hi = std::max(hi, glm::length(p));
+  }
+  const double unitVolume = 4.0 / 3.0 * glm::pi<double>();
+  std::printf("imposter sphere: %zu triangles, radius %.4f, volume %.4f of the unit sphere's\n",
+    sphere.Triangles.size(), hi, volume / unitVolume);
+  Check(volume > 0.97 * unitVolume && volume < unitVolume,
+    "imposter sphere mesh: wound outward, the unit sphere's volume within 3%");
+  Check(std::abs(lo - 1.0) < 1e-12 && std::abs(hi - 1.0) < 1e-12,
+    "imposter sphere mesh: inscribed, every point on the unit sphere");
+
+  glm::dmat4 actor(1.0), matrix(0.0);
+  actor[0][0] = 3.0; // the actor's scale moves centres, not radii
+  actor[3] = glm::dvec4(1.0, 2.0, 3.0, 1.0);
+  Check(penumbra::ImposterSphereMatrix(actor, { 1.0, 0.0, 0.0 }, 0.5, matrix) &&
+      glm::length(glm::dvec3(matrix * glm::dvec4(1.0, 0.0, 0.0, 1.0)) - glm::dvec3(4.5, 2.0, 3.0)) <
+        1e-12,
+    "imposter sphere matrix: centre moved by the actor, radius unscaled");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Check(!penumbra::ImposterSphereMatrix(actor, { nan, 0.0, 0.0 }, 0.5, matrix) &&
+      !penumbra::ImposterSphereMatrix(actor, { 0.0, 0.0, 0.0 }, 0.0, matrix) &&
+      !penumbra::ImposterSphereMatrix(actor, { 0.0, 0.0, 0.0 }, -1.0, matrix) &&
+      !penumbra::ImposterSphereMatrix(actor, { 0.0, 0.0, 0.0 }, nan, matrix),
+    "imposter sphere matrix: refused for a NaN centre and a radius not positive or not finite");
+}
+
 int main()
 {
   std::mt19937 rng(7);
   TestAgainstGlyph3D(rng);
   TestAgainstTransform(rng);
   TestBadInput();
+  TestImposterSphere();
   return penumbra_test::Finish();
 }
