@@ -160,4 +160,56 @@ bool ImposterSphereMatrix(
   return true;
 }
 
+TriangleMesh ImposterStickMesh(int segments)
+{
+  const int around = std::max(8, segments);
+  const double pi = glm::pi<double>();
+  TriangleMesh mesh;
+  for (const double z : { -0.5, 0.5 })
+  {
+    mesh.Points.push_back({ 0.0, 0.0, z }); // the cap's centre
+    for (int k = 0; k < around; ++k)
+    {
+      const double azimuth = 2.0 * pi * k / around;
+      mesh.Points.push_back({ std::cos(azimuth), std::sin(azimuth), z });
+    }
+  }
+  const std::uint32_t bottom = 0, top = static_cast<std::uint32_t>(around + 1);
+  auto rim = [around](std::uint32_t cap, int k)
+  { return cap + 1 + static_cast<std::uint32_t>(k % around); };
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.emplace_back(bottom, rim(bottom, k + 1), rim(bottom, k));
+    mesh.Triangles.emplace_back(top, rim(top, k), rim(top, k + 1));
+    mesh.Triangles.emplace_back(rim(bottom, k), rim(bottom, k + 1), rim(top, k + 1));
+    mesh.Triangles.emplace_back(rim(bottom, k), rim(top, k + 1), rim(top, k));
+  }
+  return mesh;
+}
+
+bool ImposterStickMatrix(const glm::dmat4& actorMatrix, const glm::dvec3& centre,
+  const glm::dvec3& orientation, double length, double radius, glm::dmat4& matrix)
+{
+  const glm::dvec4 world = actorMatrix * glm::dvec4(centre, 1.0);
+  const glm::dvec3 position = glm::dvec3(world) / world.w;
+  const glm::dvec3 axis = glm::transpose(glm::inverse(glm::dmat3(actorMatrix))) * orientation;
+  const double axisLength = glm::length(axis);
+  auto finite = [](const glm::dvec3& v)
+  { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (!(length > 0.0) || !(radius > 0.0) || !std::isfinite(length) || !std::isfinite(radius) ||
+    !finite(position) || !(axisLength > 0.0) || !std::isfinite(axisLength))
+  {
+    return false;
+  }
+  const glm::dvec3 along = axis / axisLength;
+  // Any two unit vectors across the axis: the stick is round.
+  const glm::dvec3 helper = std::abs(along.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 across = glm::normalize(glm::cross(along, helper));
+  matrix[0] = glm::dvec4(radius * across, 0.0);
+  matrix[1] = glm::dvec4(radius * glm::cross(along, across), 0.0);
+  matrix[2] = glm::dvec4(length * along, 0.0);
+  matrix[3] = glm::dvec4(position, 1.0);
+  return true;
+}
+
 } // namespace penumbra

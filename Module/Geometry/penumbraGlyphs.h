@@ -2,7 +2,8 @@
  * @file penumbraGlyphs.h
  * @brief The matrix VTK 9.1 gives one glyph of a vtkGlyph3DMapper, so that the pass casts each
  * glyph where VTK draws it (vtkOpenGLGlyph3DMapper::RebuildStructures is the reference), and the
- * triangles and matrix that stand in for one sphere of a vtkOpenGLSphereMapper.
+ * triangles and matrices that stand in for the spheres of a vtkOpenGLSphereMapper and the
+ * sticks of a vtkOpenGLStickMapper.
  */
 #ifndef penumbraGlyphs_h
 #define penumbraGlyphs_h
@@ -73,6 +74,22 @@ VTKPENUMBRAGEOMETRY_EXPORT TriangleMesh ImposterSphereMesh(int segments);
 /// centre or the radius is not finite or the radius is not positive.
 VTKPENUMBRAGEOMETRY_EXPORT bool ImposterSphereMatrix(
   const glm::dmat4& actorMatrix, const glm::dvec3& centre, double radius, glm::dmat4& matrix);
+
+/**
+ * A capped cylinder of `segments` around (at least 8) along z from -0.5 to 0.5, its rim points on
+ * the unit circle: the caster of one stick of a vtkOpenGLStickMapper (a molecule's bond),
+ * inscribed for the reason ImposterSphereMesh is.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT TriangleMesh ImposterStickMesh(int segments);
+
+/// The object-to-world matrix of one stick of a vtkOpenGLStickMapper, as its shaders place it:
+/// centred on the actor-moved `centre`, its axis along the actor's normal matrix times
+/// `orientation`, `length` long (VTK's length times the orientation's norm) and `radius` wide,
+/// neither scaled by the actor. Returns false, leaving `matrix` unset, when any of them is not
+/// finite, or the length or the radius is not positive.
+VTKPENUMBRAGEOMETRY_EXPORT bool ImposterStickMatrix(const glm::dmat4& actorMatrix,
+  const glm::dvec3& centre, const glm::dvec3& orientation, double length, double radius,
+  glm::dmat4& matrix);
 
 } // namespace penumbra
 

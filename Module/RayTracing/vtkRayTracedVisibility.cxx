@@ -14,6 +14,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkCylinderSource.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
@@ -28,7 +29,9 @@
 #include "vtkMultiPieceDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLMoleculeMapper.h"
 #include "vtkOpenGLSphereMapper.h"
+#include "vtkOpenGLStickMapper.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -515,11 +518,97 @@ void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, do
   meshes.push_back(std::move(mesh));
 }
 
-/// Reads the name of the array of radii a vtkOpenGLSphereMapper reads (it has no getter).
+/// Reads the name of the array of radii a vtkOpenGLSphereMapper reads (it has no getter), the
+/// arrays of a vtkOpenGLStickMapper, and a vtkOpenGLMoleculeMapper's bond mapper.
 struct SphereArrays : vtkOpenGLSphereMapper
 {
   static constexpr const char* vtkOpenGLSphereMapper::*Scale = &SphereArrays::ScaleArray;
 };
+struct StickArrays : vtkOpenGLStickMapper
+{
+  static constexpr const char* vtkOpenGLStickMapper::*Scale = &StickArrays::ScaleArray;
+  static constexpr const char* vtkOpenGLStickMapper::*Orientation = &StickArrays::OrientationArray;
+};
+struct MoleculeParts : vtkOpenGLMoleculeMapper
+{
+  static constexpr vtkNew<vtkOpenGLStickMapper> vtkOpenGLMoleculeMapper::*Bonds =
+    &MoleculeParts::FastBondMapper;
+};
+
+/// Appends the sticks a vtkOpenGLStickMapper draws, each a fine capped vtkCylinderSource placed
+/// by a vtkTransform: centred on the actor-moved point, along the actor's normal matrix times
+/// the orientation, as long as the scale array's first component times the orientation's norm
+/// and as wide as its second, neither scaled by the actor (VTK's stick shaders).
+void CollectSticks(vtkOpenGLStickMapper* mapper, const double matrix[16], bool casts,
+  double opacity, std::vector<Mesh>& meshes)
+{
+  vtkPolyData* input = mapper->GetInput();
+  const char* scaleName = mapper->*StickArrays::Scale;
+  const char* orientationName = mapper->*StickArrays::Orientation;
+  vtkDataArray* sizes = input && scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
+  vtkDataArray* axes =
+    input && orientationName ? input->GetPointData()->GetArray(orientationName) : nullptr;
+  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3)
+  {
+    return;
+  }
+  vtkNew<vtkMatrix4x4> normalMatrix;
+  normalMatrix->DeepCopy(matrix);
+  normalMatrix->Invert();
+  normalMatrix->Transpose();
+  vtkNew<vtkCylinderSource> cylinder; // along y, height 1, radius 1
+  cylinder->SetResolution(96);
+  cylinder->SetRadius(1.0);
+  cylinder->SetHeight(1.0);
+  cylinder->CappingOn();
+  vtkNew<vtkAppendPolyData> all;
+  for (vtkIdType id = 0; id < input->GetNumberOfPoints(); ++id)
+  {
+    double p[3], o[4] = { 0, 0, 0, 0 };
+    input->GetPoint(id, p);
+    axes->GetTuple(id, o);
+    const double length = sizes->GetComponent(id, 0) * vtkMath::Norm(o);
+    const double radius = sizes->GetComponent(id, 1);
+    double axis[4];
+    normalMatrix->MultiplyPoint(o, axis);
+    const glm::dvec3 centre = Project(matrix, glm::dvec3(p[0], p[1], p[2]));
+    if (!(length > 0.0) || !(radius > 0.0) || !std::isfinite(length) || !std::isfinite(radius) ||
+      !(vtkMath::Norm(axis) > 0.0) || !std::isfinite(centre.x + centre.y + centre.z))
+    {
+      continue;
+    }
+    vtkMath::Normalize(axis);
+    const double y[3] = { 0.0, 1.0, 0.0 };
+    double turnAxis[3];
+    vtkMath::Cross(y, axis, turnAxis);
+    const double degrees =
+      vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(turnAxis), vtkMath::Dot(y, axis)));
+    vtkNew<vtkTransform> place;
+    place->PostMultiply();
+    place->Scale(radius, length, radius);
+    if (vtkMath::Norm(turnAxis) > 1e-12)
+    {
+      place->RotateWXYZ(degrees, turnAxis);
+    }
+    else if (axis[1] < 0.0)
+    {
+      place->RotateX(180.0);
+    }
+    place->Translate(centre.x, centre.y, centre.z);
+    vtkNew<vtkTransformPolyDataFilter> moved;
+    moved->SetInputConnection(cylinder->GetOutputPort());
+    moved->SetTransform(place);
+    moved->Update();
+    all->AddInputData(moved->GetOutput());
+  }
+  if (all->GetNumberOfInputConnections(0) == 0)
+  {
+    return;
+  }
+  all->Update();
+  const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  CollectDataSet(all->GetOutput(), identity, casts, opacity, meshes);
+}
 
 /// Appends the spheres a vtkOpenGLSphereMapper draws: one per input point, of the radius in its
 /// scale array where the input has one, else of its Radius; the centre moved by `matrix`, the
@@ -528,8 +617,7 @@ void CollectSpheres(vtkOpenGLSphereMapper* mapper, const double matrix[16], bool
   double opacity, std::vector<Mesh>& meshes)
 {
   vtkPolyData* input = mapper->GetInput();
-  // Points without cells have no bounds, and VTK's culler does not draw what has none.
-  if (!input || !input->GetPoints() || !vtkMath::AreBoundsInitialized(mapper->GetBounds()))
+  if (!input || !input->GetPoints())
   {
     return;
   }
@@ -785,9 +873,34 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   mapper->Update();
   double matrix[16];
   vtkMatrix4x4::DeepCopy(matrix, pathMatrix ? pathMatrix : actor->GetMatrix());
-  if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
+  // Imposters: points without cells have no bounds, and VTK's culler does not draw what has
+  // none. A molecule is drawn by a sphere mapper for its atoms and a stick mapper for its bonds.
+  const double drawnOpacity = actor->HasOpaqueGeometry() ? 1.0 : opacity;
+  auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper);
+  auto sticks = vtkOpenGLStickMapper::SafeDownCast(mapper);
+  auto molecule = vtkOpenGLMoleculeMapper::SafeDownCast(mapper);
+  if (spheres || sticks || molecule)
   {
-    CollectSpheres(spheres, matrix, casts, actor->HasOpaqueGeometry() ? 1.0 : opacity, meshes);
+    if (!vtkMath::AreBoundsInitialized(mapper->GetBounds()))
+    {
+      return;
+    }
+    if (molecule && molecule->GetRenderAtoms())
+    {
+      spheres = molecule->GetFastAtomMapper();
+    }
+    if (molecule && molecule->GetRenderBonds())
+    {
+      sticks = &*(molecule->*MoleculeParts::Bonds);
+    }
+    if (spheres)
+    {
+      CollectSpheres(spheres, matrix, casts, drawnOpacity, meshes);
+    }
+    if (sticks)
+    {
+      CollectSticks(sticks, matrix, casts, drawnOpacity, meshes);
+    }
     return;
   }
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);

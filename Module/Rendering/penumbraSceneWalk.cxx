@@ -21,7 +21,9 @@
 #include "vtkImageSlice.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOpenGLMoleculeMapper.h"
 #include "vtkOpenGLSphereMapper.h"
+#include "vtkOpenGLStickMapper.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -57,11 +59,45 @@ struct SphereArrays : vtkOpenGLSphereMapper
   static constexpr const char* vtkOpenGLSphereMapper::*Scale = &SphereArrays::ScaleArray;
 };
 
+/// The same for a vtkOpenGLStickMapper's arrays of sizes and orientations.
+struct StickArrays : vtkOpenGLStickMapper
+{
+  static constexpr const char* vtkOpenGLStickMapper::*Scale = &StickArrays::ScaleArray;
+  static constexpr const char* vtkOpenGLStickMapper::*Orientation = &StickArrays::OrientationArray;
+};
+
+/// A vtkOpenGLMoleculeMapper's bond mapper, which it does not give out.
+struct MoleculeParts : vtkOpenGLMoleculeMapper
+{
+  static constexpr vtkNew<vtkOpenGLStickMapper> vtkOpenGLMoleculeMapper::*Bonds =
+    &MoleculeParts::FastBondMapper;
+};
+
 /// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader) that
 /// have no stand-in caster: there are no triangles to cast from.
 bool DrawsImposters(vtkMapper* mapper)
 {
-  return mapper->IsA("vtkOpenGLStickMapper") || mapper->IsA("vtkPointGaussianMapper");
+  return mapper->IsA("vtkPointGaussianMapper");
+}
+
+/// A polydata of `mesh`, the caster of every imposter of one kind.
+vtkSmartPointer<vtkPolyData> NewPolyData(const TriangleMesh& mesh)
+{
+  vtkNew<vtkPoints> points;
+  for (const glm::dvec3& p : mesh.Points)
+  {
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (const glm::uvec3& t : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t.x, t.y, t.z };
+    triangles->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(triangles);
+  return poly;
 }
 /// What an actor's own surfaces let through, as VTK draws them: in the opaque pass (ForceOpaque
 /// included) they cast fully; in the translucent pass (opacity below 1, colours with alpha, a
@@ -163,6 +199,16 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
   {
     this->Spheres(actor, spheres, matrix, owner, surfaces);
+    return;
+  }
+  if (auto sticks = vtkOpenGLStickMapper::SafeDownCast(mapper))
+  {
+    this->Sticks(actor, sticks, matrix, owner, surfaces);
+    return;
+  }
+  if (auto molecule = vtkOpenGLMoleculeMapper::SafeDownCast(mapper))
+  {
+    this->Molecule(actor, molecule, matrix, owner, surfaces);
     return;
   }
   vtkDataObject* data = mapper->GetInputDataObject(0, 0);
@@ -359,21 +405,7 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
   }
   if (!this->UnitSphere)
   {
-    const TriangleMesh mesh = ImposterSphereMesh(32);
-    vtkNew<vtkPoints> points;
-    for (const glm::dvec3& p : mesh.Points)
-    {
-      points->InsertNextPoint(p.x, p.y, p.z);
-    }
-    vtkNew<vtkCellArray> triangles;
-    for (const glm::uvec3& t : mesh.Triangles)
-    {
-      const vtkIdType ids[3] = { t.x, t.y, t.z };
-      triangles->InsertNextCell(3, ids);
-    }
-    this->UnitSphere = vtkSmartPointer<vtkPolyData>::New();
-    this->UnitSphere->SetPoints(points);
-    this->UnitSphere->SetPolys(triangles);
+    this->UnitSphere = NewPolyData(ImposterSphereMesh(32));
   }
   // As the mapper: every point is a sphere, of the named array's radius where the input has
   // it, else of the mapper's Radius.
@@ -400,6 +432,83 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
       "has imposter spheres whose centre is not finite or whose radius is not positive and "
       "finite: those spheres cast no shadow");
   }
+}
+
+void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  const DrawnOpacity drawn = ActorOpacity(actor);
+  vtkPolyData* centres = mapper->GetInput();
+  if (!(drawn.Opacity > 0.0) || !centres || !centres->GetPoints() ||
+    !vtkMath::AreBoundsInitialized(actor->GetBounds()))
+  {
+    return;
+  }
+  // As the mapper: every point is a stick, its length and radius the first two components of
+  // the scale array, its axis the orientation array (VTK needs both, and fails without).
+  const char* scaleName = mapper->*StickArrays::Scale;
+  const char* orientationName = mapper->*StickArrays::Orientation;
+  vtkDataArray* sizes = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
+  vtkDataArray* axes =
+    orientationName ? centres->GetPointData()->GetArray(orientationName) : nullptr;
+  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3)
+  {
+    this->Warn(owner, actor,
+      "is drawn by vtkOpenGLStickMapper without a scale array of lengths and radii and an "
+      "orientation array: its sticks cast no shadow");
+    return;
+  }
+  if (!this->UnitStick)
+  {
+    this->UnitStick = NewPolyData(ImposterStickMesh(24));
+  }
+  bool refused = false;
+  for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
+  {
+    double centre[3], axis[3];
+    centres->GetPoint(id, centre);
+    axes->GetTuple(id, axis);
+    const glm::dvec3 orientation = glm::make_vec3(axis);
+    glm::dmat4 stick;
+    if (!ImposterStickMatrix(matrix, glm::make_vec3(centre), orientation,
+          sizes->GetComponent(id, 0) * glm::length(orientation), sizes->GetComponent(id, 1), stick))
+    {
+      refused = true;
+      continue;
+    }
+    surfaces.push_back({ actor, this->UnitStick, stick, static_cast<std::size_t>(id), drawn.Opacity,
+      drawn.SeenThrough });
+  }
+  if (refused)
+  {
+    this->Warn(owner, actor,
+      "has imposter sticks whose centre or axis is not finite, or whose length or radius is not "
+      "positive and finite: those sticks cast no shadow");
+  }
+}
+
+void SceneWalk::Molecule(vtkActor* actor, vtkOpenGLMoleculeMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  // The molecule mapper draws with these two (its glyph data made while VTK drew the frame's
+  // depth, before the casters are walked). Atoms and bonds number their parts apart.
+  std::vector<DrawnSurface> parts;
+  if (mapper->GetRenderAtoms())
+  {
+    this->Spheres(actor, mapper->GetFastAtomMapper(), matrix, owner, parts);
+  }
+  const std::size_t atoms = parts.size();
+  if (mapper->GetRenderBonds())
+  {
+    this->Sticks(actor, &*(mapper->*MoleculeParts::Bonds), matrix, owner, parts);
+  }
+  for (std::size_t i = atoms; i < parts.size(); ++i)
+  {
+    parts[i].Part += static_cast<std::size_t>(mapper->GetFastAtomMapper()->GetInput()
+        ? mapper->GetFastAtomMapper()->GetInput()->GetNumberOfPoints()
+        : 0);
+  }
+  surfaces.insert(surfaces.end(), parts.begin(), parts.end());
 }
 
 void SceneWalk::Warn(vtkObject* owner, vtkProp* prop, const std::string& reason)

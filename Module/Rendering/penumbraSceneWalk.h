@@ -5,11 +5,12 @@
  *
  * VTK draws far more than top-level actors with a polydata mapper: assembly paths with their
  * composed matrices, the leaves of composite data with their block visibility and opacity, the
- * instances of a vtkGlyph3DMapper, the spheres of a vtkOpenGLSphereMapper (molecules, particles),
- * cast as tessellated spheres. The walk follows what VTK draws, not what a mapper's input
+ * instances of a vtkGlyph3DMapper, the spheres of a vtkOpenGLSphereMapper and the sticks of a
+ * vtkOpenGLStickMapper (particles; a vtkMoleculeMapper's atoms and bonds), cast as tessellated
+ * spheres and cylinders. The walk follows what VTK draws, not what a mapper's input
  * holds: a glyph mapper's input points (a seed plane, an image's bounding box) are never drawn and
- * never cast. What VTK draws but no shadow volume can be built from (stick and point-gaussian
- * imposters, volumes, image slices) gets one warning per prop and reason.
+ * never cast. What VTK draws but no shadow volume can be built from (point-gaussian splats,
+ * volumes, image slices) gets one warning per prop and reason.
  *
  * The ray tracer (vtkRayTracedVisibility) walks the scene its own way, through VTK's filters,
  * so that a mistake here shows against it.
@@ -31,7 +32,9 @@ class vtkActor;
 class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
 class vtkGlyph3DMapper;
+class vtkOpenGLMoleculeMapper;
 class vtkOpenGLSphereMapper;
+class vtkOpenGLStickMapper;
 class vtkPolyData;
 class vtkMatrix4x4;
 class vtkObject;
@@ -80,6 +83,12 @@ private:
   /// One surface per sphere, each an instance of UnitSphere.
   void Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const glm::dmat4& matrix,
     vtkObject* owner, std::vector<DrawnSurface>& surfaces);
+  /// One surface per stick, each an instance of UnitStick.
+  void Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm::dmat4& matrix,
+    vtkObject* owner, std::vector<DrawnSurface>& surfaces);
+  /// A molecule's atoms and bonds, through the sphere and stick mappers that draw them.
+  void Molecule(vtkActor* actor, vtkOpenGLMoleculeMapper* mapper, const glm::dmat4& matrix,
+    vtkObject* owner, std::vector<DrawnSurface>& surfaces);
   /// Warns once per prop and reason.
   void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
 
@@ -87,6 +96,8 @@ private:
   /// The caster of every imposter sphere (penumbra::ImposterSphereMesh), built on first use:
   /// one topology, instanced by the spheres' matrices.
   vtkSmartPointer<vtkPolyData> UnitSphere;
+  /// The same for sticks (penumbra::ImposterStickMesh).
+  vtkSmartPointer<vtkPolyData> UnitStick;
 };
 
 } // namespace penumbra

@@ -249,6 +249,43 @@ void TestImposterSphere()
     "imposter sphere matrix: refused for a NaN centre and a radius not positive or not finite");
 }
 
+void TestImposterStick()
+{
+  const penumbra::TriangleMesh stick = penumbra::ImposterStickMesh(24);
+  const penumbra::CasterTopology topology =
+    penumbra::CasterTopology::Build(stick.Points, stick.Triangles);
+  double volume = 0.0;
+  for (const glm::uvec3& t : stick.Triangles)
+  {
+    volume += glm::dot(stick.Points[t.x], glm::cross(stick.Points[t.y], stick.Points[t.z])) / 6.0;
+  }
+  Check(
+    topology.ClosedAndOriented && volume > 0.98 * glm::pi<double>() && volume < glm::pi<double>(),
+    "imposter stick mesh: closed, outward, inscribed in the unit cylinder of height 1");
+
+  // An actor rotated and scaled: the axis follows the normal matrix, the sizes do not scale.
+  glm::dmat4 actor = glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(0.3, 1.0, -0.2));
+  actor = glm::scale(actor, glm::dvec3(2.0, 2.0, 2.0));
+  actor[3] = glm::dvec4(1.0, -2.0, 0.5, 1.0);
+  const glm::dvec3 centre(0.5, 0.25, -1.0), orientation(1.0, 2.0, 0.5);
+  glm::dmat4 matrix;
+  const bool placed = penumbra::ImposterStickMatrix(actor, centre, orientation, 3.0, 0.2, matrix);
+  const glm::dvec3 worldCentre(actor * glm::dvec4(centre, 1.0));
+  const glm::dvec3 axis = glm::normalize(glm::dmat3(actor) * orientation); // uniform scale
+  const glm::dvec3 top(matrix * glm::dvec4(0.0, 0.0, 0.5, 1.0));
+  const glm::dvec3 rim(matrix * glm::dvec4(1.0, 0.0, 0.0, 1.0));
+  Check(placed && glm::length(top - (worldCentre + 1.5 * axis)) < 1e-12 &&
+      std::abs(glm::length(rim - worldCentre) - 0.2) < 1e-12 &&
+      std::abs(glm::dot(rim - worldCentre, axis)) < 1e-12,
+    "imposter stick matrix: centred, along the actor's normal matrix, length and radius unscaled");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Check(!penumbra::ImposterStickMatrix(actor, centre, { 0.0, 0.0, 0.0 }, 3.0, 0.2, matrix) &&
+      !penumbra::ImposterStickMatrix(actor, centre, orientation, 0.0, 0.2, matrix) &&
+      !penumbra::ImposterStickMatrix(actor, centre, orientation, 3.0, nan, matrix) &&
+      !penumbra::ImposterStickMatrix(actor, { nan, 0.0, 0.0 }, orientation, 3.0, 0.2, matrix),
+    "imposter stick matrix: refused for a zero axis, a zero length, a NaN radius or centre");
+}
+
 int main()
 {
   std::mt19937 rng(7);
@@ -256,5 +293,6 @@ int main()
   TestAgainstTransform(rng);
   TestBadInput();
   TestImposterSphere();
+  TestImposterStick();
   return penumbra_test::Finish();
 }

@@ -19,6 +19,7 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
@@ -28,10 +29,14 @@
 #include "vtkImageMapper3D.h"
 #include "vtkLODActor.h"
 #include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMolecule.h"
+#include "vtkMoleculeMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpenGLSphereMapper.h"
+#include "vtkOpenGLStickMapper.h"
 #include "vtkPointData.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
@@ -43,6 +48,7 @@
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -470,6 +476,117 @@ void TestImposterSpheres()
     0.005);
 }
 
+/// Imposter sticks (a vtkOpenGLStickMapper: lengths and radii in a scale array, axes in an
+/// orientation array) against the same sticks as fine capped vtkCylinderSource actors, each
+/// placed by a vtkTransform; the truth traces its own cylinders.
+void TestImposterSticks()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> sizes, axes;
+  sizes->SetName("sizes");
+  sizes->SetNumberOfComponents(3);
+  axes->SetName("axes");
+  axes->SetNumberOfComponents(3);
+  vtkNew<vtkCellArray> verts;
+  for (int i = 0; i < 6; ++i)
+  {
+    points->InsertNextPoint(-1.5 + 0.6 * i, 0.8 + 0.15 * (i % 2), 0.4 * std::cos(1.7 * i));
+    axes->InsertNextTuple3(std::cos(0.9 * i), 0.4 * std::sin(1.3 * i), std::sin(0.9 * i));
+    sizes->InsertNextTuple3(0.7 + 0.1 * i, 0.06 + 0.015 * i, 0.0);
+    verts->InsertNextCell(1);
+    verts->InsertCellPoint(i);
+  }
+  // VTK's stick mapper reads colours for every stick (it crashes without): white, as the
+  // plain actors' property.
+  vtkNew<vtkUnsignedCharArray> white;
+  white->SetNumberOfComponents(3);
+  for (int i = 0; i < 6; ++i)
+  {
+    white->InsertNextTuple3(255, 255, 255);
+  }
+  vtkNew<vtkPolyData> bonds;
+  bonds->SetPoints(points);
+  bonds->SetVerts(verts);
+  bonds->GetPointData()->SetScalars(white);
+  bonds->GetPointData()->AddArray(sizes);
+  bonds->GetPointData()->AddArray(axes);
+  CompareScenes(
+    "imposter sticks, lengths, radii, axes",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkOpenGLStickMapper> mapper;
+      mapper->SetInputData(bonds);
+      mapper->SetScaleArray("sizes");
+      mapper->SetOrientationArray("axes");
+      mapper->SetColorModeToDirectScalars();
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double p[3], a[3];
+        points->GetPoint(i, p);
+        axes->GetTuple(i, a);
+        const double length = sizes->GetComponent(i, 0) * vtkMath::Norm(a);
+        vtkMath::Normalize(a);
+        const double y[3] = { 0.0, 1.0, 0.0 };
+        double turn[3];
+        vtkMath::Cross(y, a, turn);
+        vtkNew<vtkTransform> place;
+        place->PostMultiply();
+        place->Scale(sizes->GetComponent(i, 1), length, sizes->GetComponent(i, 1));
+        place->RotateWXYZ(
+          vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(turn), vtkMath::Dot(y, a))), turn);
+        place->Translate(p);
+        vtkNew<vtkCylinderSource> cylinder;
+        cylinder->SetResolution(96);
+        cylinder->SetRadius(1.0);
+        cylinder->SetHeight(1.0);
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputConnection(cylinder->GetOutputPort());
+        auto actor = LitActor(mapper);
+        actor->SetUserTransform(place);
+        r->AddActor(actor);
+      }
+    });
+}
+
+/// A molecule (vtkMoleculeMapper, ball and stick): its atoms and bonds cast, no warning, and
+/// the truth, which reads the same sphere and stick mappers its own way, agrees.
+void TestMolecule()
+{
+  View view;
+  Ground(view.Renderer);
+  vtkNew<vtkMolecule> molecule;
+  const vtkIdType carbon = molecule->AppendAtom(6, -0.6, 1.0, 0.0).GetId();
+  const vtkIdType oxygen = molecule->AppendAtom(8, 0.6, 1.1, 0.2).GetId();
+  const vtkIdType nitrogen = molecule->AppendAtom(7, -1.2, 1.3, -0.9).GetId();
+  const vtkIdType hydrogen = molecule->AppendAtom(1, -1.4, 0.9, 0.7).GetId();
+  molecule->AppendBond(carbon, oxygen, 2);
+  molecule->AppendBond(carbon, nitrogen, 1);
+  molecule->AppendBond(carbon, hydrogen, 1);
+  vtkNew<vtkMoleculeMapper> mapper;
+  mapper->SetInputData(molecule);
+  mapper->UseBallAndStickSettings();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  view.Renderer->AddActor(actor);
+  const WarningLog log(view.Pass);
+  view.Render();
+  view.Render();
+  const std::vector<float> visibility = view.Visibility();
+  const auto shadowed =
+    std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
+  std::printf("molecule: %ld shadowed pixels, %zu warnings\n", static_cast<long>(shadowed),
+    log.Messages.size());
+  Check(shadowed > Width * Height / 100, "molecule: its atoms and bonds cast");
+  Check(log.Messages.empty(), "molecule: no warning");
+  CheckAgainstTruth("molecule", CompareWithTruth(view.Window, view.Renderer, view.Pass, 0));
+}
+
 void TestWarnings()
 {
   View view;
@@ -581,6 +698,8 @@ int main()
   TestAssembly();
   TestLODActor();
   TestImposterSpheres();
+  TestImposterSticks();
+  TestMolecule();
   TestWarnings();
   return penumbra_test::Finish();
 }
