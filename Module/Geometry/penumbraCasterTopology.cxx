@@ -316,6 +316,10 @@ std::uint32_t OtherEnd(std::uint64_t key)
 /// more than the sort.
 void InsertionSort(EdgeUse* first, EdgeUse* last)
 {
+  if (last - first < 2)
+  {
+    return; // also keeps first + 1 off a null pointer when there are no uses at all
+  }
   for (EdgeUse* i = first + 1; i < last; ++i)
   {
     const std::uint64_t key = LoadKey(*i);
@@ -416,6 +420,14 @@ void GroupHalfEdges(TopologyScratch& scratch, CasterTopology& topo)
 /// run in parallel, and the result does not depend on how they were split.
 void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
 {
+  topo.Report.BoundaryEdges = topo.Report.InconsistentEdges = topo.Report.NonManifoldEdges = 0;
+  topo.ClosedAndOriented = false;
+  if (topo.Triangles.empty())
+  {
+    topo.Edges.clear();
+    topo.Uses.clear();
+    return;
+  }
   GroupHalfEdges(scratch, topo);
   const std::vector<std::uint32_t>& start = scratch.GroupStart;
   const vtkIdType pointCount = static_cast<vtkIdType>(topo.Points.size());
