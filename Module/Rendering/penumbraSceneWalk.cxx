@@ -191,24 +191,8 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
         ", whose imposters have no triangles: it casts no shadow");
     return;
   }
-  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  if (this->Instances(actor, mapper, matrix, owner, surfaces))
   {
-    this->Glyphs(actor, glyphs, matrix, owner, surfaces);
-    return;
-  }
-  if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
-  {
-    this->Spheres(actor, spheres, matrix, owner, surfaces);
-    return;
-  }
-  if (auto sticks = vtkOpenGLStickMapper::SafeDownCast(mapper))
-  {
-    this->Sticks(actor, sticks, matrix, owner, surfaces);
-    return;
-  }
-  if (auto molecule = vtkOpenGLMoleculeMapper::SafeDownCast(mapper))
-  {
-    this->Molecule(actor, molecule, matrix, owner, surfaces);
     return;
   }
   vtkDataObject* data = mapper->GetInputDataObject(0, 0);
@@ -389,6 +373,32 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
     this->Warn(
       owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
   }
+}
+
+bool SceneWalk::Instances(vtkActor* actor, vtkMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    this->Glyphs(actor, glyphs, matrix, owner, surfaces);
+  }
+  else if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
+  {
+    this->Spheres(actor, spheres, matrix, owner, surfaces);
+  }
+  else if (auto sticks = vtkOpenGLStickMapper::SafeDownCast(mapper))
+  {
+    this->Sticks(actor, sticks, matrix, owner, surfaces);
+  }
+  else if (auto molecule = vtkOpenGLMoleculeMapper::SafeDownCast(mapper))
+  {
+    this->Molecule(actor, molecule, matrix, owner, surfaces);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
 }
 
 void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const glm::dmat4& matrix,

@@ -32,6 +32,7 @@ class vtkActor;
 class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
 class vtkGlyph3DMapper;
+class vtkMapper;
 class vtkOpenGLMoleculeMapper;
 class vtkOpenGLSphereMapper;
 class vtkOpenGLStickMapper;
@@ -77,6 +78,10 @@ private:
   /// `composite`: drawn by a vtkCompositePolyDataMapper2, which decides per block.
   void Blocks(vtkActor* actor, bool composite, vtkCompositeDataDisplayAttributes* attributes,
     vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
+    std::vector<DrawnSurface>& surfaces);
+  /// Mappers that draw many instances of a few shapes (glyphs, imposter spheres and sticks, a
+  /// molecule's both): adds their instances and returns true, or returns false for any other.
+  bool Instances(vtkActor* actor, vtkMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
