@@ -548,7 +548,9 @@ void CollectSticks(vtkOpenGLStickMapper* mapper, const double matrix[16], bool c
   vtkDataArray* sizes = input && scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
   vtkDataArray* axes =
     input && orientationName ? input->GetPointData()->GetArray(orientationName) : nullptr;
-  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3)
+  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3 ||
+    sizes->GetNumberOfTuples() < input->GetNumberOfPoints() ||
+    axes->GetNumberOfTuples() < input->GetNumberOfPoints())
   {
     return;
   }
@@ -623,6 +625,10 @@ void CollectSpheres(vtkOpenGLSphereMapper* mapper, const double matrix[16], bool
   }
   const char* scaleName = mapper->*SphereArrays::Scale;
   vtkDataArray* radii = scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
+  if (radii && radii->GetNumberOfTuples() < input->GetNumberOfPoints())
+  {
+    return; // VTK reads past the array: nothing defined to trace
+  }
   Mesh mesh;
   mesh.Casts = casts;
   mesh.Opacity = opacity;

@@ -421,6 +421,13 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
   // it, else of the mapper's Radius.
   const char* scaleName = mapper->*SphereArrays::Scale;
   vtkDataArray* radii = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
+  if (radii && radii->GetNumberOfTuples() < centres->GetNumberOfPoints())
+  {
+    this->Warn(owner, actor,
+      "has a radius array shorter than its points (VTK reads past it): its imposter spheres "
+      "cast no shadow");
+    return;
+  }
   bool refused = false;
   for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
   {
@@ -461,11 +468,13 @@ void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm:
   vtkDataArray* sizes = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
   vtkDataArray* axes =
     orientationName ? centres->GetPointData()->GetArray(orientationName) : nullptr;
-  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3)
+  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3 ||
+    sizes->GetNumberOfTuples() < centres->GetNumberOfPoints() ||
+    axes->GetNumberOfTuples() < centres->GetNumberOfPoints())
   {
     this->Warn(owner, actor,
       "is drawn by vtkOpenGLStickMapper without a scale array of lengths and radii and an "
-      "orientation array: its sticks cast no shadow");
+      "orientation array, one tuple per point: its sticks cast no shadow");
     return;
   }
   if (!this->UnitStick)
