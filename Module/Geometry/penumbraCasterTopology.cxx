@@ -312,13 +312,25 @@ std::uint32_t OtherEnd(std::uint64_t key)
   return static_cast<std::uint32_t>(key >> 32);
 }
 
-/// Sorts a vertex's few keys by insertion: groups average six, where std::sort's set-up costs
-/// more than the sort.
-void InsertionSort(EdgeUse* first, EdgeUse* last)
+/// Sorts a vertex's keys: by insertion for the usual few (six on average, where std::sort's
+/// set-up costs more than the sort), by std::sort for a hub (a large fan), which insertion would
+/// take quadratic time over.
+void SortKeys(EdgeUse* first, EdgeUse* last)
 {
   if (last - first < 2)
   {
     return; // also keeps first + 1 off a null pointer when there are no uses at all
+  }
+  if (last - first > 32)
+  {
+    std::vector<std::uint64_t> keys(static_cast<std::size_t>(last - first));
+    std::transform(first, last, keys.begin(), LoadKey);
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+    {
+      StoreKey(first[i], keys[i]);
+    }
+    return;
   }
   for (EdgeUse* i = first + 1; i < last; ++i)
   {
@@ -438,7 +450,7 @@ void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
     {
       for (vtkIdType a = begin; a < end; ++a)
       {
-        InsertionSort(slots + start[a], slots + start[a + 1]);
+        SortKeys(slots + start[a], slots + start[a + 1]);
         std::uint32_t edges = 0;
         for (std::uint32_t h = start[a]; h < start[a + 1]; ++h)
         {

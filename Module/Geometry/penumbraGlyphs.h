@@ -64,7 +64,8 @@ struct TriangleMesh
  * unit sphere: the caster of one imposter sphere. Inscribed on purpose: every point of the true
  * sphere lies outside it, so the sphere VTK draws is never shadowed by its own stand-in (a
  * larger one would put the lit surface just inside its own shadow volume). Its outline lies
- * inside the true one by at most 1 - cos(pi / segments) of the radius (0.5% at 32).
+ * inside the true one by at most about 1 - cos^2(pi / segments) of the radius (the middle of a
+ * quad's diagonal; 1% at 32, 0.5% along the rings).
  */
 VTKPENUMBRAGEOMETRY_EXPORT TriangleMesh ImposterSphereMesh(int segments);
 

@@ -548,9 +548,13 @@ void CollectSticks(vtkOpenGLStickMapper* mapper, const double matrix[16], bool c
   vtkDataArray* sizes = input && scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
   vtkDataArray* axes =
     input && orientationName ? input->GetPointData()->GetArray(orientationName) : nullptr;
-  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3 ||
-    sizes->GetNumberOfTuples() < input->GetNumberOfPoints() ||
-    axes->GetNumberOfTuples() < input->GetNumberOfPoints())
+  // VTK reads both as three floats a point; anything else it draws from garbage.
+  auto asVTKReadsIt = [input](vtkDataArray* array)
+  {
+    return array && array->GetDataType() == VTK_FLOAT && array->GetNumberOfComponents() == 3 &&
+      array->GetNumberOfTuples() >= input->GetNumberOfPoints();
+  };
+  if (!asVTKReadsIt(sizes) || !asVTKReadsIt(axes))
   {
     return;
   }
@@ -569,7 +573,7 @@ void CollectSticks(vtkOpenGLStickMapper* mapper, const double matrix[16], bool c
     double p[3], o[4] = { 0, 0, 0, 0 };
     input->GetPoint(id, p);
     axes->GetTuple(id, o);
-    const double length = sizes->GetComponent(id, 0) * vtkMath::Norm(o);
+    const double length = std::abs(sizes->GetComponent(id, 0)) * vtkMath::Norm(o);
     const double radius = sizes->GetComponent(id, 1);
     double axis[4];
     normalMatrix->MultiplyPoint(o, axis);
@@ -625,9 +629,11 @@ void CollectSpheres(vtkOpenGLSphereMapper* mapper, const double matrix[16], bool
   }
   const char* scaleName = mapper->*SphereArrays::Scale;
   vtkDataArray* radii = scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
-  if (radii && radii->GetNumberOfTuples() < input->GetNumberOfPoints())
+  if (radii &&
+    (radii->GetDataType() != VTK_FLOAT || radii->GetNumberOfComponents() != 1 ||
+      radii->GetNumberOfTuples() < input->GetNumberOfPoints()))
   {
-    return; // VTK reads past the array: nothing defined to trace
+    return; // VTK reads one float a point: anything else it draws from garbage
   }
   Mesh mesh;
   mesh.Casts = casts;

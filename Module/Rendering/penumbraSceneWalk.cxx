@@ -80,6 +80,15 @@ bool DrawsImposters(vtkMapper* mapper)
   return mapper->IsA("vtkPointGaussianMapper");
 }
 
+/// Whether VTK's imposter mappers read `array` as it is: they take it as floats, `components`
+/// to a point, for every point (GetVoidPointer). Another type or layout they draw from garbage
+/// or from past the array's end.
+bool LaidOutAsVTKReadsIt(vtkDataArray* array, int components, vtkIdType points)
+{
+  return array->GetDataType() == VTK_FLOAT && array->GetNumberOfComponents() == components &&
+    array->GetNumberOfTuples() >= points;
+}
+
 /// A polydata of `mesh`, the caster of every imposter of one kind.
 vtkSmartPointer<vtkPolyData> NewPolyData(const TriangleMesh& mesh)
 {
@@ -91,7 +100,8 @@ vtkSmartPointer<vtkPolyData> NewPolyData(const TriangleMesh& mesh)
   vtkNew<vtkCellArray> triangles;
   for (const glm::uvec3& t : mesh.Triangles)
   {
-    const vtkIdType ids[3] = { t.x, t.y, t.z };
+    const vtkIdType ids[3] = { static_cast<vtkIdType>(t.x), static_cast<vtkIdType>(t.y),
+      static_cast<vtkIdType>(t.z) };
     triangles->InsertNextCell(3, ids);
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();
@@ -421,11 +431,11 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
   // it, else of the mapper's Radius.
   const char* scaleName = mapper->*SphereArrays::Scale;
   vtkDataArray* radii = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
-  if (radii && radii->GetNumberOfTuples() < centres->GetNumberOfPoints())
+  if (radii && !LaidOutAsVTKReadsIt(radii, 1, centres->GetNumberOfPoints()))
   {
     this->Warn(owner, actor,
-      "has a radius array shorter than its points (VTK reads past it): its imposter spheres "
-      "cast no shadow");
+      "has a radius array that is not one float per point (VTK misreads it): its imposter "
+      "spheres cast no shadow");
     return;
   }
   bool refused = false;
@@ -461,20 +471,21 @@ void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm:
   {
     return;
   }
-  // As the mapper: every point is a stick, its length and radius the first two components of
+  // As the mapper: every point is a stick, its length (VTK's length(orientMC): the first
+  // component's magnitude times the orientation's norm) and radius the first two components of
   // the scale array, its axis the orientation array (VTK needs both, and fails without).
   const char* scaleName = mapper->*StickArrays::Scale;
   const char* orientationName = mapper->*StickArrays::Orientation;
   vtkDataArray* sizes = scaleName ? centres->GetPointData()->GetArray(scaleName) : nullptr;
   vtkDataArray* axes =
     orientationName ? centres->GetPointData()->GetArray(orientationName) : nullptr;
-  if (!sizes || !axes || sizes->GetNumberOfComponents() < 2 || axes->GetNumberOfComponents() < 3 ||
-    sizes->GetNumberOfTuples() < centres->GetNumberOfPoints() ||
-    axes->GetNumberOfTuples() < centres->GetNumberOfPoints())
+  const vtkIdType count = centres->GetNumberOfPoints();
+  if (!sizes || !axes || !LaidOutAsVTKReadsIt(sizes, 3, count) ||
+    !LaidOutAsVTKReadsIt(axes, 3, count))
   {
     this->Warn(owner, actor,
-      "is drawn by vtkOpenGLStickMapper without a scale array of lengths and radii and an "
-      "orientation array, one tuple per point: its sticks cast no shadow");
+      "is drawn by vtkOpenGLStickMapper without a scale array (length, radius, unused) and an "
+      "orientation array of three floats per point: its sticks cast no shadow");
     return;
   }
   if (!this->UnitStick)
@@ -490,7 +501,8 @@ void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm:
     const glm::dvec3 orientation = glm::make_vec3(axis);
     glm::dmat4 stick;
     if (!ImposterStickMatrix(matrix, glm::make_vec3(centre), orientation,
-          sizes->GetComponent(id, 0) * glm::length(orientation), sizes->GetComponent(id, 1), stick))
+          std::abs(sizes->GetComponent(id, 0)) * glm::length(orientation),
+          sizes->GetComponent(id, 1), stick))
     {
       refused = true;
       continue;

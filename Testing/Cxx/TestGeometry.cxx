@@ -495,6 +495,24 @@ void TestBuilderReuse()
     builds += 2;
   }
   Check(same == builds, "a reused builder gives what a fresh build gives");
+
+  // A hub: a disc fanned from point 0 in 200 triangles, in shuffled order, so that one vertex
+  // groups 400 half-edges (sorted by std::sort, not by insertion).
+  std::vector<glm::dvec3> hubPoints = { { 0.0, 0.0, 0.0 } };
+  std::vector<glm::uvec3> fan;
+  for (std::uint32_t k = 0; k < 200; ++k)
+  {
+    const double angle = 2.0 * 3.141592653589793 * k / 200.0;
+    hubPoints.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    fan.emplace_back(0u, 1u + k, 1u + (k + 1) % 200);
+  }
+  std::shuffle(fan.begin(), fan.end(), std::mt19937(5));
+  builder.Build(hubPoints, fan, reused);
+  const bool spokesManifold = std::all_of(reused.Edges.begin(), reused.Edges.end(),
+    [](const Edge& e) { return (e.A == 0) == (e.Kind == EdgeKind::Manifold); });
+  Check(reused.Edges.size() == 400 && reused.Report.BoundaryEdges == 200 && spokesManifold &&
+      SameTopology(reused, CasterTopology::Build(hubPoints, fan)),
+    "a hub of 200 triangles: 200 manifold spokes, 200 boundary rim edges");
   Check(builder.GetScratchBytes() > 0, "the builder keeps its scratch");
 }
 
