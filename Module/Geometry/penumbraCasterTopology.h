@@ -115,7 +115,8 @@ public:
   TopologyBuilder(const TopologyBuilder&) = delete;
   TopologyBuilder& operator=(const TopologyBuilder&) = delete;
 
-  /// Replaces `topology` with that of `input`, reusing its storage.
+  /// Replaces `topology` with that of `input`, reusing its storage. The inputs must not be
+  /// `topology`'s own arrays: they are cleared first.
   void Build(vtkPolyData* input, CasterTopology& topology,
     double relativeWeldTolerance = CasterTopology::DefaultWeldTolerance);
   void Build(const std::vector<glm::dvec3>& points, const std::vector<glm::uvec3>& triangles,

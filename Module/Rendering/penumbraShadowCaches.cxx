@@ -86,21 +86,24 @@ bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
   {
     this->Topology = CasterTopology::Build(surface);
   }
-  // Data that changes every frame (a simulation played back) warns once, not every frame.
+  // One warning per data object and kind: data that changes every frame (a simulation played
+  // back) warns once, not every frame, and data with nothing to cast says what it had instead
+  // (points and lines only, or every triangle dropped) in the same sentence.
   const std::string problems = this->Topology.Report.Describe();
-  if (!problems.empty() && !this->WarnedProblems)
+  if (this->Topology.Empty() && !this->WarnedEmpty)
+  {
+    vtkWarningWithObjectMacro(owner,
+      "Shadow caster " << data->GetClassName() << " (" << data
+                       << ") has no surface triangles, so it casts no shadow"
+                       << (problems.empty() ? "" : ": " + problems) << ".");
+    this->WarnedEmpty = this->WarnedProblems = true;
+  }
+  else if (!problems.empty() && !this->WarnedProblems)
   {
     vtkWarningWithObjectMacro(owner,
       "Shadow caster " << data->GetClassName() << " (" << data << "): " << problems
                        << (this->Generation > 1 ? " (not repeated for later versions)." : "."));
     this->WarnedProblems = true;
-  }
-  if (this->Topology.Empty() && !this->WarnedEmpty)
-  {
-    vtkWarningWithObjectMacro(owner,
-      "Shadow caster " << data->GetClassName() << " (" << data
-                       << ") has no surface triangles: it casts no shadow.");
-    this->WarnedEmpty = true;
   }
   return true;
 }
