@@ -27,6 +27,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -130,6 +131,17 @@ DrawnOpacity BlockOpacity(vtkActor* actor, double opacity)
 {
   const bool seenThrough = opacity < 1.0 || actor->GetForceTranslucent();
   return { seenThrough ? std::min(opacity, 1.0) : 1.0, seenThrough };
+}
+
+/// The points an imposter mapper draws its shapes at, or null where VTK draws none: no points,
+/// an actor of opacity 0, or points without cells (no bounds in VTK 9.1, so that its culler
+/// drops the actor).
+vtkPolyData* DrawnCentres(vtkActor* actor, vtkPolyDataMapper* mapper, const DrawnOpacity& drawn)
+{
+  vtkPolyData* centres = mapper->GetInput();
+  const bool drawnAtAll = drawn.Opacity > 0.0 && centres && centres->GetPoints() &&
+    vtkMath::AreBoundsInitialized(actor->GetBounds());
+  return drawnAtAll ? centres : nullptr;
 }
 } // namespace
 
@@ -415,11 +427,8 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
   const DrawnOpacity drawn = ActorOpacity(actor);
-  vtkPolyData* centres = mapper->GetInput();
-  // Points without cells (no verts) have no bounds in VTK 9.1, and its culler then drops the
-  // actor: nothing is drawn, so nothing casts.
-  if (!(drawn.Opacity > 0.0) || !centres || !centres->GetPoints() ||
-    !vtkMath::AreBoundsInitialized(actor->GetBounds()))
+  vtkPolyData* centres = DrawnCentres(actor, mapper, drawn);
+  if (!centres)
   {
     return;
   }
@@ -465,9 +474,8 @@ void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm:
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
   const DrawnOpacity drawn = ActorOpacity(actor);
-  vtkPolyData* centres = mapper->GetInput();
-  if (!(drawn.Opacity > 0.0) || !centres || !centres->GetPoints() ||
-    !vtkMath::AreBoundsInitialized(actor->GetBounds()))
+  vtkPolyData* centres = DrawnCentres(actor, mapper, drawn);
+  if (!centres)
   {
     return;
   }
