@@ -143,6 +143,30 @@ vtkPolyData* DrawnCentres(vtkActor* actor, vtkPolyDataMapper* mapper, const Draw
     vtkMath::AreBoundsInitialized(actor->GetBounds());
   return drawnAtAll ? centres : nullptr;
 }
+
+/// One surface per point of `centres`, each an instance of `shape` at the matrix `place` gives
+/// it (place(id, centre, matrix) returns false to leave the point out). Returns whether every
+/// point was placed.
+template <typename Place>
+bool AddInstances(vtkActor* actor, const DrawnOpacity& drawn, vtkPolyData* shape,
+  vtkPolyData* centres, const Place& place, std::vector<DrawnSurface>& surfaces)
+{
+  bool placedAll = true;
+  for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
+  {
+    double centre[3];
+    centres->GetPoint(id, centre);
+    glm::dmat4 matrix;
+    if (!place(id, glm::make_vec3(centre), matrix))
+    {
+      placedAll = false;
+      continue;
+    }
+    surfaces.push_back(
+      { actor, shape, matrix, static_cast<std::size_t>(id), drawn.Opacity, drawn.SeenThrough });
+  }
+  return placedAll;
+}
 } // namespace
 
 std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)
@@ -447,22 +471,15 @@ void SceneWalk::Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const gl
       "spheres cast no shadow");
     return;
   }
-  bool refused = false;
-  for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
-  {
-    double centre[3];
-    centres->GetPoint(id, centre);
-    const double radius = radii ? radii->GetComponent(id, 0) : mapper->GetRadius();
-    glm::dmat4 sphere;
-    if (!ImposterSphereMatrix(matrix, glm::make_vec3(centre), radius, sphere))
+  const bool placedAll = AddInstances(
+    actor, drawn, this->UnitSphere, centres,
+    [&](vtkIdType id, const glm::dvec3& centre, glm::dmat4& sphere)
     {
-      refused = true;
-      continue;
-    }
-    surfaces.push_back({ actor, this->UnitSphere, sphere, static_cast<std::size_t>(id),
-      drawn.Opacity, drawn.SeenThrough });
-  }
-  if (refused)
+      const double radius = radii ? radii->GetComponent(id, 0) : mapper->GetRadius();
+      return ImposterSphereMatrix(matrix, centre, radius, sphere);
+    },
+    surfaces);
+  if (!placedAll)
   {
     this->Warn(owner, actor,
       "has imposter spheres whose centre is not finite or whose radius is not positive and "
@@ -500,25 +517,19 @@ void SceneWalk::Sticks(vtkActor* actor, vtkOpenGLStickMapper* mapper, const glm:
   {
     this->UnitStick = NewPolyData(ImposterStickMesh(24));
   }
-  bool refused = false;
-  for (vtkIdType id = 0; id < centres->GetNumberOfPoints(); ++id)
-  {
-    double centre[3], axis[3];
-    centres->GetPoint(id, centre);
-    axes->GetTuple(id, axis);
-    const glm::dvec3 orientation = glm::make_vec3(axis);
-    glm::dmat4 stick;
-    if (!ImposterStickMatrix(matrix, glm::make_vec3(centre), orientation,
-          std::abs(sizes->GetComponent(id, 0)) * glm::length(orientation),
-          sizes->GetComponent(id, 1), stick))
+  const bool placedAll = AddInstances(
+    actor, drawn, this->UnitStick, centres,
+    [&](vtkIdType id, const glm::dvec3& centre, glm::dmat4& stick)
     {
-      refused = true;
-      continue;
-    }
-    surfaces.push_back({ actor, this->UnitStick, stick, static_cast<std::size_t>(id), drawn.Opacity,
-      drawn.SeenThrough });
-  }
-  if (refused)
+      double axis[3];
+      axes->GetTuple(id, axis);
+      const glm::dvec3 orientation = glm::make_vec3(axis);
+      return ImposterStickMatrix(matrix, centre, orientation,
+        std::abs(sizes->GetComponent(id, 0)) * glm::length(orientation), sizes->GetComponent(id, 1),
+        stick);
+    },
+    surfaces);
+  if (!placedAll)
   {
     this->Warn(owner, actor,
       "has imposter sticks whose centre or axis is not finite, or whose length or radius is not "
