@@ -253,6 +253,21 @@ StoredTriangles<typename ConnectivityArray::ValueType> TrianglesOf(
     static_cast<std::size_t>(connectivity->GetNumberOfValues() / 3), pointCount };
 }
 
+/// Calls `use` with the triangles of a triangles-only cell array, read in place from its 32- or
+/// 64-bit connectivity.
+template <typename Use>
+void WithStoredTriangles(vtkCellArray* triangles, vtkIdType pointCount, const Use& use)
+{
+  if (triangles->IsStorage64Bit())
+  {
+    use(TrianglesOf(triangles->GetConnectivityArray64(), pointCount));
+  }
+  else
+  {
+    use(TrianglesOf(triangles->GetConnectivityArray32(), pointCount));
+  }
+}
+
 /// Keeps the points that `map` sends to themselves (finite, not welded into another), in
 /// order, and renumbers the triangles (already in mapped indices) to match.
 void KeepRepresentatives(CasterTopology& topo, const std::vector<std::uint32_t>& map)
@@ -548,7 +563,6 @@ void WeldSeams(
     map[seamPoints[i]] = group;
   }
   report.WeldedPoints += seamPoints.size() - welded.size();
-  topo.Report = TopologyReport();
   RemapTriangles(topo, map, report); // merged corners make some degenerate
   KeepRepresentatives(topo, map);
   BuildEdges(scratch, topo);
@@ -643,26 +657,6 @@ void TriangulateCells(
   vtkPolyData* input, std::vector<glm::uvec3>& triangles, TopologyReport& report)
 {
   const vtkIdType pointCount = input->GetNumberOfPoints();
-  vtkCellArray* polys = input->GetPolys();
-  if (polys->IsHomogeneous() == 3)
-  {
-    auto append = [&](const auto& stored)
-    {
-      for (std::size_t t = 0; t < stored.size(); ++t)
-      {
-        triangles.push_back(stored[t]);
-      }
-    };
-    if (polys->IsStorage64Bit())
-    {
-      append(TrianglesOf(polys->GetConnectivityArray64(), pointCount));
-    }
-    else
-    {
-      append(TrianglesOf(polys->GetConnectivityArray32(), pointCount));
-    }
-    polys = nullptr;
-  }
   // A malformed cell naming a point that does not exist would make vtkPolygon read past the
   // points, and ids >= 2^32 would alias valid points once narrowed: drop the whole cell.
   auto validIds = [&](vtkIdType count, const vtkIdType* cellIds)
@@ -679,13 +673,28 @@ void TriangulateCells(
   vtkNew<vtkIdList> local;
   vtkIdType npts;
   const vtkIdType* ids;
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); polys && !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  vtkCellArray* polys = input->GetPolys();
+  if (polys->IsHomogeneous() == 3)
   {
-    cells->GetCurrentCell(npts, ids);
-    if (validIds(npts, ids))
+    WithStoredTriangles(polys, pointCount,
+      [&](const auto& stored)
+      {
+        for (std::size_t t = 0; t < stored.size(); ++t)
+        {
+          triangles.push_back(stored[t]);
+        }
+      });
+  }
+  else
+  {
+    auto cells = vtk::TakeSmartPointer(polys->NewIterator());
+    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
     {
-      TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+      cells->GetCurrentCell(npts, ids);
+      if (validIds(npts, ids))
+      {
+        TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+      }
     }
   }
   auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
@@ -808,17 +817,11 @@ void TopologyBuilder::Build(
       {
         BuildFromSoup(
           scratch, points, scratch.InputTriangles, relativeWeldTolerance, report, topology);
+        return;
       }
-      else if (polys->IsStorage64Bit())
-      {
-        BuildFromSoup(scratch, points, TrianglesOf(polys->GetConnectivityArray64(), pointCount),
-          relativeWeldTolerance, report, topology);
-      }
-      else
-      {
-        BuildFromSoup(scratch, points, TrianglesOf(polys->GetConnectivityArray32(), pointCount),
-          relativeWeldTolerance, report, topology);
-      }
+      WithStoredTriangles(polys, pointCount,
+        [&](const auto& triangles)
+        { BuildFromSoup(scratch, points, triangles, relativeWeldTolerance, report, topology); });
     });
 }
 
