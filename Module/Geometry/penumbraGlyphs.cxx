@@ -50,6 +50,20 @@ glm::dquat OrientationQuaternion(int mode, const double* o)
     }
   }
 }
+
+/// A size an imposter can have: NaN, infinities, zero and negatives are refused.
+bool IsPositiveAndFinite(double value)
+{
+  return value > 0.0 && std::isfinite(value);
+}
+
+/// An imposter's centre moved by the actor's matrix; false when the result is not finite.
+bool WorldPosition(const glm::dmat4& actorMatrix, const glm::dvec3& centre, glm::dvec3& position)
+{
+  const glm::dvec4 world = actorMatrix * glm::dvec4(centre, 1.0);
+  position = glm::dvec3(world) / world.w;
+  return std::isfinite(position.x) && std::isfinite(position.y) && std::isfinite(position.z);
+}
 } // namespace
 
 glm::dvec3 GlyphScale(const GlyphSettings& settings, const double* scaleTuple, int components)
@@ -114,21 +128,19 @@ TriangleMesh ImposterSphereMesh(int segments)
   const int around = std::max(8, segments + segments % 2);
   const int rings = around / 2;
   const double pi = glm::pi<double>();
-  const double radius = 1.0;
   TriangleMesh mesh;
-  mesh.Points.push_back({ 0.0, 0.0, radius }); // north pole
+  mesh.Points.push_back({ 0.0, 0.0, 1.0 }); // north pole
   for (int ring = 1; ring < rings; ++ring)
   {
     const double polar = pi * ring / rings;
     for (int k = 0; k < around; ++k)
     {
       const double azimuth = 2.0 * pi * k / around;
-      mesh.Points.push_back(radius *
-        glm::dvec3(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
-          std::cos(polar)));
+      mesh.Points.push_back({ std::sin(polar) * std::cos(azimuth),
+        std::sin(polar) * std::sin(azimuth), std::cos(polar) });
     }
   }
-  mesh.Points.push_back({ 0.0, 0.0, -radius }); // south pole
+  mesh.Points.push_back({ 0.0, 0.0, -1.0 }); // south pole
   const std::uint32_t south = static_cast<std::uint32_t>(mesh.Points.size() - 1);
   auto at = [around](int ring, int k)
   { return static_cast<std::uint32_t>(1 + (ring - 1) * around + (k % around)); };
@@ -148,10 +160,8 @@ TriangleMesh ImposterSphereMesh(int segments)
 bool ImposterSphereMatrix(
   const glm::dmat4& actorMatrix, const glm::dvec3& centre, double radius, glm::dmat4& matrix)
 {
-  const glm::dvec4 world = actorMatrix * glm::dvec4(centre, 1.0);
-  const glm::dvec3 position = glm::dvec3(world) / world.w;
-  if (!(radius > 0.0) || !std::isfinite(radius) || !std::isfinite(position.x) ||
-    !std::isfinite(position.y) || !std::isfinite(position.z))
+  glm::dvec3 position;
+  if (!IsPositiveAndFinite(radius) || !WorldPosition(actorMatrix, centre, position))
   {
     return false;
   }
@@ -190,14 +200,11 @@ TriangleMesh ImposterStickMesh(int segments)
 bool ImposterStickMatrix(const glm::dmat4& actorMatrix, const glm::dvec3& centre,
   const glm::dvec3& orientation, double length, double radius, glm::dmat4& matrix)
 {
-  const glm::dvec4 world = actorMatrix * glm::dvec4(centre, 1.0);
-  const glm::dvec3 position = glm::dvec3(world) / world.w;
   const glm::dvec3 axis = glm::transpose(glm::inverse(glm::dmat3(actorMatrix))) * orientation;
   const double axisLength = glm::length(axis);
-  auto finite = [](const glm::dvec3& v)
-  { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-  if (!(length > 0.0) || !(radius > 0.0) || !std::isfinite(length) || !std::isfinite(radius) ||
-    !finite(position) || !(axisLength > 0.0) || !std::isfinite(axisLength))
+  glm::dvec3 position;
+  if (!IsPositiveAndFinite(length) || !IsPositiveAndFinite(radius) ||
+    !IsPositiveAndFinite(axisLength) || !WorldPosition(actorMatrix, centre, position))
   {
     return false;
   }
