@@ -535,6 +535,14 @@ struct MoleculeParts : vtkOpenGLMoleculeMapper
     &MoleculeParts::FastBondMapper;
 };
 
+/// Whether `array` holds `components` floats for each of `points` points: how VTK's imposter
+/// mappers read their arrays (GetVoidPointer), so that anything else they draw from garbage.
+bool ReadableAsVTKReadsIt(vtkDataArray* array, int components, vtkIdType points)
+{
+  return array->GetDataType() == VTK_FLOAT && array->GetNumberOfComponents() == components &&
+    array->GetNumberOfTuples() >= points;
+}
+
 /// Appends the sticks a vtkOpenGLStickMapper draws, each a fine capped vtkCylinderSource placed
 /// by a vtkTransform: centred on the actor-moved point, along the actor's normal matrix times
 /// the orientation, as long as the scale array's first component times the orientation's norm
@@ -548,13 +556,8 @@ void CollectSticks(vtkOpenGLStickMapper* mapper, const double matrix[16], bool c
   vtkDataArray* sizes = input && scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
   vtkDataArray* axes =
     input && orientationName ? input->GetPointData()->GetArray(orientationName) : nullptr;
-  // VTK reads both as three floats a point; anything else it draws from garbage.
-  auto asVTKReadsIt = [input](vtkDataArray* array)
-  {
-    return array && array->GetDataType() == VTK_FLOAT && array->GetNumberOfComponents() == 3 &&
-      array->GetNumberOfTuples() >= input->GetNumberOfPoints();
-  };
-  if (!asVTKReadsIt(sizes) || !asVTKReadsIt(axes))
+  if (!sizes || !axes || !ReadableAsVTKReadsIt(sizes, 3, input->GetNumberOfPoints()) ||
+    !ReadableAsVTKReadsIt(axes, 3, input->GetNumberOfPoints()))
   {
     return;
   }
@@ -629,11 +632,9 @@ void CollectSpheres(vtkOpenGLSphereMapper* mapper, const double matrix[16], bool
   }
   const char* scaleName = mapper->*SphereArrays::Scale;
   vtkDataArray* radii = scaleName ? input->GetPointData()->GetArray(scaleName) : nullptr;
-  if (radii &&
-    (radii->GetDataType() != VTK_FLOAT || radii->GetNumberOfComponents() != 1 ||
-      radii->GetNumberOfTuples() < input->GetNumberOfPoints()))
+  if (radii && !ReadableAsVTKReadsIt(radii, 1, input->GetNumberOfPoints()))
   {
-    return; // VTK reads one float a point: anything else it draws from garbage
+    return;
   }
   Mesh mesh;
   mesh.Casts = casts;

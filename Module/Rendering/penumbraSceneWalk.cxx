@@ -541,24 +541,24 @@ void SceneWalk::Molecule(vtkActor* actor, vtkOpenGLMoleculeMapper* mapper, const
   vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
   // The molecule mapper draws with these two (its glyph data made while VTK drew the frame's
-  // depth, before the casters are walked). Atoms and bonds number their parts apart.
-  std::vector<DrawnSurface> parts;
+  // depth, before the casters are walked).
+  vtkOpenGLSphereMapper* atoms = mapper->GetFastAtomMapper();
   if (mapper->GetRenderAtoms())
   {
-    this->Spheres(actor, mapper->GetFastAtomMapper(), matrix, owner, parts);
+    this->Spheres(actor, atoms, matrix, owner, surfaces);
   }
-  const std::size_t atoms = parts.size();
+  const std::size_t firstBond = surfaces.size();
   if (mapper->GetRenderBonds())
   {
-    this->Sticks(actor, &*(mapper->*MoleculeParts::Bonds), matrix, owner, parts);
+    this->Sticks(actor, &*(mapper->*MoleculeParts::Bonds), matrix, owner, surfaces);
   }
-  for (std::size_t i = atoms; i < parts.size(); ++i)
+  // Atoms and bonds are parts of one actor: the bonds number theirs after every atom's.
+  const std::size_t atomCount =
+    atoms->GetInput() ? static_cast<std::size_t>(atoms->GetInput()->GetNumberOfPoints()) : 0;
+  for (std::size_t i = firstBond; i < surfaces.size(); ++i)
   {
-    parts[i].Part += static_cast<std::size_t>(mapper->GetFastAtomMapper()->GetInput()
-        ? mapper->GetFastAtomMapper()->GetInput()->GetNumberOfPoints()
-        : 0);
+    surfaces[i].Part += atomCount;
   }
-  surfaces.insert(surfaces.end(), parts.begin(), parts.end());
 }
 
 void SceneWalk::Warn(vtkObject* owner, vtkProp* prop, const std::string& reason)
