@@ -113,7 +113,9 @@ void MeshCache::Bind(vtkShaderProgram* program)
   if (!this->Uploaded)
   {
     const std::vector<glm::dvec3>& points = this->Topology.Points;
-    std::vector<float>& buffer = this->UploadBuffer; // kept: changing data uploads every frame
+    // Kept only for data that changes (it uploads every frame); static data frees its copy.
+    std::vector<float> once;
+    std::vector<float>& buffer = this->Builder ? this->UploadBuffer : once;
     buffer.resize(points.size() * 8);
     for (std::size_t i = 0; i < points.size(); ++i)
     {
