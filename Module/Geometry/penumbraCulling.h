@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 
 namespace penumbra
@@ -42,6 +43,20 @@ struct PixelRect
 {
   int X0 = 0, Y0 = 0, X1 = 0, Y1 = 0;
   bool Empty() const { return this->X1 <= this->X0 || this->Y1 <= this->Y0; }
+  /// The smallest rectangle holding both (an empty one adds nothing).
+  PixelRect United(const PixelRect& other) const
+  {
+    if (other.Empty())
+    {
+      return *this;
+    }
+    if (this->Empty())
+    {
+      return other;
+    }
+    return { std::min(this->X0, other.X0), std::min(this->Y0, other.Y0),
+      std::max(this->X1, other.X1), std::max(this->Y1, other.Y1) };
+  }
   bool operator==(const PixelRect& other) const
   {
     return this->X0 == other.X0 && this->Y0 == other.Y0 && this->X1 == other.X1 &&

@@ -12,6 +12,7 @@
 #include "vtk_glew.h"
 
 #include "penumbraCountingResolveFS.h"
+#include "penumbraCountingTransmissionFS.h"
 #include "penumbraCountingWedgeFS.h"
 #include "penumbraCountingWedgeVS.h"
 #include "penumbraResolveVS.h"
@@ -29,13 +30,25 @@ namespace
 /// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
 constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 
-/// A shader source with its sample count compiled in (the loops' bounds and the samples' array).
-std::string WithSampleCount(const char* source, std::size_t samples)
+/// A shader source with its sample count compiled in (the loops' bounds and the samples' array),
+/// and `define` defined when given.
+std::string WithSampleCount(const char* source, std::size_t samples, const char* define = nullptr)
 {
   std::string text = source;
-  vtkShaderProgram::Substitute(text, "//PENUMBRA::SampleCount",
-    "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n", false);
+  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n";
+  if (define)
+  {
+    defines += std::string("#define ") + define + "\n";
+  }
+  vtkShaderProgram::Substitute(text, "//PENUMBRA::SampleCount", defines, false);
   return text;
+}
+
+/// Whether the caster's shadow is counted for the light: translucent casters are drawn one
+/// sample at a time instead.
+bool Counted(const CasterCache& caster, const ShadowLight& light)
+{
+  return !caster.Translucent() && !caster.Culled.count(light.Light);
 }
 } // namespace
 
@@ -75,7 +88,7 @@ bool CountingTechnique::IsCheaper(
   std::vector<CountingCost> costs;
   for (CasterCache* caster : casters)
   {
-    if (caster->Culled.count(light.Light))
+    if (!Counted(*caster, light))
     {
       continue;
     }
@@ -105,7 +118,7 @@ void CountingTechnique::PrepareWedges(
 {
   for (CasterCache* caster : casters)
   {
-    if (!caster->Culled.count(light.Light))
+    if (Counted(*caster, light))
     {
       caster->CountingWedges[light.Light].BuildVertices(*caster->Mesh);
     }
@@ -151,7 +164,9 @@ void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
 {
   // A shader that does not build turns counting off: from the next frame on such lights
   // average the same samples.
-  if (!this->Draw(frame, light))
+  const bool drawn = this->Draw(frame, light) &&
+    (!light.ShadowedByTranslucentCasters || this->DrawTransmission(frame, light));
+  if (!drawn)
   {
     this->Support = 0;
   }
@@ -163,7 +178,6 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   vtkOpenGLRenderWindow* window = frame.Window;
   const std::size_t sampleCount = light.CountingSamples.size();
   const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
-  const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS, sampleCount);
   vtkShaderProgram* program = frame.Programs->Ready(window, penumbraCountingWedgeVS,
     wedgeFS.c_str(), "soft shadow volume wedge", "soft shadows average hard shadows instead");
   if (!program)
@@ -213,7 +227,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   program->SetUniformf("sampleSpread", static_cast<float>(spread));
   for (CasterCache* caster : *frame.Casters)
   {
-    if (caster->Culled.count(light.Light))
+    if (!Counted(*caster, light))
     {
       continue;
     }
@@ -226,17 +240,39 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   frame.DepthCopy->Deactivate();
 
-  // Resolve into the light's layer at every geometry pixel (the far-plane triangle passes
-  // GL_GREATER exactly there): counters where a wedge reached, the centre's count elsewhere.
+  return this->Resolve(frame, light, false);
+}
+
+bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bool countOffset)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS,
+    light.CountingSamples.size(), countOffset ? "PENUMBRA_COUNT_OFFSET" : nullptr);
   vtkShaderProgram* resolve = frame.Programs->Ready(window, penumbraResolveVS, resolveFS.c_str(),
-    "soft shadow volume resolve", "soft shadows average hard shadows instead");
+    countOffset ? "soft shadow volume count offset" : "soft shadow volume resolve",
+    "soft shadows average hard shadows instead");
   if (!resolve)
   {
     return false;
   }
-  frame.AttachColour(frame.LightIntensity, light.Layer);
+  vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
+  if (countOffset)
+  {
+    frame.AttachClearedFloatTarget(this->CountOffset);
+  }
+  else
+  {
+    frame.AttachColour(frame.LightIntensity, light.Layer);
+  }
+  // At every geometry pixel (the far-plane triangle passes GL_GREATER exactly there): counters
+  // where a wedge reached (the stencil's mark), the centre's count elsewhere.
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
   ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   this->CentreCount->Activate();
   this->SampleCounters->Activate();
@@ -246,10 +282,68 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   {
     ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
     resolve->SetUniformi("useCounters", reached);
-    frame.FullScreen->Draw(resolve, this->ResolveVAO);
+    frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
   }
   this->SampleCounters->Deactivate();
   this->CentreCount->Deactivate();
+  if (countOffset)
+  {
+    frame.AttachColour(frame.LightIntensity, light.Layer);
+  }
+  return true;
+}
+
+bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& light)
+{
+  if (!this->Resolve(frame, light, true))
+  {
+    return false;
+  }
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const float share = 1.0f / static_cast<float>(light.CountingSamples.size());
+  vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
+  const std::size_t samples = light.CountingSamples.size();
+  for (std::size_t first = 0; first < samples; first += 4)
+  {
+    const std::size_t group = std::min<std::size_t>(4, samples - first);
+    const PixelRect covered =
+      frame.DrawTranslucentVolumes(light, first, group, this->LogTransmission, 4);
+    if (covered.Empty())
+    {
+      continue;
+    }
+    vtkShaderProgram* program =
+      frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingTransmissionFS,
+        "soft shadow volume transmission", "soft shadows average hard shadows instead");
+    if (!program)
+    {
+      return false;
+    }
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglDisable(GL_STENCIL_TEST);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglEnable(GL_DEPTH_CLAMP);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+    this->CountOffset->Activate();
+    this->SampleCounters->Activate();
+    this->LogTransmission->Activate();
+    program->SetUniformi("countOffset", this->CountOffset->GetTextureUnit());
+    program->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
+    program->SetUniformi("logTransmission", this->LogTransmission->GetTextureUnit());
+    program->SetUniformi("word", static_cast<int>(first / 4));
+    program->SetUniformi("groupSize", static_cast<int>(group));
+    program->SetUniformf("sampleShare", share);
+    frame.FullScreen->Draw(program, this->TransmissionVAO);
+    this->LogTransmission->Deactivate();
+    this->SampleCounters->Deactivate();
+    this->CountOffset->Deactivate();
+  }
   return true;
 }
 
@@ -261,14 +355,19 @@ std::size_t CountingTechnique::GraphicsMemoryBytes() const
   }
   const std::size_t pixels =
     static_cast<std::size_t>(this->CentreCount->GetWidth()) * this->CentreCount->GetHeight();
-  return pixels * (1 + this->SampleCounters->GetDepth()) * 4;
+  const std::size_t transmission = this->CountOffset->GetHandle() ? 4 + 16 : 0;
+  return pixels * ((1 + this->SampleCounters->GetDepth()) * 4 + transmission);
 }
 
 void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->CentreCount->ReleaseGraphicsResources(window);
   this->SampleCounters->ReleaseGraphicsResources(window);
+  this->CountOffset->ReleaseGraphicsResources(window);
+  this->LogTransmission->ReleaseGraphicsResources(window);
   this->ResolveVAO.ReleaseGraphicsResources();
+  this->OffsetVAO.ReleaseGraphicsResources();
+  this->TransmissionVAO.ReleaseGraphicsResources();
   this->Support = -1;
 }
 

@@ -3,6 +3,11 @@
  * @brief   Soft shadow volumes (METHOD_SOFT_SHADOW_VOLUMES, and Automatic's choice where it is
  *          cheaper): the centre's count plus each light sample's changes over the potential
  *          silhouette's wedges, in 8-bit counters (Documentation/wedges.md).
+ *
+ * Only opaque casters are counted. Translucent ones are drawn after, one light sample at a time
+ * (ShadowFrame::DrawTranslucentVolumes), and where the counters say that opaque casters leave
+ * the sample visible its share of the light is multiplied by their transmission: the averaged
+ * method's image for the same samples, at the cost of averaging the translucent casters only.
  */
 #ifndef penumbraCountingTechnique_h
 #define penumbraCountingTechnique_h
@@ -41,21 +46,34 @@ public:
     const ShadowLight& light, CasterCache& caster, const Box& receivers) override;
   /// The centre's count goes to a texture of its own, for the resolve to read.
   void BeginVolumes(ShadowFrame& frame, const ShadowLight& light) override;
-  void ResolveSample(ShadowFrame&, const ShadowLight&) override {}
-  /// Counts the samples over the wedges and writes the share of visible ones into the layer.
+  void ResolveSample(ShadowFrame&, const ShadowLight&, std::size_t) override {}
+  /// Counts the samples over the wedges and writes the share of visible ones into the layer,
+  /// then multiplies each visible sample's share by its translucent casters' transmission.
   void Finish(ShadowFrame& frame, const ShadowLight& light) override;
-  /// The centre count and counters: 4 + N bytes per pixel.
+  /// The centre count and counters: 4 + N bytes per pixel, and 20 more for the count offset and
+  /// the transmission of four samples once a light with translucent casters was counted.
   std::size_t GraphicsMemoryBytes() const override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
   bool Draw(ShadowFrame& frame, const ShadowLight& light);
+  /// Into `target`: the counts' visibility (the light's layer), or their per-pixel offset
+  /// (PENUMBRA_COUNT_OFFSET), at every geometry pixel.
+  bool Resolve(ShadowFrame& frame, const ShadowLight& light, bool countOffset);
+  /// Takes from each counted sample's visible share what translucent casters keep from it, four
+  /// samples (one counters' word) at a time.
+  bool DrawTransmission(ShadowFrame& frame, const ShadowLight& light);
 
   /// The centre's count (R32F) and the per-sample counters (R32UI, four 8-bit counts per texel,
   /// one slice per four samples), allocated only while a light is counted.
   vtkNew<vtkTextureObject> CentreCount;
   vtkNew<vtkTextureObject> SampleCounters;
-  FullScreenTriangle::VAO ResolveVAO;
+  /// Per pixel, what makes a visible sample's counter field 0 (R32F), for the translucent
+  /// casters' resolve.
+  vtkNew<vtkTextureObject> CountOffset;
+  /// log(1 - opacity) summed over the translucent surfaces in the way of four samples (RGBA32F).
+  vtkNew<vtkTextureObject> LogTransmission;
+  FullScreenTriangle::VAO ResolveVAO, OffsetVAO, TransmissionVAO;
   int Support = -1;
   bool WarnedSamples = false;
 };

@@ -3,6 +3,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "penumbraResolveVS.h"
@@ -11,21 +12,7 @@
 namespace penumbra
 {
 
-void HardShadowTechnique::BeginTransmission(ShadowFrame& frame)
-{
-  frame.AttachClearedFloatTarget(this->LogTransmission);
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  ostate->vtkglDisable(GL_STENCIL_TEST); // the stencil keeps the opaque casters' count
-  ostate->vtkglEnable(GL_BLEND);
-  this->TransmissionDrawn = true;
-}
-
-void HardShadowTechnique::EndTransmission(ShadowFrame& frame, const ShadowLight& light)
-{
-  frame.AttachColour(frame.LightIntensity, light.Layer);
-}
-
-void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light)
+void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
   ScopedDrawState saved(ostate);
@@ -36,18 +23,28 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   ostate->vtkglDepthFunc(GL_GREATER);
   frame.DrawResolve(-share);
-  if (!this->TransmissionDrawn)
+  if (!light.ShadowedByTranslucentCasters)
   {
     return;
   }
-  this->TransmissionDrawn = false;
+  const PixelRect covered = frame.DrawTranslucentVolumes(light, k, 1, this->LogTransmission, 1);
+  if (covered.Empty())
+  {
+    return;
+  }
   vtkShaderProgram* program = frame.Programs->Ready(frame.Window, penumbraResolveVS,
     penumbraTransmissionResolveFS, "transmission resolve", "translucent casters cast no shadow");
   if (!program)
   {
     return;
   }
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+  ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilFunc(GL_EQUAL, 0, 0xFF);
+  ostate->vtkglEnable(GL_BLEND);
   this->LogTransmission->Activate();
   program->SetUniformi("logTransmission", this->LogTransmission->GetTextureUnit());
   program->SetUniformf("sampleShare", share);
@@ -67,7 +64,6 @@ void HardShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->LogTransmission->ReleaseGraphicsResources(window);
   this->TransmissionVAO.ReleaseGraphicsResources();
-  this->TransmissionDrawn = false;
 }
 
 } // namespace penumbra

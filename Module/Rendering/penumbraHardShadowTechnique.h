@@ -25,24 +25,18 @@ namespace penumbra
 class HardShadowTechnique : public ShadowTechnique
 {
 public:
-  /// Binds the log-transmission target for the translucent casters' volumes of this sample
-  /// (allocated for the viewport on first use, cleared to 0), with additive blending and the
-  /// stencil left as the opaque casters' volumes made it.
-  void BeginTransmission(ShadowFrame& frame);
-  /// Binds the light's layer again after the translucent casters' volumes.
-  void EndTransmission(ShadowFrame& frame, const ShadowLight& light);
-  /// Every geometry pixel with a non-zero stencil count is in this sample's shadow: 1/N of the
-  /// light goes. Where the count is 0 and translucent casters were drawn, 1/N of the light times
-  /// one minus their transmission goes.
-  void ResolveSample(ShadowFrame& frame, const ShadowLight& light) override;
+  /// Every geometry pixel with a non-zero stencil count is in sample k's shadow: 1/N of the
+  /// light goes. Where the count is 0, 1/N of the light times one minus the transmission of the
+  /// translucent casters' volumes of sample k, drawn then, goes.
+  void ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k) override;
   /// The log-transmission target, once a translucent caster was drawn: 4 bytes per pixel.
   std::size_t GraphicsMemoryBytes() const override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
+  /// log(1 - opacity) summed over one sample's translucent surfaces (R32F).
   vtkNew<vtkTextureObject> LogTransmission;
   FullScreenTriangle::VAO TransmissionVAO;
-  bool TransmissionDrawn = false;
 };
 
 } // namespace penumbra

@@ -31,6 +31,11 @@ std::pair<vtkLight*, int> ShadowLight::VolumeKey(std::size_t k) const
   return { this->Light, this->CountsCentreInColour() ? CentreVolume : static_cast<int>(k) };
 }
 
+const std::vector<glm::dvec4>& ShadowLight::TranslucentSamples() const
+{
+  return this->CountsCentreInColour() ? this->CountingSamples : this->Samples;
+}
+
 ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
   : State(state)
   , Blend(state, GL_BLEND)
@@ -127,18 +132,19 @@ void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
   this->Buffer->AttachColour(texture, layer);
 }
 
-void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture) const
+void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture, int components) const
 {
   if (texture->GetContext() != this->Window)
   {
     texture->SetContext(this->Window);
   }
   if (static_cast<int>(texture->GetWidth()) != this->Size[0] ||
-    static_cast<int>(texture->GetHeight()) != this->Size[1])
+    static_cast<int>(texture->GetHeight()) != this->Size[1] ||
+    texture->GetComponents() != components)
   {
     texture->SetMinificationFilter(vtkTextureObject::Nearest);
     texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    texture->Allocate2D(this->Size[0], this->Size[1], 1, VTK_FLOAT);
+    texture->Allocate2D(this->Size[0], this->Size[1], components, VTK_FLOAT);
   }
   vtkOpenGLState* ostate = this->Window->GetState();
   this->AttachColour(texture, 0);

@@ -5,15 +5,18 @@
  *
  * vtkSoftShadowPass chooses a ShadowTechnique per light (its internals' ChooseTechnique,
  * then the cost model for Automatic's soft lights) and runs every light the same way: the
- * technique brings its per-caster caches up to date (UpdateCaster), the pass draws the shadow
- * volumes of the light's samples into its layer, the technique writes each sample's count into
- * the layer (ResolveSample), and finally draws what is its own (Finish): wedges, counting,
- * plateaus. Everything a technique draws with lives in the ShadowFrame the pass fills.
+ * technique brings its per-caster caches up to date (UpdateCaster), the pass draws the opaque
+ * casters' shadow volumes of the light's samples into its layer, the technique writes each
+ * sample's count into the layer (ResolveSample), and finally draws what is its own (Finish):
+ * wedges, counting, plateaus. Translucent casters' volumes are drawn, one light sample at a
+ * time, when a technique asks for them (ShadowFrame::DrawTranslucentVolumes). Everything a
+ * technique draws with lives in the ShadowFrame the pass fills.
  */
 #ifndef penumbraShadowTechnique_h
 #define penumbraShadowTechnique_h
 
 #include "penumbraConvexClip.h"
+#include "penumbraCulling.h"
 #include "penumbraShadowCaches.h"
 
 #include "vtkNew.h"
@@ -25,6 +28,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -67,6 +71,9 @@ struct ShadowLight
   std::vector<glm::dvec4> CountingSamples;
   /// Automatic picked counting: it may still average the same samples where that is cheaper.
   bool CountingChosenAutomatically = false;
+  /// A translucent caster's shadow may reach the view (averaged and counted lights only: wedges
+  /// and plateaus leave translucent casters out).
+  bool ShadowedByTranslucentCasters = false;
 
   /// Wedges and counting count the centre's volumes in colour, not in the stencil.
   bool CountsCentreInColour() const;
@@ -74,6 +81,14 @@ struct ShadowLight
   /// centre silhouette (wedges, counting) and averaged samples never evict each other.
   std::pair<vtkLight*, int> VolumeKey(std::size_t k) const;
   static constexpr int CentreVolume = -1;
+  /// The samples whose translucent casters' volumes are drawn one at a time: the counted ones
+  /// for counting, the averaged ones otherwise. Sample k's volume is cached under
+  /// TranslucentVolumeKey(k), the averaged sample k's key.
+  const std::vector<glm::dvec4>& TranslucentSamples() const;
+  std::pair<vtkLight*, int> TranslucentVolumeKey(std::size_t k) const
+  {
+    return { this->Light, static_cast<int>(k) };
+  }
 };
 
 /// Readies the pass's shader programs. One that does not build is reported once, with what the
@@ -162,14 +177,25 @@ struct ShadowFrame
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
   TechniqueCounts Counts;
+  /// Sums log(1 - opacity) over the translucent surfaces between each pixel's point and the
+  /// light's samples first .. first + count - 1 (TranslucentSamples) into channels 0 .. count - 1
+  /// of `target`, a float target of `components` (1 or 4) channels allocated for the viewport
+  /// as needed, by drawing the volumes of the translucent casters whose shadow from those
+  /// samples may reach the view. Returns the pixels they may cover, where the target is cleared
+  /// to 0 first: it is read only there, and elsewhere the transmission is 1. Empty when none was
+  /// drawn. The light's layer is bound again after, and the stencil left as it was.
+  std::function<PixelRect(const ShadowLight& light, std::size_t first, std::size_t count,
+    vtkTextureObject* target, int components)>
+    DrawTranslucentVolumes;
 
   /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
   /// and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
-  /// Makes `texture` a float (R32F) target of the viewport's size in this window, allocating it
-  /// when it is not one yet, attaches it as AttachColour does and clears it to 0 with colour
-  /// writes on: where a technique adds counts with additive blending.
-  void AttachClearedFloatTarget(vtkTextureObject* texture) const;
+  /// Makes `texture` a float target of `components` channels (R32F, RGBA32F) and the
+  /// viewport's size in this window, allocating it when it is not one yet, attaches it as
+  /// AttachColour does and clears it to 0 (within the scissor box, when the scissor test is on)
+  /// with colour writes on: where a technique adds counts with additive blending.
+  void AttachClearedFloatTarget(vtkTextureObject* texture, int components = 1) const;
   /// Sets the uniforms every shader that reads the scene depth declares: the depth copy's
   /// texture unit (activated by the caller) and the viewport size.
   void SetDepthUniforms(vtkShaderProgram* program) const;
@@ -196,8 +222,8 @@ public:
   virtual vtkIdType UpdateCaster(const ShadowLight&, CasterCache&, const Box&) { return 0; }
   /// Prepares the light's targets before its volumes are drawn (its layer bound and cleared).
   virtual void BeginVolumes(ShadowFrame&, const ShadowLight&) {}
-  /// Writes the volume count just drawn for one sample into the layer.
-  virtual void ResolveSample(ShadowFrame& frame, const ShadowLight& light) = 0;
+  /// Writes the opaque casters' volume count just drawn for light.Samples[k] into the layer.
+  virtual void ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k) = 0;
   /// Draws the rest of the light's layer after its volumes.
   virtual void Finish(ShadowFrame&, const ShadowLight&) {}
   virtual std::size_t GraphicsMemoryBytes() const { return 0; }

@@ -25,7 +25,7 @@ vtkIdType WedgeTechnique::UpdateCaster(
   return 0; // the centre volume's update is the silhouette update
 }
 
-void WedgeTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight&)
+void WedgeTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight&, std::size_t)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
   ScopedDrawState saved(ostate);

@@ -21,7 +21,7 @@ public:
   vtkIdType UpdateCaster(
     const ShadowLight& light, CasterCache& caster, const Box& receivers) override;
   /// The centre's volume was also counted over the background: put it back to fully lit.
-  void ResolveSample(ShadowFrame& frame, const ShadowLight& light) override;
+  void ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k) override;
   /// Adds every caster's wedges into the layer, then caps it by the horizon.
   void Finish(ShadowFrame& frame, const ShadowLight& light) override;
   void ReleaseGraphicsResources(vtkWindow*) override;

@@ -225,11 +225,21 @@ public:
   vtkIdType UpdateLightCasters(const ShadowLight& light);
   /// Makes a counted light average `lightSamples` samples, the ones counting took.
   void AverageInstead(ShadowLight& light, int lightSamples);
-  /// Only averaged hard shadows multiply a sample's light by what translucent casters let
-  /// through: a counted light that one of them shadows averages instead, and wedges and
-  /// plateaus leave them out (culled for the light), each with one warning.
-  void KeepTranslucentCastersAveraged(ShadowLight& light, int lightSamples);
-  std::set<std::string> WarnedTranslucent;
+  /// Averaged and counted lights multiply each sample's light by what translucent casters let
+  /// through; wedges and plateaus leave them out (culled for the light), with one warning.
+  void SortOutTranslucentCasters(ShadowLight& light);
+  bool WarnedTranslucent = false;
+  /// The pixels where the caster's volume from `sample` can count (penumbra::ShadowScissor).
+  penumbra::PixelRect VolumeScissor(const penumbra::CasterCache& caster, const glm::dvec4& sample)
+  {
+    return penumbra::ShadowScissor(caster.WorldMin, caster.WorldMax, sample, this->SceneBox,
+      this->WorldToClip, this->Size[0], this->Size[1]);
+  }
+  /// ShadowFrame::DrawTranslucentVolumes, with the volume program; adds to the pass's counts of
+  /// volume triangles and z-fail volumes.
+  penumbra::PixelRect DrawTranslucentVolumes(const penumbra::ShadowFrame& frame,
+    const ShadowLight& light, std::size_t first, std::size_t count, vtkTextureObject* target,
+    int components, vtkShaderProgram* program, vtkIdType& triangles, vtkIdType& zFailVolumes);
   /// What the techniques draw with this frame.
   penumbra::ShadowFrame MakeFrame();
 
@@ -829,7 +839,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
         ++this->NumberOfCulledShadows;
       }
     }
-    internals.KeepTranslucentCastersAveraged(light, this->LightSamples);
+    internals.SortOutTranslucentCasters(light);
     this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     if (light.Technique == &internals.Counting && light.CountingChosenAutomatically &&
       !internals.Counting.IsCheaper(light, internals.Casters))
@@ -852,44 +862,27 @@ void vtkSoftShadowPass::vtkInternals::AverageInstead(ShadowLight& light, int lig
     penumbra::SpreadLightSamples(light.World, light.SampleRadius, lightSamples, light.SampleTarget);
 }
 
-void vtkSoftShadowPass::vtkInternals::KeepTranslucentCastersAveraged(
-  ShadowLight& light, int lightSamples)
+void vtkSoftShadowPass::vtkInternals::SortOutTranslucentCasters(ShadowLight& light)
 {
-  if (light.Technique == &this->Hard)
-  {
-    return;
-  }
-  std::vector<penumbra::CasterCache*> translucent;
+  light.ShadowedByTranslucentCasters = false;
   for (penumbra::CasterCache* caster : this->Casters)
   {
-    if (caster->Translucent() && !caster->Culled.count(light.Light))
+    if (!caster->Translucent() || caster->Culled.count(light.Light))
     {
-      translucent.push_back(caster);
+      continue;
     }
-  }
-  if (translucent.empty())
-  {
-    return;
-  }
-  if (light.Technique == &this->Counting)
-  {
-    if (!light.CountingChosenAutomatically && this->WarnedTranslucent.insert("counting").second)
+    if (light.Technique == &this->Hard || light.Technique == &this->Counting)
+    {
+      light.ShadowedByTranslucentCasters = true;
+      continue;
+    }
+    if (!this->WarnedTranslucent)
     {
       vtkWarningWithObjectMacro(this->Owner,
-        "Soft shadow volumes do not count translucent casters: a light that one of them "
-        "shadows averages its LightSamples hard shadows instead (the same samples, slower).");
+        "Penumbra wedges and plateaus leave translucent casters out: they cast no shadow. "
+        "Averaged hard shadows and soft shadow volumes shadow them by their opacity.");
+      this->WarnedTranslucent = true;
     }
-    this->AverageInstead(light, lightSamples);
-    return;
-  }
-  if (this->WarnedTranslucent.insert("wedges").second)
-  {
-    vtkWarningWithObjectMacro(this->Owner,
-      "Penumbra wedges and plateaus leave translucent casters out: they cast no shadow. "
-      "Averaged hard shadows and soft shadow volumes shadow them by their opacity.");
-  }
-  for (penumbra::CasterCache* caster : translucent)
-  {
     caster->Culled.insert(light.Light);
   }
 }
@@ -905,15 +898,28 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     }
     const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
     const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
-    // A translucent caster's count is the number of its surfaces in the way.
-    const penumbra::CountingRule rule = caster->Translucent()
-      ? penumbra::CountingRule::EveryTriangle
-      : penumbra::CountingRule::FrontFacesWhereTheySuffice;
+    if (caster->Translucent())
+    {
+      // Its count is the number of its surfaces in the way, for each sample on its own
+      // (DrawTranslucentVolumes); the technique keeps nothing else for it.
+      const std::vector<glm::dvec4>& samples = light.TranslucentSamples();
+      for (std::size_t k = 0; k < samples.size(); ++k)
+      {
+        penumbra::VolumeCache& volume = caster->Volumes[light.TranslucentVolumeKey(k)];
+        updates += volume.Update(*caster->Mesh, worldToObject * samples[k], mirrored,
+                     penumbra::CountingRule::EveryTriangle)
+          ? 1
+          : 0;
+      }
+      continue;
+    }
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
-      updates +=
-        volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored, rule) ? 1 : 0;
+      updates += volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored,
+                   penumbra::CountingRule::FrontFacesWhereTheySuffice)
+        ? 1
+        : 0;
     }
     updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBox);
   }
@@ -947,6 +953,12 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
   penumbra::ShadowFrame frame = internals.MakeFrame();
+  frame.DrawTranslucentVolumes = [&](const vtkInternals::ShadowLight& light, std::size_t first,
+                                   std::size_t count, vtkTextureObject* target, int components)
+  {
+    return internals.DrawTranslucentVolumes(frame, light, first, count, target, components,
+      volumeProgram, this->NumberOfShadowVolumeTriangles, this->NumberOfZFailVolumes);
+  };
   for (const auto& light : internals.Lights)
   {
     // Each light's volumes and technique leave the state as they found it.
@@ -978,60 +990,29 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
       }
       window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
-      std::vector<penumbra::CasterCache*> translucent;
       // Each volume only where its cone from the sample meets the scene: elsewhere it counts 0.
+      // Translucent casters' volumes are drawn when the technique asks for them.
       ostate->vtkglEnable(GL_SCISSOR_TEST);
-      auto scissor = [&](const penumbra::CasterCache& caster)
-      {
-        const penumbra::PixelRect rect =
-          penumbra::ShadowScissor(caster.WorldMin, caster.WorldMax, light.Samples[k],
-            internals.SceneBox, internals.WorldToClip, internals.Size[0], internals.Size[1]);
-        ostate->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
-        return !rect.Empty();
-      };
       for (penumbra::CasterCache* caster : internals.Casters)
       {
-        if (caster->Culled.count(light.Light))
+        if (caster->Culled.count(light.Light) || caster->Translucent())
         {
           continue;
         }
-        if (caster->Translucent())
+        const penumbra::PixelRect rect = internals.VolumeScissor(*caster, light.Samples[k]);
+        if (!rect.Empty())
         {
-          translucent.push_back(caster);
-          continue;
-        }
-        if (scissor(*caster))
-        {
+          ostate->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
           this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
             light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
             countInColour, 1.0f, this->NumberOfZFailVolumes);
         }
       }
-      if (!translucent.empty())
-      {
-        // Only averaged lights keep translucent casters (KeepTranslucentCastersAveraged): each
-        // crossing of one's volume adds log(1 - opacity) to the sample's log transmission, in
-        // colour, while the stencil keeps the opaque casters' count.
-        ostate->vtkglDisable(GL_SCISSOR_TEST); // the target is cleared whole
-        internals.Hard.BeginTransmission(frame);
-        ostate->vtkglEnable(GL_SCISSOR_TEST);
-        window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
-        for (penumbra::CasterCache* caster : translucent)
-        {
-          if (scissor(*caster))
-          {
-            this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-              light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
-              true, static_cast<float>(-std::log1p(-caster->Opacity)), this->NumberOfZFailVolumes);
-          }
-        }
-        internals.Hard.EndTransmission(frame, light);
-      }
       ostate->vtkglDisable(GL_SCISSOR_TEST);
 
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
-      light.Technique->ResolveSample(frame, light);
+      light.Technique->ResolveSample(frame, light, k);
       ostate->vtkglDisable(GL_DEPTH_CLAMP);
     }
     internals.StageTimes.End(penumbra::StageTimes::Volumes);
@@ -1131,6 +1112,71 @@ vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
   return drawn;
 }
 } // namespace
+
+penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
+  const penumbra::ShadowFrame& frame, const ShadowLight& light, std::size_t first,
+  std::size_t count, vtkTextureObject* target, int components, vtkShaderProgram* program,
+  vtkIdType& triangles, vtkIdType& zFailVolumes)
+{
+  struct Volume
+  {
+    penumbra::CasterCache* Caster;
+    std::size_t Sample;
+    penumbra::PixelRect Rect;
+  };
+  std::vector<Volume> volumes;
+  penumbra::PixelRect covered;
+  for (std::size_t k = first; k < first + count; ++k)
+  {
+    for (penumbra::CasterCache* caster : this->Casters)
+    {
+      if (caster->Translucent() && !caster->Culled.count(light.Light))
+      {
+        const penumbra::PixelRect rect =
+          this->VolumeScissor(*caster, light.TranslucentSamples()[k]);
+        if (!rect.Empty())
+        {
+          volumes.push_back({ caster, k, rect });
+          covered = covered.United(rect);
+        }
+      }
+    }
+  }
+  if (volumes.empty())
+  {
+    return covered;
+  }
+  vtkOpenGLState* ostate = this->Window->GetState();
+  penumbra::ScopedDrawState saved(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+  frame.AttachClearedFloatTarget(target, components);
+  // Each crossing adds log(1 - opacity) to its sample's channel; the stencil keeps what the
+  // opaque casters' volumes or the counting made of it.
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  this->Window->GetShaderCache()->ReadyShaderProgram(program);
+  for (const Volume& volume : volumes)
+  {
+    const int channel = static_cast<int>(volume.Sample - first);
+    ostate->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
+    ostate->vtkglScissor(volume.Rect.X0, volume.Rect.Y0, volume.Rect.X1 - volume.Rect.X0,
+      volume.Rect.Y1 - volume.Rect.Y0);
+    triangles +=
+      DrawShadowVolume(ostate, program, *volume.Caster, light.TranslucentVolumeKey(volume.Sample),
+        light.TranslucentSamples()[volume.Sample], this->WorldToClip, this->NearCorners, true,
+        static_cast<float>(-std::log1p(-volume.Caster->Opacity)), zFailVolumes);
+  }
+  frame.AttachColour(frame.LightIntensity, light.Layer);
+  return covered;
+}
 
 penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
 {

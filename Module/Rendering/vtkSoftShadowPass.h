@@ -31,8 +31,8 @@
  * store keys in the prop's property keys. A light's size is a key in its information
  * (SetLightRadius): world units for positional lights, angular radius in degrees for directional
  * ones. Translucent actors cast by their opacity: each of their surfaces between a point and a
- * light sample lets 1 - opacity of it through (hard and averaged shadows; soft shadow volumes
- * average a light that one shadows, and wedges and plateaus leave them out, with a warning).
+ * light sample lets 1 - opacity of it through (hard, averaged and counted shadows; wedges and
+ * plateaus leave them out, with a warning).
  * They receive nothing: their fragments are drawn unshadowed over the shadowed surface behind.
  *
  * It also works as a delegate inside a vtkCameraPass / vtkSequencePass chain: set its delegate

@@ -186,6 +186,10 @@ void TestShadowScissor(std::mt19937& rng)
   Check(penumbra::ShadowScissor({ -1, -1, -1 }, { 1, 1, 1 }, { 0, 0, 0, 1 }, far, toClip, 320,
           240) == penumbra::PixelRect{ 0, 0, 320, 240 },
     "a light inside the caster's box: the whole viewport");
+  const penumbra::PixelRect a{ 10, 20, 30, 40 }, b{ 25, 5, 50, 35 }, none{ 5, 5, 5, 90 };
+  Check(a.United(b) == penumbra::PixelRect{ 10, 5, 50, 40 } && a.United(none) == a &&
+      none.United(b) == b && none.United(none).Empty(),
+    "united rectangles hold both, and an empty one adds nothing");
 }
 
 /// TightClippingRange: every point of random boxes, seen by random cameras, lies within the

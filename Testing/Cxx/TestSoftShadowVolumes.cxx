@@ -42,10 +42,7 @@ struct Scene
 
 std::vector<float> Visibility(vtkSoftShadowPass* pass)
 {
-  auto values =
-    vtkFloatArray::SafeDownCast(pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  return std::vector<float>(
-    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  return ImageValues(pass->GetVisibilityImage(0));
 }
 
 /// A scene in its window, with its light and a pass of `Samples` light samples.
@@ -68,38 +65,6 @@ struct SceneWindow : PassScene
     this->Pass->SetLightSamples(Samples);
   }
 };
-
-/// Of the pixels either image shadows (`Shadowed`), the shares where counting and averaging
-/// differ by more than 1/N and by more than one half.
-struct Agreement
-{
-  int Shadowed = 0;
-  double Step = 1.0;
-  double Half = 1.0;
-};
-
-Agreement Compare(const std::vector<float>& averaged, const std::vector<float>& counted)
-{
-  Agreement agreement;
-  int offStep = 0, offHalf = 0;
-  for (std::size_t i = 0; i < averaged.size(); ++i)
-  {
-    if (!(averaged[i] < 1.0f || counted[i] < 1.0f))
-    {
-      continue;
-    }
-    ++agreement.Shadowed;
-    const float difference = std::abs(averaged[i] - counted[i]);
-    offStep += difference > 1.0f / Samples + 1e-4f;
-    offHalf += difference > 0.5f;
-  }
-  if (agreement.Shadowed)
-  {
-    agreement.Step = double(offStep) / agreement.Shadowed;
-    agreement.Half = double(offHalf) / agreement.Shadowed;
-  }
-  return agreement;
-}
 
 /// What a scene is held to: the shares of shadowed pixels where counting may differ from
 /// averaging by more than 1/N and by more than one half, with or without the tight depth range.
@@ -139,7 +104,7 @@ void RunScene(const Scene& scene, const Limits& limits)
   auto trueValues =
     vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
 
-  const Agreement agreement = Compare(averaged, counted);
+  const SampleAgreement agreement = CompareSampledVisibility(averaged, counted, Samples);
   const int shadowed = agreement.Shadowed;
   const double step = agreement.Step, half = agreement.Half;
   double errorAveraged = 0.0, errorCounted = 0.0;
@@ -262,7 +227,7 @@ void TestReceiversBox()
     const vtkIdType before = pass->GetNumberOfSilhouetteUpdates(); // counts every rebuild
     view.Window->Render(); // changes nothing the first did not
     const vtkIdType updates = pass->GetNumberOfSilhouetteUpdates() - before;
-    const Agreement agreement = Compare(averaged, Visibility(pass));
+    const SampleAgreement agreement = CompareSampledVisibility(averaged, Visibility(pass), Samples);
     const int shadowed = agreement.Shadowed;
     const double off = agreement.Step;
     std::printf("ground lowered by %.1f: shadowed %d px, counting differs from averaging by more "

@@ -168,6 +168,48 @@ struct WarningLog
   }
 };
 
+/// The values of a float image (a visibility or depth image), in VTK's point order.
+inline std::vector<float> ImageValues(vtkImageData* image)
+{
+  auto values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  return std::vector<float>(
+    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+}
+
+/// Of the pixels either of two visibility images shadows (`Shadowed`), the shares where they
+/// differ by more than 1/N and by more than one half: how two methods that sample a light at
+/// the same N points are held to each other.
+struct SampleAgreement
+{
+  int Shadowed = 0;
+  double Step = 1.0;
+  double Half = 1.0;
+};
+
+inline SampleAgreement CompareSampledVisibility(
+  const std::vector<float>& a, const std::vector<float>& b, int samples)
+{
+  SampleAgreement agreement;
+  int offStep = 0, offHalf = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    if (!(a[i] < 1.0f || b[i] < 1.0f))
+    {
+      continue;
+    }
+    ++agreement.Shadowed;
+    const float difference = std::abs(a[i] - b[i]);
+    offStep += difference > 1.0f / samples + 1e-4f;
+    offHalf += difference > 0.5f;
+  }
+  if (agreement.Shadowed)
+  {
+    agreement.Step = double(offStep) / agreement.Shadowed;
+    agreement.Half = double(offHalf) / agreement.Shadowed;
+  }
+  return agreement;
+}
+
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
 struct Comparison
 {

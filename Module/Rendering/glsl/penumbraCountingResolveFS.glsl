@@ -8,6 +8,10 @@
 // A depth complexity cannot be negative. Where one is (8-bit fields read as signed, so counts
 // of 128 and more overflow), the rasterized centre count missed a crossing that the edge terms,
 // taken at the pixel's centre, assume: the counts are shifted up until the smallest is 0.
+//
+// With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
+// makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
+// translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads one sample at a time.
 uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler3D counters;
 uniform int useCounters;
@@ -18,7 +22,11 @@ void main()
   int centre = int(round(-texelFetch(centreCount, pixel, 0).r));
   if (useCounters == 0)
   {
+#ifdef PENUMBRA_COUNT_OFFSET
+    gl_FragData[0] = vec4(float(centre)); // the counters hold 0: visible where the centre is 0
+#else
     gl_FragData[0] = vec4(centre == 0 ? 1.0 : 0.0);
+#endif
     return;
   }
   uint offset = uint(centre) * 0x01010101u;
@@ -39,5 +47,9 @@ void main()
       visible += count == lowest ? 1 : 0;
     }
   }
+#ifdef PENUMBRA_COUNT_OFFSET
+  gl_FragData[0] = vec4(float(centre - lowest));
+#else
   gl_FragData[0] = vec4(float(visible) / float(PENUMBRA_SAMPLE_COUNT));
+#endif
 }
