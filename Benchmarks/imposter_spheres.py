@@ -8,9 +8,7 @@ camera turning 2 degrees a frame.
         /usr/bin/python3 Benchmarks/imposter_spheres.py [N]
 """
 import math
-import statistics
 import sys
-import time
 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints
@@ -21,6 +19,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, 
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper
 
 import penumbra
+from frame_timing import median_frame_ms
 
 
 def atoms(count):
@@ -74,14 +73,7 @@ def main():
     camera.SetFocalPoint(0, 0.6, 0)
 
     def frames(n):
-        times = []
-        for _ in range(n):
-            camera.Azimuth(2)
-            renderer.ResetCameraClippingRange()
-            start = time.perf_counter()
-            window.Render()
-            times.append(1e3 * (time.perf_counter() - start))
-        return statistics.median(times)
+        return median_frame_ms(window, renderer, n, 2)
 
     frames(2)
     none = frames(5)

@@ -9,17 +9,14 @@ a frame.
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
         /usr/bin/python3 Benchmarks/translucent_casters.py
 """
-import statistics
-import time
-
 import numpy
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
 import penumbra
+from frame_timing import median_frame_ms
 
 WIDTH, HEIGHT = 1024, 768
 
@@ -64,13 +61,7 @@ def main():
     sheet.SetPosition(0.3, 2.0, -1.4)
     glass = [actor(sphere((-1.0, 1.4, 0.0), 0.6), renderer), sheet,
              actor(sphere((2.2, 0.3, -0.4), 0.25), renderer)]
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetConeAngle(180)
-    light.SetPosition(-2, 6, 3)
-    light.SetFocalPoint(0, 0, 0)
-    renderer.AddLight(light)
+    light = penumbra.add_light(renderer, (-2, 6, 3), radius=0.4)
     window = vtkRenderWindow()
     window.SetSize(WIDTH, HEIGHT)
     window.SetMultiSamples(0)
@@ -81,22 +72,12 @@ def main():
     renderer.ResetCameraClippingRange()
 
     def frames(n):
-        times = []
-        for _ in range(n):
-            camera.Azimuth(1)
-            renderer.ResetCameraClippingRange()
-            start = time.perf_counter()
-            window.Render()
-            times.append(1e3 * (time.perf_counter() - start))
-        camera.Azimuth(-n)
-        renderer.ResetCameraClippingRange()
-        return statistics.median(times)
+        return median_frame_ms(window, renderer, n, 1, turn_back=True)
 
     frames(2)
     none = frames(5)
     shadows = penumbra.vtkSoftShadowPass()
     renderer.SetPass(shadows)
-    penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.4)
 
     def visibility():
         window.Render()
