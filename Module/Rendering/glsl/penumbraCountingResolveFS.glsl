@@ -8,6 +8,9 @@
 // A depth complexity cannot be negative. Where one is (8-bit fields read as signed, so counts
 // of 128 and more overflow), the rasterized centre count missed a crossing that the edge terms,
 // taken at the pixel's centre, assume: the counts are shifted up until the smallest is 0.
+// The fields are decoded with 128 added to each beside the centre count: a field whose sum is
+// negative borrows from the next one in the packed word, and the bias keeps every field's sum
+// in [0, 255], where none borrows.
 //
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
@@ -29,7 +32,7 @@ void main()
 #endif
     return;
   }
-  uint offset = uint(centre) * 0x01010101u;
+  uint offset = uint(centre + 128) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
   int visible = 0; // samples whose count equals it
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
@@ -37,8 +40,7 @@ void main()
     uint counts = texelFetch(counters, ivec3(pixel, word), 0).r + offset;
     for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
     {
-      int count = int((counts >> uint(8 * field)) & 0xFFu);
-      count = count > 127 ? count - 256 : count;
+      int count = int((counts >> uint(8 * field)) & 0xFFu) - 128;
       if (count < lowest)
       {
         lowest = count;
