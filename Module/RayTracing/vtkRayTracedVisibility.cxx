@@ -1,6 +1,5 @@
 #include "vtkRayTracedVisibility.h"
 
-#include "penumbraCasterTopology.h"
 #include "vtkSoftShadowPass.h"
 
 #include "vtkActor.h"
@@ -9,6 +8,7 @@
 #include "vtkAssemblyPath.h"
 #include "vtkBitArray.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
@@ -42,6 +42,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
 
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
@@ -500,22 +501,50 @@ void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, do
     surface->Update();
     poly = surface->GetOutput();
   }
-  // Triangulated in the data's own frame, then moved: the topology keeps its precision there.
-  penumbra::CasterTopology topology = penumbra::CasterTopology::Build(poly);
-  if (topology.Empty())
+  // VTK's own triangulation of polygons and strips, not the pass's (penumbra::CasterTopology),
+  // so that a mistake in either shows against the other. Lines and vertices cast nothing.
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(poly);
+  triangulate->PassLinesOff();
+  triangulate->PassVertsOff();
+  triangulate->Update();
+  vtkPolyData* triangles = triangulate->GetOutput();
+  vtkPoints* points = triangles->GetPoints();
+  if (!points || triangles->GetNumberOfPolys() == 0)
   {
     return;
   }
   Mesh mesh;
   mesh.Casts = casts;
   mesh.Opacity = opacity;
-  mesh.Triangles = std::move(topology.Triangles);
-  mesh.Points.reserve(topology.Points.size());
-  for (const glm::dvec3& point : topology.Points)
+  mesh.Points.reserve(static_cast<std::size_t>(points->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
   {
-    mesh.Points.push_back(Project(matrix, topology.Origin + point));
+    double p[3];
+    points->GetPoint(i, p);
+    mesh.Points.push_back(Project(matrix, glm::dvec3(p[0], p[1], p[2])));
   }
-  meshes.push_back(std::move(mesh));
+  auto finite = [&](vtkIdType i)
+  {
+    const glm::dvec3& p = mesh.Points[static_cast<std::size_t>(i)];
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  };
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = triangles->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    // A corner that is not finite: VTK draws nothing there that a ray could meet.
+    if (count == 3 && finite(ids[0]) && finite(ids[1]) && finite(ids[2]))
+    {
+      mesh.Triangles.emplace_back(static_cast<unsigned int>(ids[0]),
+        static_cast<unsigned int>(ids[1]), static_cast<unsigned int>(ids[2]));
+    }
+  }
+  if (!mesh.Triangles.empty())
+  {
+    meshes.push_back(std::move(mesh));
+  }
 }
 
 /// Reads the name of the array of radii a vtkOpenGLSphereMapper reads (it has no getter), the
