@@ -1,7 +1,8 @@
 // Translucent casters: each of their surfaces between a point and a light sample lets
 // 1 - opacity of that sample through, in the pass (averaged and hard shadows) as in the ray
 // tracer's transmission. A closed sphere of opacity a lets (1 - a)^2 through, a single sheet
-// 1 - a; a translucent caster in an opaque one's shadow changes nothing there.
+// 1 - a; a translucent caster in an opaque one's shadow changes nothing there. Translucent
+// surfaces receive nothing: they are drawn lit over the shadowed surface behind them.
 //
 // Tolerances: with a point light (hard shadows) at most 0.2% of the compared pixels differ from
 // the truth by more than 0.02 away from shadow boundaries (the truth's own 1-pixel boundary
@@ -13,6 +14,7 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <glm/glm.hpp>
 
@@ -155,6 +157,101 @@ void TestSeenThroughCaster()
   Check(agreement.Off <= agreement.Compared / 500, "a shadow seen through its caster is right");
 }
 
+/// The colours of the window's last frame, 3 bytes a pixel, row 0 at the bottom.
+std::vector<unsigned char> Colours(vtkRenderWindow* window)
+{
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(0, 0, Width - 1, Height - 1, 0, rgb);
+  return std::vector<unsigned char>(
+    rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+}
+
+/// Translucent surfaces receive nothing: a translucent sheet above the box's shadow on the
+/// ground is drawn lit, blended over the shadowed ground. The sheet is a translucent block of a
+/// composite actor whose other block is opaque (a small cube away from it), so that the actor
+/// is a receiver and its translucent fragments are drawn with the shadows switched off. The
+/// sheet's colour over the shadow is what it adds alone over a black background plus (1 - a)
+/// times the ground without it, within 3 of 255 in each channel on 99% of its inner pixels
+/// there; a sheet that read the ground's visibility would be darker by a times its own colour
+/// times the shadow's depth.
+void TestTranslucentReceivesNothing()
+{
+  PassScene scene(Width, Height);
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.Pass->SetMethodToHardVolumes();
+  vtkActor* ground = scene.Ground();
+  vtkActor* box = scene.Box(1.3, 0.6, 0.2, 0.8, 1.2, 0.8);
+  auto sheetSource = GroundSource(1.0);
+  sheetSource->SetCenter(2.6, 2.5, 3.6);
+  auto cubeSource = BoxSource(-3.0, 0.1, -3.0, 0.2, 0.2, 0.2);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (vtkPolyDataAlgorithm* source : { static_cast<vtkPolyDataAlgorithm*>(sheetSource),
+         static_cast<vtkPolyDataAlgorithm*>(cubeSource) })
+  {
+    source->Update();
+    blocks->SetBlock(blocks->GetNumberOfBlocks(), source->GetOutputDataObject(0));
+  }
+  vtkNew<vtkCompositePolyDataMapper2> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  attributes->SetBlockOpacity(blocks->GetBlock(0), 0.5);
+  mapper->SetCompositeDataDisplayAttributes(attributes);
+  vtkNew<vtkActor> sheet;
+  sheet->SetMapper(mapper);
+  sheet->GetProperty()->SetColor(0.9, 0.9, 0.3);
+  scene.Renderer->AddActor(sheet);
+  vtkSoftShadowPass::SetCastsShadows(sheet, false);
+  scene.Camera(3.0, 5.0, 8.0, 0.0, 0.5, 0.0);
+
+  scene.Window->Render();
+  const std::vector<unsigned char> blended = Colours(scene.Window);
+  sheet->VisibilityOff();
+  scene.Window->Render();
+  const std::vector<unsigned char> behind = Colours(scene.Window);
+  const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
+  sheet->VisibilityOn();
+  ground->VisibilityOff();
+  box->VisibilityOff();
+  scene.Window->Render();
+  const std::vector<unsigned char> alone = Colours(scene.Window);
+
+  int compared = 0, off = 0;
+  double darkest = 1.0;
+  for (int y = 1; y + 1 < Height; ++y)
+  {
+    for (int x = 1; x + 1 < Width; ++x)
+    {
+      const int i = y * Width + x;
+      bool inner = visibility[i] < 0.5f;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          inner = inner && alone[3 * (i + dy * Width + dx)] > 0; // the sheet covers it
+        }
+      }
+      if (!inner)
+      {
+        continue;
+      }
+      ++compared;
+      darkest = std::min(darkest, double(visibility[i]));
+      bool differs = false;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = alone[3 * i + c] + 0.5 * behind[3 * i + c];
+        differs = differs || std::abs(blended[3 * i + c] - expected) > 3.0;
+      }
+      off += differs;
+    }
+  }
+  std::printf("translucent sheet over the shadow: %d px (visibility down to %.2f), %d differ "
+              "from the sheet alone blended over the ground\n",
+    compared, darkest, off);
+  Check(compared > 500, "the sheet is seen over the box's shadow");
+  Check(off <= compared / 100, "a translucent surface is drawn unshadowed over the shadow");
+}
+
 /// Opacity as VTK draws it: a block's opacity replaces its actor's (vtkCompositePolyDataMapper2:
 /// a block of 0.5 under an actor of 0.5 is drawn at 0.5, not 0.25), and ForceOpaque draws a
 /// translucent actor opaque, with a full shadow.
@@ -257,6 +354,7 @@ int main()
 {
   TestHardShadows();
   TestSeenThroughCaster();
+  TestTranslucentReceivesNothing();
   TestOpacityAsVTKDrawsIt();
   TestSoftShadows();
   return penumbra_test::Finish();
