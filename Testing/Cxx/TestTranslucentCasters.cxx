@@ -1,8 +1,8 @@
 // Translucent casters: each of their surfaces between a point and a light sample lets
-// 1 - opacity of that sample through, in the pass (averaged and hard shadows) as in the ray
-// tracer's transmission. A closed sphere of opacity a lets (1 - a)^2 through, a single sheet
-// 1 - a; a translucent caster in an opaque one's shadow changes nothing there. Translucent
-// surfaces receive nothing: they are drawn lit over the shadowed surface behind them.
+// 1 - opacity of that sample through, in the pass (hard, averaged and counted shadows) as in
+// the ray tracer's transmission. A closed sphere of opacity a lets (1 - a)^2 through, a single
+// sheet 1 - a; a translucent caster in an opaque one's shadow changes nothing there.
+// Translucent surfaces receive nothing: they are drawn lit over the shadowed surface behind.
 //
 // Tolerances: with a point light (hard shadows) at most 0.2% of the compared pixels differ from
 // the truth by more than 0.02 away from shadow boundaries (the truth's own 1-pixel boundary
