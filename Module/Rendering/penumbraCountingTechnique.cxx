@@ -257,6 +257,8 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   }
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST); // every geometry pixel
   if (countOffset)
   {
     frame.AttachClearedFloatTarget(this->CountOffset);
@@ -295,10 +297,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
 
 bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& light)
 {
-  if (!this->Resolve(frame, light, true))
-  {
-    return false;
-  }
+  bool offsetResolved = false;
   vtkOpenGLRenderWindow* window = frame.Window;
   const float share = 1.0f / static_cast<float>(light.CountingSamples.size());
   vtkOpenGLState* ostate = window->GetState();
@@ -314,6 +313,11 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
     if (covered.Empty())
     {
       continue;
+    }
+    // Once a translucent volume reaches the view; it leaves the transmission target alone.
+    if (!offsetResolved && !(offsetResolved = this->Resolve(frame, light, true)))
+    {
+      return false;
     }
     vtkShaderProgram* program =
       frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingTransmissionFS,
@@ -349,14 +353,8 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
 
 std::size_t CountingTechnique::GraphicsMemoryBytes() const
 {
-  if (!this->CentreCount->GetHandle())
-  {
-    return 0;
-  }
-  const std::size_t pixels =
-    static_cast<std::size_t>(this->CentreCount->GetWidth()) * this->CentreCount->GetHeight();
-  const std::size_t transmission = this->CountOffset->GetHandle() ? 4 + 16 : 0;
-  return pixels * ((1 + this->SampleCounters->GetDepth()) * 4 + transmission);
+  return TextureBytes(this->CentreCount) + TextureBytes(this->SampleCounters) +
+    TextureBytes(this->CountOffset) + TextureBytes(this->LogTransmission);
 }
 
 void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)

@@ -54,10 +54,7 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
 
 std::size_t HardShadowTechnique::GraphicsMemoryBytes() const
 {
-  return this->LogTransmission->GetHandle()
-    ? static_cast<std::size_t>(this->LogTransmission->GetWidth()) *
-      this->LogTransmission->GetHeight() * 4
-    : 0;
+  return TextureBytes(this->LogTransmission);
 }
 
 void HardShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)

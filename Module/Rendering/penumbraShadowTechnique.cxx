@@ -18,6 +18,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace penumbra
 {
 
@@ -34,6 +36,16 @@ std::pair<vtkLight*, int> ShadowLight::VolumeKey(std::size_t k) const
 const std::vector<glm::dvec4>& ShadowLight::TranslucentSamples() const
 {
   return this->CountsCentreInColour() ? this->CountingSamples : this->Samples;
+}
+
+std::size_t TextureBytes(vtkTextureObject* texture)
+{
+  if (!texture->GetHandle())
+  {
+    return 0;
+  }
+  return static_cast<std::size_t>(texture->GetWidth()) * texture->GetHeight() *
+    std::max(1u, texture->GetDepth()) * static_cast<std::size_t>(texture->GetComponents()) * 4;
 }
 
 ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)

@@ -91,6 +91,9 @@ struct ShadowLight
   }
 };
 
+/// Bytes a texture of 32-bit components holds on the GPU (0 before it is allocated).
+std::size_t TextureBytes(vtkTextureObject* texture);
+
 /// Readies the pass's shader programs. One that does not build is reported once, with what the
 /// pass does instead, and nullptr returned.
 class ShaderPrograms

@@ -220,10 +220,14 @@ public:
   /// Fills the light's samples (the light itself, or LightSamples points on it when the method
   /// averages) and its wedge settings, from the pass's method and the light's radius.
   void ChooseTechnique(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
-  /// Brings every caster's volumes and the technique's caches for `light` up to date; returns
-  /// the silhouette updates it made.
+  /// Brings every opaque caster's volumes and the technique's caches for `light` up to date;
+  /// returns the silhouette updates it made.
   vtkIdType UpdateLightCasters(const ShadowLight& light);
-  /// Makes a counted light average `lightSamples` samples, the ones counting took.
+  /// The same for the translucent casters' volumes, one per sample (TranslucentSamples), once
+  /// the light's technique and samples are final.
+  vtkIdType UpdateTranslucentVolumes(const ShadowLight& light);
+  /// Makes a counted light average `lightSamples` samples: the counted ones, unless counting
+  /// clamped them to its maximum.
   void AverageInstead(ShadowLight& light, int lightSamples);
   /// Averaged and counted lights multiply each sample's light by what translucent casters let
   /// through; wedges and plateaus leave them out (culled for the light), with one warning.
@@ -852,6 +856,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     {
       internals.Counting.PrepareWedges(light, internals.Casters);
     }
+    // Once the samples are final: Automatic may have traded counting's for averaging's.
+    this->NumberOfSilhouetteUpdates += internals.UpdateTranslucentVolumes(light);
   }
 }
 
@@ -896,23 +902,12 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     {
       continue;
     }
-    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
     if (caster->Translucent())
     {
-      // Its count is the number of its surfaces in the way, for each sample on its own
-      // (DrawTranslucentVolumes); the technique keeps nothing else for it.
-      const std::vector<glm::dvec4>& samples = light.TranslucentSamples();
-      for (std::size_t k = 0; k < samples.size(); ++k)
-      {
-        penumbra::VolumeCache& volume = caster->Volumes[light.TranslucentVolumeKey(k)];
-        updates += volume.Update(*caster->Mesh, worldToObject * samples[k], mirrored,
-                     penumbra::CountingRule::EveryTriangle)
-          ? 1
-          : 0;
-      }
-      continue;
+      continue; // UpdateTranslucentVolumes
     }
+    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
@@ -922,6 +917,32 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
         : 0;
     }
     updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBox);
+  }
+  return updates;
+}
+
+vtkIdType vtkSoftShadowPass::vtkInternals::UpdateTranslucentVolumes(const ShadowLight& light)
+{
+  vtkIdType updates = 0;
+  for (penumbra::CasterCache* caster : this->Casters)
+  {
+    if (!caster->Translucent() || caster->Culled.count(light.Light))
+    {
+      continue;
+    }
+    // Its count is the number of its surfaces in the way, for each sample on its own
+    // (DrawTranslucentVolumes); the technique keeps nothing else for it.
+    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
+    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
+    const std::vector<glm::dvec4>& samples = light.TranslucentSamples();
+    for (std::size_t k = 0; k < samples.size(); ++k)
+    {
+      penumbra::VolumeCache& volume = caster->Volumes[light.TranslucentVolumeKey(k)];
+      updates += volume.Update(*caster->Mesh, worldToObject * samples[k], mirrored,
+                   penumbra::CountingRule::EveryTriangle)
+        ? 1
+        : 0;
+    }
   }
   return updates;
 }
@@ -1154,6 +1175,7 @@ penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
   frame.AttachClearedFloatTarget(target, components);
+  ostate->vtkglDisable(GL_DEPTH_CLAMP); // as for the opaque volumes: z-fail turns it on itself
   // Each crossing adds log(1 - opacity) to its sample's channel; the stencil keeps what the
   // opaque casters' volumes or the counting made of it.
   ostate->vtkglDisable(GL_STENCIL_TEST);

@@ -111,8 +111,10 @@ public:
     /// of the light's centre plus, in one wedge per potential silhouette edge, each edge's change
     /// of the count of every one of LightSamples points on the light, as seen from the pixel.
     /// The same answer as averaging those samples' hard shadows, for any mesh, in one volume
-    /// pass and one wedge pass. Needs OpenGL 4.4 (or image load/store and clear_texture); at most
-    /// 256 samples; a sample's count is kept in 8 bits (256 layers overflow).
+    /// pass and one wedge pass for the opaque casters; translucent casters' volumes are drawn
+    /// for every sample, as averaging draws them. Needs OpenGL 4.4 (or image load/store and
+    /// clear_texture); at most 256 samples; a sample's count is kept in 8 bits, read as signed
+    /// (128 layers overflow).
     METHOD_SOFT_SHADOW_VOLUMES = 5
   };
 
@@ -247,9 +249,10 @@ public:
   /// Silhouette updates done so far (a static scene under an orbiting camera adds none).
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
-  /// and stencil, depth copy, one light-intensity layer per light, and for soft shadow volumes
-  /// the centre count and one byte per pixel and light sample) and the casters' vertex, index
-  /// and wedge buffers.
+  /// and stencil, depth copy, one light-intensity layer per light, for soft shadow volumes the
+  /// centre count and one byte per pixel and light sample, and the translucent casters'
+  /// transmission targets once one was drawn) and the casters' vertex, index and wedge
+  /// buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
   /// The stages of a frame, for GetStageCPUMilliseconds and GetStageGPUMilliseconds.

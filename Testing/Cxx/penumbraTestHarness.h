@@ -178,19 +178,21 @@ inline std::vector<float> ImageValues(vtkImageData* image)
 
 /// Of the pixels either of two visibility images shadows (`Shadowed`), the shares where they
 /// differ by more than 1/N and by more than one half: how two methods that sample a light at
-/// the same N points are held to each other.
+/// the same N points are held to each other; and the share where they differ at all (by more
+/// than 1e-3), which a pixel-boundary flip of one sample does too.
 struct SampleAgreement
 {
   int Shadowed = 0;
   double Step = 1.0;
   double Half = 1.0;
+  double Any = 1.0;
 };
 
 inline SampleAgreement CompareSampledVisibility(
   const std::vector<float>& a, const std::vector<float>& b, int samples)
 {
   SampleAgreement agreement;
-  int offStep = 0, offHalf = 0;
+  int offStep = 0, offHalf = 0, offAny = 0;
   for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
   {
     if (!(a[i] < 1.0f || b[i] < 1.0f))
@@ -201,11 +203,13 @@ inline SampleAgreement CompareSampledVisibility(
     const float difference = std::abs(a[i] - b[i]);
     offStep += difference > 1.0f / samples + 1e-4f;
     offHalf += difference > 0.5f;
+    offAny += difference > 1e-3f;
   }
   if (agreement.Shadowed)
   {
     agreement.Step = double(offStep) / agreement.Shadowed;
     agreement.Half = double(offHalf) / agreement.Shadowed;
+    agreement.Any = double(offAny) / agreement.Shadowed;
   }
   return agreement;
 }
