@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -205,6 +206,9 @@ struct SceneActors
   std::string Name;
   std::vector<vtkSmartPointer<vtkActor>> Actors;
   vtkIdType Triangles = 0;
+  /// For data that changes as a simulation played back: puts the data of frame `frame` in
+  /// place (frame 0 is the data as built). Empty for a static scene.
+  std::function<void(int frame)> Advance;
 
   void Add(vtkSmartPointer<vtkActor> actor)
   {
