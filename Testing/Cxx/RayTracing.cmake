@@ -4,8 +4,7 @@
 add_executable(TestRayTracedVisibility TestRayTracedVisibility.cxx)
 target_link_libraries(TestRayTracedVisibility
   PRIVATE
-    Penumbra::Rendering Penumbra::RayTracing
-    X11::X11
+    penumbra_test_harness
     Penumbra::Geometry
     VTK::CommonCore
     VTK::CommonDataModel

@@ -101,26 +101,13 @@ void RunScene(const Scene& scene, const Limits& limits)
   truth->SetRenderer(renderer);
   truth->SetSamplesPerLight(256);
   Check(truth->Update(), scene.Name + ": ray tracer ran");
-  auto trueValues =
-    vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
 
   const SampleAgreement agreement = CompareSampledVisibility(averaged, counted, Samples);
   const int shadowed = agreement.Shadowed;
   const double step = agreement.Step, half = agreement.Half;
-  double errorAveraged = 0.0, errorCounted = 0.0;
-  int truthPixels = 0;
-  for (std::size_t i = 0; i < averaged.size(); ++i)
-  {
-    const float t = trueValues->GetValue(static_cast<vtkIdType>(i));
-    if (averaged[i] < 1.0f || counted[i] < 1.0f || t < 1.0f)
-    {
-      ++truthPixels;
-      errorAveraged += std::abs(averaged[i] - t);
-      errorCounted += std::abs(counted[i] - t);
-    }
-  }
-  const double maeAveraged = truthPixels ? errorAveraged / truthPixels : 1.0;
-  const double maeCounted = truthPixels ? errorCounted / truthPixels : 1.0;
+  const std::vector<float> zbuffer = WindowDepth(window, renderer);
+  const double maeAveraged = VisibilityError(averaged, truth, 0, zbuffer).MAE;
+  const double maeCounted = VisibilityError(counted, truth, 0, zbuffer).MAE;
   std::printf("%-12s %-34s shadowed %6d px, differ > 1/N %.2f%%, > 0.5 %.2f%%; MAE vs truth: "
               "averaged %.4f, counted %.4f\n",
     limits.TightDepthRange ? "tight range" : "VTK's range", scene.Name.c_str(), shadowed,

@@ -74,15 +74,13 @@ Agreement CompareTruth(GlassScene& scene, int rays, float tolerance)
   }
   const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(0));
   const std::vector<float> depth = ImageValues(truth->GetDepthImage());
-  std::vector<float> zbuffer(static_cast<std::size_t>(Width) * Height);
-  scene.Window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
-  double error = 0.0;
+  const std::vector<float> zbuffer = WindowDepth(scene.Window, scene.Renderer);
   for (int y = 1; y + 1 < Height; ++y)
   {
     for (int x = 1; x + 1 < Width; ++x)
     {
       const int i = y * Width + x;
-      if (depth[i] >= 1.0f || std::abs(depth[i] - zbuffer[i]) > 1e-3f)
+      if (!penumbra::metrics::SameSurface(depth[i], zbuffer[i], 1e-3f))
       {
         continue;
       }
@@ -96,12 +94,11 @@ Agreement CompareTruth(GlassScene& scene, int rays, float tolerance)
         }
       }
       ++result.Compared;
-      error += std::abs(pass[i] - expected[i]);
       result.Partial += expected[i] > 0.05f && expected[i] < 0.95f;
       result.Off += highest - lowest <= tolerance && std::abs(pass[i] - expected[i]) > tolerance;
     }
   }
-  result.MAE = result.Compared ? error / result.Compared : 1.0;
+  result.MAE = VisibilityError(pass, truth, 0, zbuffer).MAE;
   return result;
 }
 

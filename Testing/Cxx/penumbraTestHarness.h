@@ -4,6 +4,7 @@
 #define penumbraTestHarness_h
 
 #include "penumbraCheck.h"
+#include "penumbraMetrics.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
@@ -214,6 +215,35 @@ inline SampleAgreement CompareSampledVisibility(
   return agreement;
 }
 
+/// The window's depth buffer over the renderer's viewport, in the truth's depth image's order.
+inline std::vector<float> WindowDepth(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  int size[2], origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  std::vector<float> zbuffer(static_cast<std::size_t>(size[0]) * size[1]);
+  window->GetZbufferData(
+    origin[0], origin[1], origin[0] + size[0] - 1, origin[1] + size[1] - 1, zbuffer.data());
+  return zbuffer;
+}
+
+/// The error of a light's visibility image against the truth's image of that light, over the
+/// pixels either shadows where the window's surface (`zbuffer`) is the truth's: the
+/// benchmark's measure (penumbra::metrics::CompareVisibility).
+inline penumbra::metrics::ErrorStats VisibilityError(const std::vector<float>& visibility,
+  vtkRayTracedVisibility* truth, int lightIndex, const std::vector<float>& zbuffer)
+{
+  const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(lightIndex));
+  const std::vector<float> depth = ImageValues(truth->GetDepthImage());
+  if (expected.size() != visibility.size() || depth.size() != visibility.size() ||
+    zbuffer.size() != visibility.size())
+  {
+    Check(false, "visibility, truth and depth images of one size");
+    return penumbra::metrics::ErrorStats();
+  }
+  return penumbra::metrics::CompareVisibility(
+    visibility.data(), expected.data(), depth.data(), zbuffer.data(), visibility.size());
+}
+
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
 struct Comparison
 {
@@ -262,7 +292,7 @@ inline Comparison CompareWithTruth(
     for (int x = 1; x + 1 < w; ++x)
     {
       const float d = depth->GetValue(at(x, y));
-      if (d >= 1.0f || zbuffer[at(x, y)] >= 1.0f || std::abs(d - zbuffer[at(x, y)]) > 1e-3f)
+      if (!penumbra::metrics::SameSurface(d, zbuffer[at(x, y)], 1e-3f))
       {
         continue;
       }
