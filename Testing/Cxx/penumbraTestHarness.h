@@ -341,6 +341,28 @@ inline void CheckAgainstTruth(
   Check(c.MismatchFraction() <= 0.002, name + ": agrees with ray-traced truth");
 }
 
+/// Adds an actor of `source` in the tests' material (MakeActor) to `renderer`; `keep` holds the
+/// source for as long as the scene lives.
+inline vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b,
+  std::vector<vtkSmartPointer<vtkObject>>& keep)
+{
+  auto actor = MakeActor(source, r, g, b);
+  renderer->AddActor(actor);
+  keep.push_back(source);
+  return actor;
+}
+
+/// Puts the renderer's camera at p looking at f, y up, and resets its clipping range.
+inline void PlaceCamera(
+  vtkRenderer* renderer, double px, double py, double pz, double fx, double fy, double fz)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(px, py, pz);
+  camera->SetFocalPoint(fx, fy, fz);
+  camera->SetViewUp(0, 1, 0);
+  renderer->ResetCameraClippingRange();
+}
+
 /// A window with one renderer drawn through a vtkSoftShadowPass, lit by one positional scene
 /// light, and helpers to add casters and compare the shadows with the truth.
 struct PassScene
@@ -367,10 +389,7 @@ struct PassScene
 
   vtkActor* Add(vtkPolyDataAlgorithm* source, double r, double g, double b)
   {
-    auto actor = MakeActor(source, r, g, b);
-    this->Renderer->AddActor(actor);
-    this->Keep.push_back(source);
-    return actor;
+    return AddActor(this->Renderer, source, r, g, b, this->Keep);
   }
 
   vtkActor* Ground(double half = 5.0) { return this->Add(GroundSource(half), 0.85, 0.85, 0.8); }
@@ -387,11 +406,7 @@ struct PassScene
 
   void Camera(double px, double py, double pz, double fx, double fy, double fz)
   {
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(px, py, pz);
-    camera->SetFocalPoint(fx, fy, fz);
-    camera->SetViewUp(0, 1, 0);
-    this->Renderer->ResetCameraClippingRange();
+    PlaceCamera(this->Renderer, px, py, pz, fx, fy, fz);
   }
 
   Comparison Render(int lightIndex = 0)

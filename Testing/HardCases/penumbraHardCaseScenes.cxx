@@ -80,14 +80,8 @@ vtkRenderer* CaseScene::AddRenderer(double xmin, double ymin, double xmax, doubl
 
 vtkLight* CaseScene::PointLight(double x, double y, double z, double radius, vtkRenderer* renderer)
 {
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetConeAngle(180);
-  light->SetPosition(x, y, z);
-  light->SetFocalPoint(0, 0, 0);
+  auto light = penumbra_test::AddSceneLight(renderer ? renderer : this->Renderer(), x, y, z);
   vtkSoftShadowPass::SetLightRadius(light, radius);
-  (renderer ? renderer : this->Renderer())->AddLight(light);
   return light;
 }
 
@@ -105,10 +99,8 @@ vtkLight* CaseScene::DirectionalLight(double x, double y, double z, double degre
 
 vtkActor* CaseScene::Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer)
 {
-  auto actor = penumbra_test::MakeActor(source, r, g, b);
-  (renderer ? renderer : this->Renderer())->AddActor(actor);
-  this->Keep.push_back(source);
-  return actor;
+  return penumbra_test::AddActor(
+    renderer ? renderer : this->Renderer(), source, r, g, b, this->Keep);
 }
 
 vtkActor* CaseScene::AddData(vtkPolyData* data, double r, double g, double b)
@@ -137,12 +129,7 @@ vtkActor* CaseScene::Box(double x, double y, double z, double sx, double sy, dou
 void CaseScene::Camera(
   double px, double py, double pz, double fx, double fy, double fz, vtkRenderer* renderer)
 {
-  renderer = renderer ? renderer : this->Renderer();
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(px, py, pz);
-  camera->SetFocalPoint(fx, fy, fz);
-  camera->SetViewUp(0, 1, 0);
-  renderer->ResetCameraClippingRange();
+  penumbra_test::PlaceCamera(renderer ? renderer : this->Renderer(), px, py, pz, fx, fy, fz);
 }
 
 namespace
