@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
@@ -329,22 +330,37 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
   this->Uploaded = false;
 }
 
-void WedgeBuffer::AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
-  int attributeCount, const EdgeFace* faces, bool frontFacesOnly)
+void WedgeGeometry::Append(const WedgeGeometry& part, int floatsPerVertex)
+{
+  const auto offset = static_cast<std::uint32_t>(this->Vertices.size() / floatsPerVertex);
+  this->Vertices.insert(this->Vertices.end(), part.Vertices.begin(), part.Vertices.end());
+  this->Indices.reserve(this->Indices.size() + part.Indices.size());
+  for (std::uint32_t index : part.Indices)
+  {
+    this->Indices.push_back(offset + index);
+  }
+  this->Wedges += part.Wedges;
+  this->Fallbacks += part.Fallbacks;
+  this->FullViewport += part.FullViewport;
+}
+
+void WedgeBuffer::AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from,
+  const glm::dvec3& to, const float* attributes, int attributeCount, const EdgeFace* faces,
+  bool frontFacesOnly) const
 {
   Box receivers = this->Receivers;
   receivers.Min -= this->Origin;
   receivers.Max -= this->Origin;
   const WedgeShape shape = AppendWedge(from, to, this->LightInWedgeSpace(), this->Radius, receivers,
-    faces, frontFacesOnly, attributes, attributeCount, this->Vertices, this->Indices);
+    faces, frontFacesOnly, attributes, attributeCount, geometry.Vertices, geometry.Indices);
   if (shape == WedgeShape::Nothing)
   {
     return; // the bound misses the receivers' box: nothing to draw
   }
   // Pyramids and edges with no bound of their own are both fallbacks: their caster's wedges are
   // drawn by back faces.
-  ++(shape == WedgeShape::Planes ? this->Wedges : this->Fallbacks);
-  this->FullViewport += shape == WedgeShape::FullViewport;
+  ++(shape == WedgeShape::Planes ? geometry.Wedges : geometry.Fallbacks);
+  geometry.FullViewport += shape == WedgeShape::FullViewport;
 }
 
 void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<VertexAttribute>& attributes)
@@ -433,6 +449,37 @@ bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectT
   return true;
 }
 
+void CountingWedgeCache::AppendPotentialEdge(WedgeGeometry& geometry, const CasterTopology& topo,
+  const std::vector<glm::dvec3>& world, const glm::dvec4& light, double flip, std::uint32_t e) const
+{
+  const Edge& edge = topo.Edges[e];
+  const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
+  const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
+  const glm::vec3 centreNormal = glm::vec3(EdgeLightNormal(from, to, light));
+  for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
+  {
+    float attributes[FloatsPerVertex - 4] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0,
+      0, 0, 0, 0, 0, 0, centreNormal.x, centreNormal.y, centreNormal.z };
+    EdgeFace faces[2];
+    std::uint32_t faceCount = 0;
+    for (; faceCount < 2 && first + faceCount < edge.UseCount; ++faceCount)
+    {
+      const EdgeUse& use = topo.Uses[edge.FirstUse + first + faceCount];
+      const glm::uvec3& tri = topo.Triangles[use.Triangle];
+      faces[faceCount] = { flip *
+          glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]),
+        static_cast<int>(flip) * use.Sign };
+      for (int c = 0; c < 3; ++c)
+      {
+        attributes[6 + 3 * faceCount + c] = static_cast<float>(faces[faceCount].Normal[c]);
+      }
+      attributes[12 + faceCount] = static_cast<float>(faces[faceCount].Sign);
+    }
+    this->AppendEdgeTo(geometry, from, to, attributes, FloatsPerVertex - 4,
+      faceCount == 2 ? faces : nullptr, this->FrontFacesOnly);
+  }
+}
+
 void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
 {
   if (this->VerticesBuilt)
@@ -442,41 +489,37 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   const glm::dvec4 light = this->LightInWedgeSpace();
   const CasterTopology& topo = mesh.Topology;
   std::vector<glm::dvec3> world(topo.Points.size());
-  for (std::size_t i = 0; i < world.size(); ++i)
-  {
-    world[i] = glm::dvec3(this->ObjectToWorld * glm::dvec4(topo.Points[i], 1.0)) - this->Origin;
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(world.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        world[i] = glm::dvec3(this->ObjectToWorld * glm::dvec4(topo.Points[i], 1.0)) - this->Origin;
+      }
+    });
   // With a mirroring matrix the stored winding faces inward: flip normal and walk together, which
   // leaves the general rule's products unchanged and keeps "front" outward for the closed rule.
   const double flip = glm::determinant(glm::dmat3(this->ObjectToWorld)) < 0.0 ? -1.0 : 1.0;
-  for (std::uint32_t e : this->Potential)
-  {
-    const Edge& edge = topo.Edges[e];
-    const glm::dvec3 &from = world[edge.A], &to = world[edge.B];
-    const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
-    const glm::vec3 centreNormal = glm::vec3(EdgeLightNormal(from, to, light));
-    for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
+  // One wedge per edge and pair of its faces. Cutting them is the costly part: runs of edges
+  // are cut on all threads, each into its own geometry, joined in order after.
+  const std::size_t edges = this->Potential.size();
+  const std::size_t runs = std::min<std::size_t>(edges, 64);
+  std::vector<WedgeGeometry> parts(runs);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(runs),
+    [&](vtkIdType beginRun, vtkIdType endRun)
     {
-      float attributes[17] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0, 0, 0, 0, 0, 0,
-        0, centreNormal.x, centreNormal.y, centreNormal.z };
-      EdgeFace faces[2];
-      std::uint32_t faceCount = 0;
-      for (; faceCount < 2 && first + faceCount < edge.UseCount; ++faceCount)
+      for (vtkIdType run = beginRun; run < endRun; ++run)
       {
-        const EdgeUse& use = topo.Uses[edge.FirstUse + first + faceCount];
-        const glm::uvec3& tri = topo.Triangles[use.Triangle];
-        faces[faceCount] = { flip *
-            glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]),
-          static_cast<int>(flip) * use.Sign };
-        for (int c = 0; c < 3; ++c)
+        const std::size_t first = edges * run / runs, last = edges * (run + 1) / runs;
+        for (std::size_t k = first; k < last; ++k)
         {
-          attributes[6 + 3 * faceCount + c] = static_cast<float>(faces[faceCount].Normal[c]);
+          this->AppendPotentialEdge(parts[run], topo, world, light, flip, this->Potential[k]);
         }
-        attributes[12 + faceCount] = static_cast<float>(faces[faceCount].Sign);
       }
-      this->AppendEdge(
-        from, to, attributes, 17, faceCount == 2 ? faces : nullptr, this->FrontFacesOnly);
-    }
+    });
+  for (const WedgeGeometry& part : parts)
+  {
+    this->Append(part, FloatsPerVertex);
   }
   this->VerticesBuilt = true;
   this->Uploaded = false;

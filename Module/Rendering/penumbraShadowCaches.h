@@ -112,18 +112,27 @@ void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
 /// full-viewport triangle).
 /// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
 /// caster's for a directional light), so float precision follows the light, not the world origin.
-struct WedgeBuffer
+/// Wedge vertices and triangles with what they hold, built for a run of edges.
+struct WedgeGeometry
 {
-  glm::dvec3 Origin{ 0.0 };
-  glm::dmat4 ObjectToWorld{ 0.0 };
-  glm::dvec4 LightWorld{ 0.0 };
-  double Radius = -1.0;
-  Box Receivers;                ///< world space; no receiver lies outside it
   std::size_t Wedges = 0;       ///< edges with a proper wedge
   std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
   std::vector<float> Vertices;
   std::vector<std::uint32_t> Indices;
+
+  /// Appends `part`, built on its own, its indices moved past this geometry's
+  /// `floatsPerVertex`-float vertices.
+  void Append(const WedgeGeometry& part, int floatsPerVertex);
+};
+
+struct WedgeBuffer : WedgeGeometry
+{
+  glm::dvec3 Origin{ 0.0 };
+  glm::dmat4 ObjectToWorld{ 0.0 };
+  glm::dvec4 LightWorld{ 0.0 };
+  double Radius = -1.0;
+  Box Receivers; ///< world space; no receiver lies outside it
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLBufferObject> IndexBuffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
@@ -147,7 +156,14 @@ struct WedgeBuffer
   /// With `faces` (a two-faced edge of a counting wedge), the wedge is also cut to the sector
   /// where the edge is a silhouette (penumbra::SilhouetteSector).
   void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
-    int attributeCount, const EdgeFace* faces = nullptr, bool frontFacesOnly = false);
+    int attributeCount, const EdgeFace* faces = nullptr, bool frontFacesOnly = false)
+  {
+    this->AppendEdgeTo(*this, from, to, attributes, attributeCount, faces, frontFacesOnly);
+  }
+  /// The same into `geometry`: for edges built on several threads at once.
+  void AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from, const glm::dvec3& to,
+    const float* attributes, int attributeCount, const EdgeFace* faces = nullptr,
+    bool frontFacesOnly = false) const;
   std::size_t IndexCount() const { return this->Indices.size(); }
   /// Bytes of the uploaded vertex and index buffers.
   std::size_t UploadedBytes() const
@@ -194,7 +210,15 @@ struct CountingWedgeCache : WedgeBuffer
   /// a light that ends up averaging never builds them.
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
     double radius, bool frontFacesOnly, const Box& receivers);
+  /// Builds the wedges of the potential silhouette, on all threads.
   void BuildVertices(const MeshCache& mesh);
+
+private:
+  /// Appends edge e's wedges (one per pair of its faces) to `geometry`; `world` holds the mesh's
+  /// points in wedge coordinates.
+  void AppendPotentialEdge(WedgeGeometry& geometry, const CasterTopology& topo,
+    const std::vector<glm::dvec3>& world, const glm::dvec4& light, double flip,
+    std::uint32_t e) const;
 };
 
 /// A surface that casts shadows this frame: an actor's, or one of its blocks or glyphs.
