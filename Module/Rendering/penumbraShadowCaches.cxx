@@ -301,6 +301,32 @@ WedgeShape AppendWedge(const glm::dvec3& from, const glm::dvec3& to, const glm::
   }
   return shape;
 }
+
+/// Calls append(geometry, k) for every k in [0, count): cutting wedges is the costly part of
+/// building them, so runs of k are cut on all threads, each into a geometry of its own, and
+/// joined into `into` in order, so that the result does not depend on the thread count.
+template <typename AppendOne>
+void AppendInRuns(WedgeGeometry& into, std::size_t count, int floatsPerVertex, AppendOne&& append)
+{
+  const std::size_t runs = std::min<std::size_t>(count, 64);
+  std::vector<WedgeGeometry> parts(runs);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(runs),
+    [&](vtkIdType beginRun, vtkIdType endRun)
+    {
+      for (vtkIdType run = beginRun; run < endRun; ++run)
+      {
+        const std::size_t first = count * run / runs, last = count * (run + 1) / runs;
+        for (std::size_t k = first; k < last; ++k)
+        {
+          append(parts[run], k);
+        }
+      }
+    });
+  for (const WedgeGeometry& part : parts)
+  {
+    into.Append(part, floatsPerVertex);
+  }
+}
 } // namespace
 
 glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
@@ -404,17 +430,20 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   }
   this->VolumeGeneration = centre.Generation;
   this->Reset(objectToWorld, lightWorld, radius, receivers);
-  for (const SilhouetteEdge& edge : centre.Volume.Silhouette)
-  {
-    const glm::dvec3 from =
-      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
-    const glm::dvec3 to =
-      glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
-    const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
-    const float attributes[7] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z,
-      static_cast<float>(edge.Multiplicity) };
-    this->AppendEdge(from, to, attributes, 7);
-  }
+  const std::vector<SilhouetteEdge>& silhouette = centre.Volume.Silhouette;
+  AppendInRuns(*this, silhouette.size(), FloatsPerVertex,
+    [&](WedgeGeometry& geometry, std::size_t k)
+    {
+      const SilhouetteEdge& edge = silhouette[k];
+      const glm::dvec3 from =
+        glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.From], 1.0)) - this->Origin;
+      const glm::dvec3 to =
+        glm::dvec3(objectToWorld * glm::dvec4(mesh.Topology.Points[edge.To], 1.0)) - this->Origin;
+      const glm::vec3 fromF = glm::vec3(from), toF = glm::vec3(to);
+      const float attributes[FloatsPerVertex - 4] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y,
+        toF.z, static_cast<float>(edge.Multiplicity) };
+      this->AppendEdgeTo(geometry, from, to, attributes, FloatsPerVertex - 4);
+    });
   return true;
 }
 
@@ -500,27 +529,10 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   // With a mirroring matrix the stored winding faces inward: flip normal and walk together, which
   // leaves the general rule's products unchanged and keeps "front" outward for the closed rule.
   const double flip = glm::determinant(glm::dmat3(this->ObjectToWorld)) < 0.0 ? -1.0 : 1.0;
-  // One wedge per edge and pair of its faces. Cutting them is the costly part: runs of edges
-  // are cut on all threads, each into its own geometry, joined in order after.
-  const std::size_t edges = this->Potential.size();
-  const std::size_t runs = std::min<std::size_t>(edges, 64);
-  std::vector<WedgeGeometry> parts(runs);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(runs),
-    [&](vtkIdType beginRun, vtkIdType endRun)
-    {
-      for (vtkIdType run = beginRun; run < endRun; ++run)
-      {
-        const std::size_t first = edges * run / runs, last = edges * (run + 1) / runs;
-        for (std::size_t k = first; k < last; ++k)
-        {
-          this->AppendPotentialEdge(parts[run], topo, world, light, flip, this->Potential[k]);
-        }
-      }
-    });
-  for (const WedgeGeometry& part : parts)
-  {
-    this->Append(part, FloatsPerVertex);
-  }
+  // One wedge per edge and pair of its faces.
+  AppendInRuns(*this, this->Potential.size(), FloatsPerVertex,
+    [&](WedgeGeometry& geometry, std::size_t k)
+    { this->AppendPotentialEdge(geometry, topo, world, light, flip, this->Potential[k]); });
   this->VerticesBuilt = true;
   this->Uploaded = false;
 }

@@ -152,15 +152,10 @@ struct WedgeBuffer : WedgeGeometry
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
     const Box& receivers);
-  /// Appends the wedge of edge from -> to (wedge coordinates), each vertex carrying `attributes`.
-  /// With `faces` (a two-faced edge of a counting wedge), the wedge is also cut to the sector
-  /// where the edge is a silhouette (penumbra::SilhouetteSector).
-  void AppendEdge(const glm::dvec3& from, const glm::dvec3& to, const float* attributes,
-    int attributeCount, const EdgeFace* faces = nullptr, bool frontFacesOnly = false)
-  {
-    this->AppendEdgeTo(*this, from, to, attributes, attributeCount, faces, frontFacesOnly);
-  }
-  /// The same into `geometry`: for edges built on several threads at once.
+  /// Appends the wedge of edge from -> to (wedge coordinates) to `geometry` (this buffer's, or
+  /// one of several built at once), each vertex carrying `attributes`. With `faces` (a two-faced
+  /// edge of a counting wedge), the wedge is also cut to the sector where the edge is a
+  /// silhouette (penumbra::SilhouetteSector).
   void AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from, const glm::dvec3& to,
     const float* attributes, int attributeCount, const EdgeFace* faces = nullptr,
     bool frontFacesOnly = false) const;
