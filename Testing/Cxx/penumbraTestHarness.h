@@ -240,8 +240,14 @@ inline penumbra::metrics::ErrorStats VisibilityError(const std::vector<float>& v
     Check(false, "visibility, truth and depth images of one size");
     return penumbra::metrics::ErrorStats();
   }
-  return penumbra::metrics::CompareVisibility(
+  penumbra::metrics::ErrorStats stats = penumbra::metrics::CompareVisibility(
     visibility.data(), expected.data(), depth.data(), zbuffer.data(), visibility.size());
+  if (stats.Pixels == 0)
+  {
+    Check(false, "pixels to compare with the truth");
+    stats.MAE = 1.0; // nothing compared is no evidence of agreement
+  }
+  return stats;
 }
 
 /// Result of comparing the pass's hard-shadow visibility with the ray-traced truth.
