@@ -36,7 +36,7 @@ public:
   /// Whether counting the light's samples should be cheaper than averaging them
   /// (penumbra::CountingIsCheaper), from its casters' potential silhouettes.
   bool IsCheaper(const ShadowLight& light, const std::vector<CasterCache*>& casters) const;
-  /// Builds the wedges of the casters that are not culled (after IsCheaper kept counting).
+  /// Builds the wedges of the opaque casters that are not culled (after IsCheaper kept counting).
   void PrepareWedges(const ShadowLight& light, const std::vector<CasterCache*>& casters);
 
   bool CountsCentreInColour() const override { return true; }

@@ -105,13 +105,6 @@ void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
   vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
   const std::vector<VertexAttribute>& attributes);
 
-/// Wedges of one caster for one light, as drawn, indexed, every vertex carrying the edge's data
-/// for the fragment shader. Each edge's wedge (or light pyramid) is cut to the receivers' box,
-/// where there is one, and drawn as the closed convex polyhedron left; without a box it is drawn
-/// whole, to infinity: 8 outward triangles over 6 vertices (a light pyramid's 6 over 5, or a
-/// full-viewport triangle).
-/// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
-/// caster's for a directional light), so float precision follows the light, not the world origin.
 /// Wedge vertices and triangles with what they hold, built for a run of edges.
 struct WedgeGeometry
 {
@@ -126,6 +119,13 @@ struct WedgeGeometry
   void Append(const WedgeGeometry& part, int floatsPerVertex);
 };
 
+/// Wedges of one caster for one light, as drawn, indexed, every vertex carrying the edge's data
+/// for the fragment shader. Each edge's wedge (or light pyramid) is cut to the receivers' box,
+/// where there is one, and drawn as the closed convex polyhedron left; without a box it is drawn
+/// whole, to infinity: 8 outward triangles over 6 vertices (a light pyramid's 6 over 5, or a
+/// full-viewport triangle).
+/// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
+/// caster's for a directional light), so float precision follows the light, not the world origin.
 struct WedgeBuffer : WedgeGeometry
 {
   glm::dvec3 Origin{ 0.0 };

@@ -27,10 +27,10 @@ public:
   /// The stages, in frame order; the same numbers as vtkSoftShadowPass::STAGE_*.
   enum Stage
   {
-    Depth,       ///< the depth pass and its copy for the wedge shaders
-    Casters,     ///< the scene walk, topology, silhouettes and wedge buffers (CPU)
-    Volumes,     ///< shadow volumes and their resolves into the LI buffer
-    Wedges,      ///< wedges, per-sample counting and plateaus into the LI buffer
+    Depth,   ///< the depth pass and its copy for the wedge shaders
+    Casters, ///< the scene walk, topology, silhouettes and wedge buffers (CPU)
+    Volumes, ///< shadow volumes and their resolves into the LI buffer
+    Wedges,  ///< wedges, per-sample counting (a counted light's translucent casters too), plateaus
     Compositing, ///< the delegate: the scene drawn with the LI buffer applied
     Count
   };

@@ -13,16 +13,18 @@
  *    silhouette of every caster for every shadowing light (in the caster's object space);
  * 2. renders the opaque geometry's depth into its own framebuffer, which has the stencil that
  *    VTK 9.1's window lacks;
- * 3. for each light, draws the casters' shadow volumes (swept to infinity in the vertex shader,
- *    depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
+ * 3. for each light, draws the opaque casters' shadow volumes (swept to infinity in the vertex
+ * shader, depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
  *    otherwise) into the stencil and resolves it into that light's layer of the light-intensity
  *    (LI) buffer, a float texture array (1 lit, 0 shadowed);
  *    For a light with a radius (SetLightRadius) the layer becomes soft: by default
- *    (METHOD_SOFT_SHADOW_VOLUMES) the depth complexity of LightSamples points on the light is
- *    counted exactly from the centre's volume count and one wedge per potential silhouette
- *    edge, which equals averaging those samples' hard shadows (METHOD_AVERAGED_HARD_SHADOWS)
- *    for any mesh at the cost of one wedge pass; penumbra wedges of the centre silhouette
- *    (METHOD_PENUMBRA_WEDGES) and plateaus (METHOD_PLATEAUS) are cheaper approximations;
+ *    (METHOD_AUTOMATIC, which counts with METHOD_SOFT_SHADOW_VOLUMES where that is cheaper)
+ *    the depth complexity of LightSamples points on the light is counted exactly from the
+ *    centre's volume count and one wedge per potential silhouette edge, which equals averaging
+ *    those samples' hard shadows (METHOD_AVERAGED_HARD_SHADOWS) for any mesh at the cost of
+ *    one wedge pass (translucent casters' volumes are drawn per sample, in both); penumbra wedges
+ * of the centre silhouette (METHOD_PENUMBRA_WEDGES) and plateaus (METHOD_PLATEAUS) are cheaper
+ * approximations;
  * 4. renders the scene through its delegate (by default VTK's own render steps) with the
  *    mappers' fragment shaders edited so that each light's diffuse and specular terms are scaled
  *    by 1 - ShadowAttenuation * (1 - LI), ambient untouched (Phong and PBR).
@@ -258,10 +260,11 @@ public:
   /// The stages of a frame, for GetStageCPUMilliseconds and GetStageGPUMilliseconds.
   enum Stages
   {
-    STAGE_DEPTH = 0,       ///< the depth pass and its copy for the wedge shaders
-    STAGE_CASTERS = 1,     ///< the scene walk, topology, silhouettes and wedge buffers (CPU)
-    STAGE_VOLUMES = 2,     ///< shadow volumes and their resolves into the LI buffer
-    STAGE_WEDGES = 3,      ///< wedges, per-sample counting and plateaus into the LI buffer
+    STAGE_DEPTH = 0,   ///< the depth pass and its copy for the wedge shaders
+    STAGE_CASTERS = 1, ///< the scene walk, topology, silhouettes and wedge buffers (CPU)
+    STAGE_VOLUMES = 2, ///< shadow volumes and their resolves into the LI buffer
+    /// wedges, per-sample counting (with a counted light's translucent casters) and plateaus
+    STAGE_WEDGES = 3,
     STAGE_COMPOSITING = 4, ///< the delegate: the scene drawn with the LI buffer applied
     NUMBER_OF_STAGES = 5
   };
