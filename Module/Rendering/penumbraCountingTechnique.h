@@ -65,7 +65,8 @@ private:
   bool DrawTransmission(ShadowFrame& frame, const ShadowLight& light);
 
   /// The centre's count (R32F) and the per-sample counters (R32UI, four 8-bit counts per texel,
-  /// one slice per four samples), allocated only while a light is counted.
+  /// one slice per four samples), allocated once a light is counted and kept until the pass's
+  /// ReleaseGraphicsResources (GetGraphicsMemoryBytes counts them while they are held).
   vtkNew<vtkTextureObject> CentreCount;
   vtkNew<vtkTextureObject> SampleCounters;
   /// Per pixel, what makes a visible sample's counter field 0 (R32F), for the translucent
