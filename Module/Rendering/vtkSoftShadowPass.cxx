@@ -41,6 +41,7 @@
 #include "vtkRendererSettingsPass.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 #include "penumbraCulling.h"
@@ -665,8 +666,10 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
     // Any prop with opaque surfaces: an assembly hands its keys to its parts as VTK draws them,
     // composite and glyph mappers draw with their actor's. SetShaderParameters leaves
     // translucent fragments unshadowed: they lie over the LI buffer of what is behind them.
+    // Not volumes: vtkVolume keeps vtkProp's HasOpaqueGeometry (true), but VTK's volume
+    // shaders have no light loop to scale, and volumes are drawn as VTK draws them.
     vtkProp* prop = s->GetPropArray()[i];
-    if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry())
+    if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop))
     {
       AddRenderPassKey(prop, this);
       internals.Receivers.push_back(prop);

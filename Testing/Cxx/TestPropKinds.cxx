@@ -37,6 +37,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
@@ -44,9 +45,12 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPropAssembly.h"
 #include "vtkShaderProperty.h"
+#include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -664,6 +668,24 @@ void TestWarnings()
   slice->RotateX(90.0);
   view.Renderer->AddViewProp(slice);
 
+  // A volume: one warning that it casts nothing, and its shaders are left as VTK wrote them
+  // (no warning about their light code).
+  vtkNew<vtkImageData> density;
+  density->SetDimensions(8, 8, 8);
+  density->SetOrigin(-3.0, 0.1, 1.0);
+  density->SetSpacing(0.1, 0.1, 0.1);
+  density->AllocateScalars(VTK_FLOAT, 1);
+  std::fill_n(static_cast<float*>(density->GetScalarPointer()), 512, 1.0f);
+  vtkNew<vtkSmartVolumeMapper> volumeMapper;
+  volumeMapper->SetInputData(density);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(1.0, 0.3);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(volumeMapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  view.Renderer->AddVolume(volume);
+
   const WarningLog log(view.Pass);
   const std::vector<std::string>& warnings = log.Messages;
   view.Render();
@@ -680,7 +702,8 @@ void TestWarnings()
     "glyphs with a NaN or infinite orientation: one warning");
   Check(count("drawn unshadowed") == 1, "custom light code: one warning");
   Check(count("image slices do not cast") == 1, "an image slice: one warning");
-  Check(warnings.size() == 6, "no other warning");
+  Check(count("volumes do not cast") == 1, "a volume: one warning");
+  Check(warnings.size() == 7, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
