@@ -47,17 +47,20 @@ bool InsertLightFactors(std::string& fragmentShader, const std::string& declarat
   return true;
 }
 
+bool IsUnlit(const std::string& fragmentShader)
+{
+  // VTK 9.1's statement for unlit surfaces; the renderer's light uniforms are still declared.
+  return fragmentShader.find("gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);") !=
+    std::string::npos;
+}
+
 std::vector<int> ScaleLightTerms(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights)
 {
   std::vector<int> missing;
-  // VTK 9.1 draws unlit surfaces (Lighting off, no normals, point-gaussian splats) with this
-  // statement and no light terms, though the renderer's light uniforms are still declared:
-  // there is nothing for a shadow to scale, and nothing to report.
-  if (fragmentShader.find("gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);") !=
-    std::string::npos)
+  if (IsUnlit(fragmentShader))
   {
-    return missing;
+    return missing; // nothing for a shadow to scale, and nothing to report
   }
   for (const ReceiverLight& light : lights)
   {

@@ -31,6 +31,10 @@ struct ReceiverLight
 bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights);
 
+/// Whether VTK wrote the fragment shader unlit (Lighting off, no normals, point-gaussian
+/// splats): its ambient-plus-diffuse statement and no light terms.
+bool IsUnlit(const std::string& fragmentShader);
+
 /// Scales each light's diffuse and specular (Phong) or radiance (PBR) by its factor. Returns
 /// the shader indices of the lights whose colour the shader declares but none of whose
 /// statements were found. A shader VTK wrote unlit (its ambient-plus-diffuse statement) is left

@@ -12,6 +12,7 @@
 #include "penumbraSceneWalk.h"
 #include "penumbraStageTimes.h"
 
+#include "vtkActor.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -37,6 +38,7 @@
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRendererSettingsPass.h"
 #include "vtkShaderProgram.h"
@@ -1309,6 +1311,15 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
   if (lights.empty() || fragmentShader.find("penumbraLightFactor") == std::string::npos)
   {
     return true; // nothing inserted, already reported
+  }
+  auto actor = vtkActor::SafeDownCast(prop);
+  if (penumbra::IsUnlit(fragmentShader) && actor && !actor->GetProperty()->GetLighting())
+  {
+    // Worth saying: vedo's Plane, for one, is unlit by default. Splats and normal-less data
+    // are unlit by nature and say nothing.
+    this->WarnShaderEdit(
+      mapper, prop, "is written without lighting (its vtkProperty has Lighting off)");
+    return true;
   }
   const std::vector<int> missing =
     penumbra::ScaleLightTerms(fragmentShader, ReceiverLights(lights));

@@ -601,6 +601,10 @@ void TestWarnings()
   selfLit->GetShaderProperty()->AddFragmentShaderReplacement(
     "//VTK::Light::Impl", true, "  gl_FragData[0] = vec4(0.3, 0.6, 0.9, 1.0);\n", false);
   view.Renderer->AddActor(selfLit);
+  // Lighting off: VTK draws it without light terms, so its shadow cannot show (one warning).
+  auto unlit = MakeActor(BoxSource(-1.8, 0.2, 1.6, 0.4, 0.4, 0.4), 0.8, 0.8, 0.3);
+  unlit->GetProperty()->LightingOff();
+  view.Renderer->AddActor(unlit);
 
   // Imposter spheres cast, but not one whose radius is NaN (VTK draws nothing for it).
   vtkNew<vtkPolyData> centres;
@@ -700,10 +704,11 @@ void TestWarnings()
   Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
   Check(count("orientation is not finite") == 1,
     "glyphs with a NaN or infinite orientation: one warning");
-  Check(count("drawn unshadowed") == 1, "custom light code: one warning");
+  Check(count("Light::Impl tags") == 1, "custom light code: one warning");
   Check(count("image slices do not cast") == 1, "an image slice: one warning");
   Check(count("volumes do not cast") == 1, "a volume: one warning");
-  Check(warnings.size() == 7, "no other warning");
+  Check(count("Lighting off") == 1, "an actor with Lighting off: one warning");
+  Check(warnings.size() == 8, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });

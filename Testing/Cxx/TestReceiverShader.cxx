@@ -84,6 +84,9 @@ int main()
   const std::string vtkUnlitBefore = vtkUnlit;
   Check(penumbra::ScaleLightTerms(vtkUnlit, lights).empty() && vtkUnlit == vtkUnlitBefore,
     "VTK's unlit shader, light colours declared: not reported, unchanged");
+  Check(
+    penumbra::IsUnlit(vtkUnlit) && !penumbra::IsUnlit(unlit) && !penumbra::IsUnlit(PhongShader()),
+    "VTK's unlit statement is recognised, and only it");
   // Light 1 is not a prefix match of light 10.
   std::string ten = "uniform vec3 lightColor10;\n  diffuse += (df * lightColor10);\n";
   Check(
