@@ -36,6 +36,8 @@
  * light sample lets 1 - opacity of it through (hard, averaged and counted shadows; wedges and
  * plateaus leave them out, with a warning).
  * They receive nothing: their fragments are drawn unshadowed over the shadowed surface behind.
+ * Actors with Lighting off cast but show no shadow (VTK draws them without light terms; one
+ * warning each).
  *
  * It also works as a delegate inside a vtkCameraPass / vtkSequencePass chain: set its delegate
  * to the pass that draws the opaque geometry.
