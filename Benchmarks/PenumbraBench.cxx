@@ -295,20 +295,28 @@ Scene MakeClassic()
   return scene;
 }
 
+/// A `Contour` filter (vtkContourFilter, vtkFlyingEdges3D) of the value 160 over a
+/// vtkRTAnalyticSource of half extent `half`, with normals and no scalars.
+template <typename Contour>
+vtkSmartPointer<Contour> WaveletIsosurface(int half)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
+  auto contour = vtkSmartPointer<Contour>::New();
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 160.0); // open where the extent clips it: ~600 boundary edges at 20
+  contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  return contour;
+}
+
 /// An isosurface of vtkRTAnalyticSource, open where the extent clips it, floating over the plane.
 Scene MakeIsosurface()
 {
   Scene scene;
   scene.Name = "isosurface";
   AddGround(scene);
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-20, 20, -20, 20, -20, 20);
-  vtkNew<vtkContourFilter> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, 160.0); // ~600 boundary edges where the extent clips it
-  contour->ComputeNormalsOn();
-  contour->ComputeScalarsOff();
-  auto actor = MakeActor(contour, 0.90, 0.55, 0.25);
+  auto actor = MakeActor(WaveletIsosurface<vtkContourFilter>(20), 0.90, 0.55, 0.25);
   actor->SetScale(0.1);
   actor->SetPosition(0.0, 0.0, 2.4);
   actor->RotateZ(20.0);
@@ -431,13 +439,7 @@ Scene MakeTimeVarying()
   Scene scene;
   scene.Name = "timevarying";
   AddGround(scene);
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-60, 60, -60, 60, -60, 60);
-  auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, 160.0);
-  contour->ComputeNormalsOn();
-  contour->ComputeScalarsOff();
+  auto contour = WaveletIsosurface<vtkFlyingEdges3D>(60);
   contour->Update();
   // The mapper draws the filter's own output, which each update rewrites in place.
   auto actor = penumbra::bench::MakeShadedActor(contour->GetOutput(), 0.90, 0.55, 0.25);
