@@ -7,6 +7,7 @@
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
@@ -297,14 +298,30 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
 
 bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& light)
 {
-  bool offsetResolved = false;
   vtkOpenGLRenderWindow* window = frame.Window;
-  const float share = 1.0f / static_cast<float>(light.CountingSamples.size());
+  vtkShaderProgram* program =
+    frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingTransmissionFS,
+      "soft shadow volume transmission", "soft shadows average hard shadows instead");
+  if (!program)
+  {
+    return false;
+  }
+  // Additive, at every geometry pixel of each group's rectangle. DrawTranslucentVolumes and
+  // Resolve leave this state as they find it.
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
   vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglScissor scissorBox(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
   const std::size_t samples = light.CountingSamples.size();
+  const float share = 1.0f / static_cast<float>(samples);
+  bool offsetResolved = false;
   for (std::size_t first = 0; first < samples; first += 4)
   {
     const std::size_t group = std::min<std::size_t>(4, samples - first);
@@ -319,21 +336,8 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
     {
       return false;
     }
-    vtkShaderProgram* program =
-      frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingTransmissionFS,
-        "soft shadow volume transmission", "soft shadows average hard shadows instead");
-    if (!program)
-    {
-      return false;
-    }
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglDisable(GL_STENCIL_TEST);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglEnable(GL_DEPTH_CLAMP);
-    ostate->vtkglDepthFunc(GL_GREATER);
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+    SetScissor(ostate, covered);
+    window->GetShaderCache()->ReadyShaderProgram(program);
     this->CountOffset->Activate();
     this->SampleCounters->Activate();
     this->LogTransmission->Activate();

@@ -41,7 +41,7 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglScissor scissorBox(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+  SetScissor(ostate, covered);
   ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilFunc(GL_EQUAL, 0, 0xFF);
   ostate->vtkglEnable(GL_BLEND);

@@ -48,6 +48,11 @@ std::size_t TextureBytes(vtkTextureObject* texture)
     std::max(1u, texture->GetDepth()) * static_cast<std::size_t>(texture->GetComponents()) * 4;
 }
 
+void SetScissor(vtkOpenGLState* state, const PixelRect& rect)
+{
+  state->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
+}
+
 ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
   : State(state)
   , Blend(state, GL_BLEND)

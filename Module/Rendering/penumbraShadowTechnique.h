@@ -153,6 +153,9 @@ private:
   int CullFaceMode = 0, BlendEquationRGB = 0, BlendEquationAlpha = 0;
 };
 
+/// Sets the scissor box to `rect` (the scissor test is the caller's).
+void SetScissor(vtkOpenGLState* state, const PixelRect& rect);
+
 /// What the techniques add to the pass's statistics.
 struct TechniqueCounts
 {

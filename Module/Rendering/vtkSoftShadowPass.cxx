@@ -903,13 +903,9 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
   vtkIdType updates = 0;
   for (penumbra::CasterCache* caster : this->Casters)
   {
-    if (caster->Culled.count(light.Light))
+    if (caster->Culled.count(light.Light) || caster->Translucent())
     {
-      continue;
-    }
-    if (caster->Translucent())
-    {
-      continue; // UpdateTranslucentVolumes
+      continue; // translucent casters: UpdateTranslucentVolumes
     }
     const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
     const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
@@ -1028,7 +1024,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
         const penumbra::PixelRect rect = internals.VolumeScissor(*caster, light.Samples[k]);
         if (!rect.Empty())
         {
-          ostate->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
+          penumbra::SetScissor(ostate, rect);
           this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
             light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
             countInColour, 1.0f, this->NumberOfZFailVolumes);
@@ -1178,7 +1174,7 @@ penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
   vtkOpenGLState::ScopedglScissor scissorBox(ostate);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglScissor(covered.X0, covered.Y0, covered.X1 - covered.X0, covered.Y1 - covered.Y0);
+  penumbra::SetScissor(ostate, covered);
   frame.AttachClearedFloatTarget(target, components);
   ostate->vtkglDisable(GL_DEPTH_CLAMP); // as for the opaque volumes: z-fail turns it on itself
   // Each crossing adds log(1 - opacity) to its sample's channel; the stencil keeps what the
@@ -1194,8 +1190,7 @@ penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
   {
     const int channel = static_cast<int>(volume.Sample - first);
     ostate->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
-    ostate->vtkglScissor(volume.Rect.X0, volume.Rect.Y0, volume.Rect.X1 - volume.Rect.X0,
-      volume.Rect.Y1 - volume.Rect.Y0);
+    penumbra::SetScissor(ostate, volume.Rect);
     triangles +=
       DrawShadowVolume(ostate, program, *volume.Caster, light.TranslucentVolumeKey(volume.Sample),
         light.TranslucentSamples()[volume.Sample], this->WorldToClip, this->NearCorners, true,
