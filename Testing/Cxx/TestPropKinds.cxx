@@ -91,13 +91,7 @@ struct View
     this->Window->Render();
   }
 
-  std::vector<float> Visibility()
-  {
-    auto values =
-      vtkFloatArray::SafeDownCast(this->Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-    return std::vector<float>(
-      values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
-  }
+  std::vector<float> Visibility() { return ImageValues(this->Pass->GetVisibilityImage(0)); }
 
   std::vector<unsigned char> Colours()
   {

@@ -486,8 +486,7 @@ HardResult TestHardShadow(Scene& scene, bool verbose)
   Check(depthError < 1e-6, "depth image holds window depth of the ground plane");
 
   // The rasterizer must have put the same surfaces at the same depths in the same pixels.
-  std::vector<float> zbuffer(Width * Height);
-  scene.Window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
+  const std::vector<float> zbuffer = penumbra_test::WindowDepth(scene.Window, scene.Renderer);
   double groundZ = 0.0, sphereZ = 0.0;
   long coverage = 0;
   for (int j = 0; j < Height; ++j)

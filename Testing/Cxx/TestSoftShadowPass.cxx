@@ -509,14 +509,9 @@ void TestWedgesTemporalStability()
     truth->SetRenderer(scene.Renderer);
     truth->SetSamplesPerLight(256);
     truth->Update();
-    auto ours =
-      vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-    auto expected =
-      vtkFloatArray::SafeDownCast(truth->GetVisibilityImage(0)->GetPointData()->GetScalars());
     auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
-    std::vector<float> o(ours->GetPointer(0), ours->GetPointer(0) + ours->GetNumberOfValues());
-    std::vector<float> t(
-      expected->GetPointer(0), expected->GetPointer(0) + expected->GetNumberOfValues());
+    std::vector<float> o = ImageValues(scene.Pass->GetVisibilityImage(0));
+    std::vector<float> t = ImageValues(truth->GetVisibilityImage(0));
     if (!previousOurs.empty())
     {
       for (std::size_t i = 0; i < o.size(); ++i)
@@ -557,10 +552,7 @@ void TestWedgesTemporalStability()
 /// Visibility of light 0 in the last frame, as a vector.
 std::vector<float> Visibility(Scene& scene)
 {
-  auto values =
-    vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  return std::vector<float>(
-    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  return ImageValues(scene.Pass->GetVisibilityImage(0));
 }
 
 void TestPlateaus()

@@ -285,9 +285,7 @@ inline Comparison CompareWithTruth(
   int size[2], origin[2];
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const int w = size[0], h = size[1];
-  std::vector<float> zbuffer(static_cast<size_t>(w) * h);
-  window->GetZbufferData(
-    origin[0], origin[1], origin[0] + w - 1, origin[1] + h - 1, zbuffer.data());
+  const std::vector<float> zbuffer = WindowDepth(window, renderer);
   auto pass_ = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
   auto true_ = vtkFloatArray::SafeDownCast(
     truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
