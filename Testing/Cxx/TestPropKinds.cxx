@@ -93,13 +93,7 @@ struct View
 
   std::vector<float> Visibility() { return ImageValues(this->Pass->GetVisibilityImage(0)); }
 
-  std::vector<unsigned char> Colours()
-  {
-    vtkNew<vtkUnsignedCharArray> pixels;
-    this->Window->GetPixelData(0, 0, Width - 1, Height - 1, 0, pixels);
-    return std::vector<unsigned char>(
-      pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
-  }
+  std::vector<unsigned char> Colours() { return WindowColours(this->Window, this->Renderer); }
 };
 
 vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)

@@ -16,7 +16,6 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <glm/glm.hpp>
 
@@ -156,15 +155,6 @@ void TestSeenThroughCaster()
   Check(agreement.Off <= agreement.Compared / 500, "a shadow seen through its caster is right");
 }
 
-/// The colours of the window's last frame, 3 bytes a pixel, row 0 at the bottom.
-std::vector<unsigned char> Colours(vtkRenderWindow* window)
-{
-  vtkNew<vtkUnsignedCharArray> rgb;
-  window->GetPixelData(0, 0, Width - 1, Height - 1, 0, rgb);
-  return std::vector<unsigned char>(
-    rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
-}
-
 /// Translucent surfaces receive nothing: a translucent sheet above the box's shadow on the
 /// ground is drawn lit, blended over the shadowed ground. The sheet is a translucent block of a
 /// composite actor whose other block is opaque (a small cube away from it), so that the actor
@@ -203,16 +193,16 @@ void TestTranslucentReceivesNothing()
   scene.Camera(3.0, 5.0, 8.0, 0.0, 0.5, 0.0);
 
   scene.Window->Render();
-  const std::vector<unsigned char> blended = Colours(scene.Window);
+  const std::vector<unsigned char> blended = WindowColours(scene.Window, scene.Renderer);
   sheet->VisibilityOff();
   scene.Window->Render();
-  const std::vector<unsigned char> behind = Colours(scene.Window);
+  const std::vector<unsigned char> behind = WindowColours(scene.Window, scene.Renderer);
   const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
   sheet->VisibilityOn();
   ground->VisibilityOff();
   box->VisibilityOff();
   scene.Window->Render();
-  const std::vector<unsigned char> alone = Colours(scene.Window);
+  const std::vector<unsigned char> alone = WindowColours(scene.Window, scene.Renderer);
 
   int compared = 0, off = 0;
   double darkest = 1.0;

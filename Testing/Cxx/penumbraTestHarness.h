@@ -27,6 +27,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
@@ -224,6 +225,18 @@ inline std::vector<float> WindowDepth(vtkRenderWindow* window, vtkRenderer* rend
   window->GetZbufferData(
     origin[0], origin[1], origin[0] + size[0] - 1, origin[1] + size[1] - 1, zbuffer.data());
   return zbuffer;
+}
+
+/// The window's colours over the renderer's viewport, 3 bytes a pixel, row 0 at the bottom.
+inline std::vector<unsigned char> WindowColours(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  int size[2], origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(
+    origin[0], origin[1], origin[0] + size[0] - 1, origin[1] + size[1] - 1, 0, rgb);
+  return std::vector<unsigned char>(
+    rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
 }
 
 /// The error of a light's visibility image against the truth's image of that light, over the
