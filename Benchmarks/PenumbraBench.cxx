@@ -27,6 +27,7 @@
 #include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
 #include "penumbraOptions.h"
+#include "penumbraSceneDescription.h"
 #include "penumbraShadowMap.h"
 
 #include "vtkPlanarSoftShadowFilter.h"
@@ -231,7 +232,7 @@ bool ParseArguments(int argc, char* argv[], Options& options)
 // centre (cone 55 degrees, covering the whole ground), one camera orbiting around (0, 0, 1).
 //--------------------------------------------------------------------------------------------------
 
-using Scene = penumbra::bench::SceneActors;
+using Scene = penumbra::scene::Description;
 
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
@@ -455,6 +456,18 @@ Scene MakeTimeVarying()
   return scene;
 }
 
+/// The frame every scene shares: the key light, a spot (cone < 90 degrees, so that
+/// vtkShadowMapBakerPass accepts it) aimed at the scene, light index 0, its radius set per row;
+/// and the camera's start.
+void AddKeyLightAndCamera(Scene& scene)
+{
+  vtkLight* key = scene.AddLight(true, { 4.0, -6.0, 10.0 }, 0.0);
+  key->SetConeAngle(55.0);
+  key->SetExponent(1.0);
+  key->SetIntensity(1.0);
+  scene.SetCamera({ -6.5, -13.0, 7.5 }, { 0.0, 0.0, 1.0 }, { 0.0, 0.0, 1.0 }, 35.0);
+}
+
 bool MakeScene(const std::string& name, Scene& scene)
 {
   if (name == "classic")
@@ -471,18 +484,8 @@ bool MakeScene(const std::string& name, Scene& scene)
     scene = MakeTimeVarying();
   else
     return false;
+  AddKeyLightAndCamera(scene);
   return true;
-}
-
-void SetStartCamera(vtkRenderer* renderer)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 1.0);
-  camera->SetPosition(-6.5, -13.0, 7.5);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetViewAngle(35.0);
-  camera->OrthogonalizeViewUp();
-  renderer->ResetCameraClippingRange();
 }
 
 //--------------------------------------------------------------------------------------------------
@@ -1058,37 +1061,14 @@ int main(int argc, char* argv[])
       const bool images =
         options.Images == "all" || (options.Images == "classic" && sceneName == "classic");
 
-      // One window and renderer for the whole run (one X connection); the scene's actors and a
-      // new key light per scene and radius.
-      renderer->RemoveAllViewProps();
-      renderer->RemoveAllLights();
-      for (const auto& actor : scene.Actors)
-      {
-        renderer->AddActor(actor);
-      }
-      // The key light: a spot (cone < 90 degrees, so that vtkShadowMapBakerPass accepts it) aimed
-      // at the scene, the same for all methods; light index 0.
-      vtkNew<vtkLight> key;
-      key->SetLightTypeToSceneLight();
-      key->SetPositional(true);
-      key->SetPosition(4.0, -6.0, 10.0);
-      key->SetFocalPoint(0.0, 0.0, 0.0);
-      key->SetConeAngle(55.0);
-      key->SetExponent(1.0);
-      key->SetIntensity(1.0);
+      // One window and renderer for the whole run (one X connection); the scene at its start,
+      // its key light at this row's radius.
+      vtkLight* key = scene.Lights[0];
       vtkSoftShadowPass::SetLightRadius(key, radius);
-      renderer->AddLight(key);
-
-      SetStartCamera(renderer);
-      vtkNew<vtkCamera> start;
-      start->DeepCopy(renderer->GetActiveCamera());
-      // vtkCamera::DeepCopy does not call Modified() (VTK 9.1): without it the mappers keep the
-      // lighting uniforms (and, unless the renderer changed, the view matrices) of the last view.
+      scene.AddTo(renderer);
       auto resetCamera = [&]()
       {
-        renderer->GetActiveCamera()->DeepCopy(start);
-        renderer->GetActiveCamera()->Modified();
-        renderer->ResetCameraClippingRange();
+        scene.ResetCamera(renderer);
         if (scene.Advance)
         {
           scene.Advance(0); // the data the truth was traced on

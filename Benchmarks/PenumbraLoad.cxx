@@ -24,6 +24,7 @@
 
 #include "penumbraBenchSupport.h"
 #include "penumbraOptions.h"
+#include "penumbraSceneDescription.h"
 
 #include "vtkSoftShadowPass.h"
 
@@ -78,7 +79,6 @@
 namespace
 {
 using penumbra::bench::Clock;
-using penumbra::bench::CountTriangles;
 using penumbra::bench::DetachedOutput;
 using penumbra::bench::GrabFrame;
 using penumbra::bench::MakeShadedActor;
@@ -88,6 +88,7 @@ using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::vtkCountingOutputWindow;
 using penumbra::bench::WriteRGB;
+using penumbra::scene::CountTriangles;
 
 double MillisecondsSince(Clock::time_point start)
 {
@@ -217,19 +218,11 @@ bool ParseArguments(int argc, char* argv[], Options& options)
 //--------------------------------------------------------------------------------------------------
 // Scenes (z up, ground plane at z = 0).
 //--------------------------------------------------------------------------------------------------
-struct LightPose
+/// A load-test scene: the shared description (its Lights are the shadowing ones, light index
+/// 0..n-1) and the frames a phase renders unless the command line says otherwise.
+struct Scene : penumbra::scene::Description
 {
-  double Position[3];
-  double FocalPoint[3];
-};
-
-struct Scene : penumbra::bench::SceneActors
-{
-  std::vector<vtkSmartPointer<vtkLight>> Lights; ///< the shadowing lights, collection index 0..n-1
-  std::vector<LightPose> Poses;                  ///< their starting poses
-  std::size_t Datasets = 0;                      ///< distinct polydata objects
   int DefaultFrames = 5;
-  double CameraPosition[3], CameraFocalPoint[3], CameraViewAngle = 30.0;
 };
 
 void AddGround(Scene& scene, double halfX, double halfY)
@@ -245,29 +238,21 @@ void AddGround(Scene& scene, double halfX, double halfY)
 
 /// A scene light: positional (point if cone >= 180, else spot) or directional (from `position`
 /// towards the origin); `radius` in world units, or degrees for a directional light.
-void AddLight(Scene& scene, bool positional, const double position[3], double coneAngle,
-  double radius, double r, double g, double b, double intensity)
+void AddLight(Scene& scene, bool positional, const penumbra::scene::Point& position,
+  double coneAngle, double radius, double r, double g, double b, double intensity)
 {
-  auto light = vtkSmartPointer<vtkLight>::New();
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(positional);
-  light->SetPosition(position[0], position[1], position[2]);
-  light->SetFocalPoint(0.0, 0.0, 0.0);
+  vtkLight* light = scene.AddLight(positional, position, radius);
   light->SetConeAngle(coneAngle);
   light->SetExponent(1.0);
   light->SetColor(r, g, b);
   light->SetIntensity(intensity);
-  vtkSoftShadowPass::SetLightRadius(light, radius);
-  scene.Lights.push_back(light);
-  LightPose pose{ { position[0], position[1], position[2] }, { 0.0, 0.0, 0.0 } };
-  scene.Poses.push_back(pose);
 }
 
-void SetCamera(Scene& scene, const double position[3], const double focal[3], double angle)
+/// The camera the scene starts from, z up.
+void SetCamera(Scene& scene, const penumbra::scene::Point& position,
+  const penumbra::scene::Point& focal, double angle)
 {
-  std::copy(position, position + 3, scene.CameraPosition);
-  std::copy(focal, focal + 3, scene.CameraFocalPoint);
-  scene.CameraViewAngle = angle;
+  scene.SetCamera(position, focal, { 0.0, 0.0, 1.0 }, angle);
 }
 
 /// 1000 small actors on a 40 x 25 jittered grid wider than the view (those out of view cast
@@ -277,7 +262,6 @@ Scene MakeActors1000()
   Scene scene;
   scene.Name = "actors1000";
   AddGround(scene, 21.0, 14.0);
-  std::set<vtkPolyData*> datasets;
 
   // Shared outputs: many actors draw the same polydata (one topology, one upload for the pass).
   vtkNew<vtkSphereSource> sphere;
@@ -328,7 +312,6 @@ Scene MakeActors1000()
         data = DetachedOutput(own);
       }
     }
-    datasets.insert(data);
     const double hue = unit(random);
     auto actor =
       MakeShadedActor(data, 0.45 + 0.5 * hue, 0.35 + 0.4 * (1.0 - hue), 0.3 + 0.5 * unit(random));
@@ -339,11 +322,8 @@ Scene MakeActors1000()
     actor->RotateZ(360.0 * unit(random));
     scene.Add(actor);
   }
-  scene.Datasets = datasets.size() + 1;
-  const double light[3] = { 6.0, -5.0, 16.0 };
-  AddLight(scene, true, light, 180.0, 0.8, 1.0, 0.97, 0.9, 1.0);
-  const double camera[3] = { -2.0, -17.0, 10.0 }, focal[3] = { 0.0, -2.0, 0.0 };
-  SetCamera(scene, camera, focal, 32.0);
+  AddLight(scene, true, { 6.0, -5.0, 16.0 }, 180.0, 0.8, 1.0, 0.97, 0.9, 1.0);
+  SetCamera(scene, { -2.0, -17.0, 10.0 }, { 0.0, -2.0, 0.0 }, 32.0);
   return scene;
 }
 
@@ -445,7 +425,6 @@ Scene MakeLights8()
   auto coneActor = MakeShadedActor(DetachedOutput(cone), 0.9, 0.9, 0.9);
   coneActor->SetPosition(-2.0, -2.2, 0.9);
   scene.Add(coneActor);
-  scene.Datasets = 6;
 
   // 8 lights around the scene, 45 degrees apart, each its own colour; the camera looks from
   // azimuth ~ -100 degrees, so every light's shadows fall somewhere on the visible ground.
@@ -470,12 +449,11 @@ Scene MakeLights8()
     const Spec& s = specs[i];
     const double azimuth = vtkMath::RadiansFromDegrees(20.0 + 45.0 * i);
     const double elevation = vtkMath::RadiansFromDegrees(s.Elevation);
-    const double p[3] = { s.Distance * std::cos(elevation) * std::cos(azimuth),
+    const penumbra::scene::Point p{ s.Distance * std::cos(elevation) * std::cos(azimuth),
       s.Distance * std::cos(elevation) * std::sin(azimuth), s.Distance * std::sin(elevation) };
     AddLight(scene, s.Positional, p, s.Cone, s.Radius, s.Colour[0], s.Colour[1], s.Colour[2], 0.2);
   }
-  const double camera[3] = { -3.0, -15.0, 10.0 }, focal[3] = { 0.0, 0.0, 0.5 };
-  SetCamera(scene, camera, focal, 40.0);
+  SetCamera(scene, { -3.0, -15.0, 10.0 }, { 0.0, 0.0, 0.5 }, 40.0);
   return scene;
 }
 
@@ -491,11 +469,8 @@ Scene MakeMesh(bool smoke)
   actor->RotateX(35.0);
   actor->SetPosition(0.0, 0.0, 2.6);
   scene.Add(actor);
-  scene.Datasets = 2;
-  const double light[3] = { 4.0, -6.0, 10.0 };
-  AddLight(scene, true, light, 55.0, 0.5, 1.0, 1.0, 1.0, 1.0);
-  const double camera[3] = { -6.5, -13.0, 7.5 }, focal[3] = { 0.0, 0.0, 1.0 };
-  SetCamera(scene, camera, focal, 35.0);
+  AddLight(scene, true, { 4.0, -6.0, 10.0 }, 55.0, 0.5, 1.0, 1.0, 1.0, 1.0);
+  SetCamera(scene, { -6.5, -13.0, 7.5 }, { 0.0, 0.0, 1.0 }, 35.0);
   return scene;
 }
 
@@ -612,27 +587,6 @@ vtkSmartPointer<vtkSoftShadowPass> MakePass(const std::string& method)
   return pass;
 }
 
-void ResetCamera(vtkRenderer* renderer, const Scene& scene)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(scene.CameraPosition);
-  camera->SetFocalPoint(scene.CameraFocalPoint);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetViewAngle(scene.CameraViewAngle);
-  camera->OrthogonalizeViewUp();
-  camera->Modified();
-  renderer->ResetCameraClippingRange();
-}
-
-void ResetLights(const Scene& scene)
-{
-  for (std::size_t i = 0; i < scene.Lights.size(); ++i)
-  {
-    scene.Lights[i]->SetPosition(scene.Poses[i].Position);
-    scene.Lights[i]->SetFocalPoint(scene.Poses[i].FocalPoint);
-  }
-}
-
 /// Turns every light `degrees` about the vertical axis through the origin, from its start pose.
 void TurnLights(const Scene& scene, double degrees)
 {
@@ -640,7 +594,7 @@ void TurnLights(const Scene& scene, double degrees)
   const double s = std::sin(vtkMath::RadiansFromDegrees(degrees));
   for (std::size_t i = 0; i < scene.Lights.size(); ++i)
   {
-    const double* p = scene.Poses[i].Position;
+    const penumbra::scene::Point& p = scene.LightPoses[i].Position;
     scene.Lights[i]->SetPosition(c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]);
   }
 }
@@ -667,8 +621,8 @@ Row RunMethod(const std::string& method, const Scene& scene, vtkRenderWindow* wi
 
   auto pass = MakePass(method);
   renderer->SetPass(pass);
-  ResetLights(scene);
-  ResetCamera(renderer, scene);
+  scene.ResetLights();
+  scene.ResetCamera(renderer);
   // VTK has drawn the scene once already (the baseline): the first frame is what switching
   // shadows on costs (shader rebuilds, topology, silhouettes, uploads), not VTK's own upload.
   DrainGLErrors(window);
@@ -742,7 +696,7 @@ Row RunMethod(const std::string& method, const Scene& scene, vtkRenderWindow* wi
     row.SilhouettesOrbit =
       double(pass->GetNumberOfSilhouetteUpdates() - before) / std::max<int>(1, row.Orbit.Frames);
   }
-  ResetCamera(renderer, scene);
+  scene.ResetCamera(renderer);
   // Moving lights: every (caster, light sample) silhouette is recomputed every frame.
   {
     const vtkIdType before = pass->GetNumberOfSilhouetteUpdates();
@@ -768,7 +722,7 @@ Row RunMethod(const std::string& method, const Scene& scene, vtkRenderWindow* wi
 
   renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(window);
-  ResetLights(scene);
+  scene.ResetLights();
   return row;
 }
 
@@ -890,14 +844,7 @@ int RunChild(const std::string& sceneName, const std::string& method, bool first
   window->SetMultiSamples(0);
   window->SetSize(options.Width, options.Height);
   window->AddRenderer(renderer);
-  for (const auto& actor : scene.Actors)
-  {
-    renderer->AddActor(actor);
-  }
-  for (const auto& light : scene.Lights)
-  {
-    renderer->AddLight(light);
-  }
+  scene.AddTo(renderer);
   // A dim headlight after the scene lights: fill light for the images, and a light the pass
   // must skip (it casts no shadow) among the shadowing ones in VTK's numbering.
   vtkNew<vtkLight> headlight;
@@ -906,7 +853,6 @@ int RunChild(const std::string& sceneName, const std::string& method, bool first
   renderer->AddLight(headlight);
 
   // Baseline: VTK alone (no pass) with the scene drawn once, in this process.
-  ResetCamera(renderer, scene);
   log->Reset();
   const double baselineMs = RenderTimed(window);
   int setupGLErrors = DrainGLErrors(window);
@@ -922,7 +868,7 @@ int RunChild(const std::string& sceneName, const std::string& method, bool first
                 "  built in %.1f s; VTK alone drew its first frame in %.0f ms; RSS %.0f MiB at "
                 "start, +%.0f MiB scene data, +%.0f MiB once VTK drew it: baseline %.0f MiB; "
                 "VTK buffers (estimate) %.1f MiB\n",
-      scene.Name.c_str(), scene.Actors.size(), scene.Datasets,
+      scene.Name.c_str(), scene.Actors.size(), scene.CountDatasets(),
       static_cast<long long>(scene.Triangles), scene.Lights.size(), frames, buildSeconds,
       baselineMs, beforeBuild.RssMiB, afterBuild.RssMiB - beforeBuild.RssMiB,
       baseline.RssMiB - afterBuild.RssMiB, baseline.RssMiB, vtkGpuBytes / MiB);

@@ -21,6 +21,7 @@
 #include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
 #include "penumbraOptions.h"
+#include "penumbraSceneDescription.h"
 #include "penumbraShadowMap.h"
 
 #include "vtkActor.h"
@@ -56,13 +57,13 @@
 #include <string>
 #include <vector>
 
-using penumbra::bench::CountTriangles;
 using penumbra::bench::Frame;
 using penumbra::bench::GrabFrame;
 using penumbra::bench::Summarize;
 using penumbra::bench::Timing;
 using penumbra::bench::WriteGrey;
 using penumbra::bench::WritePNG;
+using penumbra::scene::CountTriangles;
 
 namespace
 {

@@ -1,12 +1,11 @@
 // Header-only helpers shared by PenumbraBench, PenumbraLoad, the demo (Examples/PenumbraDemo.cxx)
-// and the hard-case suite: command-line parsing, triangle counts, frame-time summaries, frame
-// grabs and PNG output.
+// and the hard-case suite: command-line parsing, frame-time summaries, frame grabs and PNG
+// output.
 #ifndef penumbraBenchSupport_h
 #define penumbraBenchSupport_h
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
-#include "vtkCellArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -25,7 +24,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -184,39 +182,6 @@ inline vtkSmartPointer<vtkActor> MakeShadedActor(vtkPolyData* data, double r, do
   property->SetSpecularPower(30.0);
   return actor;
 }
-
-/// Triangles a polydata draws (polygons and strips fanned into triangles).
-inline vtkIdType CountTriangles(vtkPolyData* data)
-{
-  vtkIdType triangles = 0;
-  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
-  {
-    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-    {
-      triangles += std::max<vtkIdType>(0, cells->GetCellSize(c) - 2);
-    }
-  }
-  return triangles;
-}
-
-/// A timed scene's actors and the triangles they draw: what the benchmark and the load test
-/// build their scenes from.
-struct SceneActors
-{
-  std::string Name;
-  std::vector<vtkSmartPointer<vtkActor>> Actors;
-  vtkIdType Triangles = 0;
-  /// For data that changes as a simulation played back: puts the data of frame `frame` in
-  /// place (frame 0 is the data as built). Empty for a static scene.
-  std::function<void(int frame)> Advance;
-
-  void Add(vtkSmartPointer<vtkActor> actor)
-  {
-    this->Triangles +=
-      CountTriangles(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)));
-    this->Actors.push_back(actor);
-  }
-};
 
 struct Timing
 {
