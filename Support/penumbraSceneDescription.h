@@ -5,6 +5,7 @@
 #define penumbraSceneDescription_h
 
 #include "vtkActor.h"
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkLight.h"
@@ -72,9 +73,15 @@ struct Description
   /// place (frame 0 is the data as built). Empty for a static scene.
   std::function<void(int frame)> Advance;
 
+  /// Adds an actor, its triangles counted once its input is up to date.
   void Add(vtkSmartPointer<vtkActor> actor)
   {
-    if (auto* data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)))
+    vtkMapper* mapper = actor->GetMapper();
+    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
+    {
+      producer->Update();
+    }
+    if (auto* data = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)))
     {
       this->Triangles += CountTriangles(data);
     }

@@ -174,7 +174,9 @@ bool SegmentHitsSphere(
   return glm::dot(closest - centre, closest - centre) < radius * radius;
 }
 
-struct Scene
+/// The ray tracer's own fixture: a sphere over a square ground whose shadows the test computes
+/// analytically. It draws no vtkSoftShadowPass: the truth is tested apart from the pass.
+struct AnalyticScene
 {
   vtkSmartPointer<vtkRenderWindow> Window = penumbra_test::NewRenderWindow();
   vtkNew<vtkRenderer> Renderer;
@@ -187,7 +189,7 @@ struct Scene
   double SphereRadius = 0.6;
   double GroundHalf = 3.0;
 
-  Scene()
+  AnalyticScene()
   {
     this->SphereSource->SetCenter(0.0, 0.0, 0.0);
     this->SphereSource->SetRadius(this->SphereRadius);
@@ -284,7 +286,7 @@ struct Analytic
   std::vector<int> Class;
   std::vector<glm::dvec3> Ground;
 
-  explicit Analytic(Scene& scene)
+  explicit Analytic(AnalyticScene& scene)
     : Class(Width * Height)
     , Ground(Width * Height)
   {
@@ -334,7 +336,8 @@ vtkSmartPointer<vtkLight> NewLight(const glm::dvec3& position, bool positional, 
 }
 
 /// Sets the only shadowing light of the scene (placed relative to the scene's offset).
-void SetLight(Scene& scene, vtkLight* light, const glm::dvec3& position, const glm::dvec3& focal)
+void SetLight(
+  AnalyticScene& scene, vtkLight* light, const glm::dvec3& position, const glm::dvec3& focal)
 {
   scene.Renderer->RemoveAllLights();
   const glm::dvec3 p = position + scene.Offset, f = focal + scene.Offset;
@@ -360,7 +363,7 @@ struct HardResult
   std::vector<float> Depth;
 };
 
-HardResult TestHardShadow(Scene& scene, bool verbose)
+HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
 {
   // Light 0 a headlight and light 2 switched off: neither gets an image.
   scene.Renderer->RemoveAllLights();
@@ -569,7 +572,7 @@ PenumbraStats MeasurePenumbra(const Analytic& analytic, vtkImageData* image, Exp
 const glm::dvec3 SphericalLightPosition(3.0, 0.0, 4.0);
 constexpr double SphericalLightRadius = 0.5;
 
-void TestSphericalLight(Scene& scene)
+void TestSphericalLight(AnalyticScene& scene)
 {
   std::printf("2. Spherical light (radius %.2f) over a sphere occluder:\n", SphericalLightRadius);
   auto light = NewLight(glm::dvec3(0.0), true, SphericalLightRadius);
@@ -607,7 +610,7 @@ void TestSphericalLight(Scene& scene)
 
 const glm::dvec3 DirectionalToward(1.0, 0.0, 1.0);
 
-void TestDirectionalLight(Scene& scene)
+void TestDirectionalLight(AnalyticScene& scene)
 {
   std::printf("3. Directional light with an angular radius:\n");
   auto light = NewLight(glm::dvec3(0.0), false, 0.0);
@@ -663,7 +666,7 @@ void TestDirectionalLight(Scene& scene)
 // ---------------------------------------------------------------------------------------------
 // 4. Caster exclusion, thread independence, errors.
 
-void TestCasterExclusion(Scene& scene)
+void TestCasterExclusion(AnalyticScene& scene)
 {
   std::printf("4. Sphere excluded from casting:\n");
   auto light = NewLight(glm::dvec3(0.0), true, SphericalLightRadius);
@@ -711,7 +714,7 @@ void TestCasterExclusion(Scene& scene)
     sphereSeen == spherePixels && spherePixels > 100, "non-casters are still hit by primary rays");
 }
 
-void TestThreadsAndErrors(Scene& scene)
+void TestThreadsAndErrors(AnalyticScene& scene)
 {
   std::printf("5. Threads, seeds and errors:\n");
   auto light = NewLight(glm::dvec3(0.0), true, SphericalLightRadius);
@@ -762,7 +765,7 @@ int TestRayTracedVisibility(int, char*[])
   const auto start = std::chrono::steady_clock::now();
   CheckCapFormula();
 
-  Scene scene;
+  AnalyticScene scene;
   std::printf("1. Hard shadow of a sphere from a point light:\n");
   const HardResult near = TestHardShadow(scene, true);
   TestSphericalLight(scene);

@@ -29,16 +29,26 @@ namespace
 {
 constexpr int Width = 320, Height = 240, Samples = 16;
 
-struct Scene
+using penumbra::scene::Point;
+using Scene = penumbra::scene::Description;
+/// Scenes are made afresh for each window: a description's actors hold one window's resources.
+using SceneMaker = std::function<Scene()>;
+
+/// A scene of this test: the ground, the casters `addCasters` adds, one light (positional unless
+/// `directional`) of `radius` (world units, or degrees for a directional light) at `light`, and
+/// the camera at `camera` looking at `focal`.
+Scene MakeScene(const std::string& name, const std::function<void(Scene&)>& addCasters,
+  bool directional = false, double radius = 0.5, const Point& light = { -2.0, 6.0, 3.0 },
+  const Point& camera = { 3.0, 5.0, 8.0 }, const Point& focal = { 0.0, 0.5, 0.0 })
 {
-  std::string Name;
-  std::function<void(vtkRenderer*)> Build;
-  double LightPosition[3] = { -2.0, 6.0, 3.0 };
-  bool Directional = false;
-  double Radius = 0.5; ///< world units, or degrees for a directional light
-  double Camera[3] = { 3.0, 5.0, 8.0 };
-  double Focal[3] = { 0.0, 0.5, 0.0 };
-};
+  Scene scene;
+  scene.Name = name;
+  scene.Add(MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8));
+  addCasters(scene);
+  scene.AddLight(!directional, light, radius);
+  scene.SetCamera(camera, focal, { 0.0, 1.0, 0.0 }, 30.0);
+  return scene;
+}
 
 std::vector<float> Visibility(vtkSoftShadowPass* pass)
 {
@@ -49,14 +59,9 @@ std::vector<float> Visibility(vtkSoftShadowPass* pass)
 struct SceneWindow : PassScene
 {
   explicit SceneWindow(const Scene& scene, bool tightDepthRange = true)
-    : PassScene(Width, Height)
+    : PassScene(Width, Height, StartLight::None)
   {
-    scene.Build(this->Renderer);
-    this->Light->SetPositional(!scene.Directional);
-    this->Light->SetPosition(scene.LightPosition);
-    vtkSoftShadowPass::SetLightRadius(this->Light, scene.Radius);
-    this->Renderer->GetActiveCamera()->SetPosition(scene.Camera);
-    this->Renderer->GetActiveCamera()->SetFocalPoint(scene.Focal);
+    this->AddDescription(scene);
     // The range VTK picks for a 24-bit depth buffer when the camera is reset with the window
     // attached (near plane at 1/1000 of the far one), as an application gets it.
     this->Renderer->SetNearClippingPlaneTolerance(0.001);
@@ -75,8 +80,9 @@ struct Limits
   double Half;
 };
 
-void RunScene(const Scene& scene, const Limits& limits)
+void RunScene(const SceneMaker& make, const Limits& limits)
 {
+  const Scene scene = make();
   SceneWindow view(scene, limits.TightDepthRange);
   vtkRenderer* renderer = view.Renderer;
   vtkRenderWindow* window = view.Window;
@@ -120,9 +126,9 @@ void RunScene(const Scene& scene, const Limits& limits)
 
 /// Stage times: off by default (GPU -1), then every stage timed, the wedges' GPU time > 0 when
 /// counting and none of the stages longer than the whole frame.
-void TestStageTimes(const Scene& base)
+void TestStageTimes(const SceneMaker& make)
 {
-  SceneWindow view(base);
+  SceneWindow view(make());
   vtkSoftShadowPass* pass = view.Pass;
   pass->SetMethodToSoftShadowVolumes();
   view.Window->Render();
@@ -156,9 +162,9 @@ void TestStageTimes(const Scene& base)
 
 /// Automatic counts a small light and averages a large one (penumbra::CountingIsCheaper), and
 /// its image is the chosen method's, bit for bit.
-void TestAutomaticChoice(const Scene& base)
+void TestAutomaticChoice(const SceneMaker& make)
 {
-  SceneWindow view(base);
+  SceneWindow view(make());
   vtkSoftShadowPass* pass = view.Pass;
   for (const double radius : { 0.05, 1.5 })
   {
@@ -192,14 +198,9 @@ void TestAutomaticChoice(const Scene& base)
 /// receiver's penumbrae away.
 void TestReceiversBox()
 {
-  vtkSmartPointer<vtkActor> ground;
-  Scene scene{ "moving receiver",
-    [&ground](vtkRenderer* r)
-    {
-      ground = MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8);
-      r->AddActor(ground);
-      r->AddActor(MakeActor(SphereSource(-0.8, 1.6, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
-    } };
+  const Scene scene = MakeScene("moving receiver",
+    [](Scene& s) { s.Add(MakeActor(SphereSource(-0.8, 1.6, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3)); });
+  vtkActor* ground = scene.Actors.front();
   SceneWindow view(scene);
   vtkSoftShadowPass* pass = view.Pass;
   for (const double drop : { 0.0, 0.3, 2.5 })
@@ -226,13 +227,6 @@ void TestReceiversBox()
   }
 }
 
-vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)
-{
-  auto ground = MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8);
-  renderer->AddActor(ground);
-  return ground;
-}
-
 vtkSmartPointer<vtkAlgorithm> Mobius()
 {
   vtkNew<vtkParametricMobius> mobius;
@@ -247,77 +241,74 @@ vtkSmartPointer<vtkAlgorithm> Mobius()
 
 int main()
 {
-  std::vector<Scene> scenes;
-  scenes.push_back({ "sphere and box",
-    [](vtkRenderer* r)
+  const std::vector<SceneMaker> scenes = {
+    []
     {
-      Ground(r);
-      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
-      r->AddActor(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
-    } });
-  scenes.push_back({ "open sheet, Moebius strip, mirrored",
-    [](vtkRenderer* r)
+      return MakeScene("sphere and box",
+        [](Scene& s)
+        {
+          s.Add(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
+          s.Add(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
+        });
+    },
+    []
     {
-      Ground(r);
-      auto sheet = MakeActor(GroundSource(0.6, 1.4), 0.9, 0.7, 0.3);
-      sheet->SetPosition(-1.2, 0.0, 0.0);
-      r->AddActor(sheet);
-      auto mobius = MakeActor(Mobius(), 0.4, 0.8, 0.4);
-      mobius->SetPosition(1.0, 1.3, -0.5);
-      mobius->SetScale(-1.0, 1.0, 1.0); // mirrored
-      r->AddActor(mobius);
-    } });
-  scenes.push_back({ "overlapping casters",
-    [](vtkRenderer* r)
+      return MakeScene("open sheet, Moebius strip, mirrored",
+        [](Scene& s)
+        {
+          auto sheet = MakeActor(GroundSource(0.6, 1.4), 0.9, 0.7, 0.3);
+          sheet->SetPosition(-1.2, 0.0, 0.0);
+          s.Add(sheet);
+          auto mobius = MakeActor(Mobius(), 0.4, 0.8, 0.4);
+          mobius->SetPosition(1.0, 1.3, -0.5);
+          mobius->SetScale(-1.0, 1.0, 1.0); // mirrored
+          s.Add(mobius);
+        });
+    },
+    []
     {
-      Ground(r);
-      r->AddActor(MakeActor(SphereSource(-0.3, 1.2, 0.0, 0.5, 32, 16), 0.9, 0.3, 0.3));
-      r->AddActor(MakeActor(SphereSource(0.3, 0.8, 0.4, 0.5, 32, 16), 0.3, 0.9, 0.3));
-      r->AddActor(MakeActor(BoxSource(0.2, 1.8, -0.3, 1.2, 0.1, 0.3), 0.3, 0.3, 0.9));
-    } });
-  Scene directional{ "directional light, 4 degrees",
-    [](vtkRenderer* r)
+      return MakeScene("overlapping casters",
+        [](Scene& s)
+        {
+          s.Add(MakeActor(SphereSource(-0.3, 1.2, 0.0, 0.5, 32, 16), 0.9, 0.3, 0.3));
+          s.Add(MakeActor(SphereSource(0.3, 0.8, 0.4, 0.5, 32, 16), 0.3, 0.9, 0.3));
+          s.Add(MakeActor(BoxSource(0.2, 1.8, -0.3, 1.2, 0.1, 0.3), 0.3, 0.3, 0.9));
+        });
+    },
+    []
     {
-      Ground(r);
-      r->AddActor(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
-      r->AddActor(MakeActor(Mobius(), 0.4, 0.8, 0.4));
-    } };
-  directional.Directional = true;
-  directional.Radius = 4.0;
-  scenes.push_back(directional);
-  Scene eyeInPenumbra{ "eye inside a penumbra",
-    [](vtkRenderer* r)
+      return MakeScene(
+        "directional light, 4 degrees",
+        [](Scene& s)
+        {
+          s.Add(MakeActor(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24), 0.9, 0.3, 0.3));
+          s.Add(MakeActor(Mobius(), 0.4, 0.8, 0.4));
+        },
+        true, 4.0);
+    },
+    []
     {
-      Ground(r);
-      r->AddActor(MakeActor(BoxSource(0.0, 2.0, 0.0, 2.0, 0.1, 2.0), 0.6, 0.6, 0.9));
-    } };
-  // Under the slab's edge, looking across the ground: the eye and near plane in its penumbra.
-  eyeInPenumbra.LightPosition[0] = 0.0;
-  eyeInPenumbra.LightPosition[2] = 0.0;
-  eyeInPenumbra.Radius = 1.0;
-  eyeInPenumbra.Camera[0] = 1.0;
-  eyeInPenumbra.Camera[1] = 1.0;
-  eyeInPenumbra.Camera[2] = 1.0;
-  eyeInPenumbra.Focal[0] = -2.0;
-  eyeInPenumbra.Focal[1] = 0.0;
-  eyeInPenumbra.Focal[2] = -2.0;
-  scenes.push_back(eyeInPenumbra);
-  Scene lightInBounds{ "light inside a caster's bounds",
-    [](vtkRenderer* r)
+      // Under the slab's edge, looking across the ground: the eye and near plane in its
+      // penumbra.
+      return MakeScene("eye inside a penumbra",
+        [](Scene& s) { s.Add(MakeActor(BoxSource(0.0, 2.0, 0.0, 2.0, 0.1, 2.0), 0.6, 0.6, 0.9)); },
+        false, 1.0, { 0.0, 6.0, 0.0 }, { 1.0, 1.0, 1.0 }, { -2.0, 0.0, -2.0 });
+    },
+    []
     {
-      Ground(r);
-      auto arch = MakeActor(Mobius(), 0.8, 0.5, 0.3);
-      arch->SetScale(2.5, 2.5, 2.5);
-      arch->SetPosition(0.0, 2.0, 0.0);
-      r->AddActor(arch);
-    } };
-  lightInBounds.LightPosition[0] = 0.3;
-  lightInBounds.LightPosition[1] = 2.5;
-  lightInBounds.LightPosition[2] = 0.2;
-  lightInBounds.Radius = 0.3;
-  scenes.push_back(lightInBounds);
+      return MakeScene("light inside a caster's bounds",
+        [](Scene& s)
+        {
+          auto arch = MakeActor(Mobius(), 0.8, 0.5, 0.3);
+          arch->SetScale(2.5, 2.5, 2.5);
+          arch->SetPosition(0.0, 2.0, 0.0);
+          s.Add(arch);
+        },
+        false, 0.3, { 0.3, 2.5, 0.2 });
+    },
+  };
 
-  for (const Scene& scene : scenes)
+  for (const SceneMaker& scene : scenes)
   {
     // The pass's tight depth range, then VTK's own: counting's point comes from the depth
     // buffer, whose steps the tight range makes tens of times finer (wedges.md).

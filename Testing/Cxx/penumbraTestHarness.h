@@ -5,6 +5,7 @@
 
 #include "penumbraCheck.h"
 #include "penumbraMetrics.h"
+#include "penumbraSceneDescription.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
@@ -27,6 +28,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
+#include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -380,40 +382,103 @@ inline void PlaceCamera(
   renderer->ResetCameraClippingRange();
 }
 
-/// A window with one renderer drawn through a vtkSoftShadowPass, lit by one positional scene
-/// light, and helpers to add casters and compare the shadows with the truth.
+/**
+ * A window drawn through vtkSoftShadowPass, as every rendering test and the hard-case suite
+ * build it: a first renderer (more with AddRenderer, each over its viewport with its own pass),
+ * by default lit by the tests' positional scene light at (-2, 6, 3), helpers to add casters,
+ * lights and a scene description, and the comparison of light `i`'s shadows with the truth.
+ */
 struct PassScene
 {
+  enum class StartLight
+  {
+    Default, ///< one positional scene light at (-2, 6, 3), without a radius: Light
+    None     ///< no light: the test adds its own
+  };
+
   vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkSoftShadowPass> Pass;
-  vtkNew<vtkLight> Light;
+  std::vector<vtkSmartPointer<vtkRenderer>> Renderers;
+  std::vector<vtkSmartPointer<vtkSoftShadowPass>> Passes;
+  vtkRenderer* Renderer = nullptr;   ///< the first renderer
+  vtkSoftShadowPass* Pass = nullptr; ///< its pass
+  vtkSmartPointer<vtkLight> Light;   ///< the start light; null with StartLight::None
   std::vector<vtkSmartPointer<vtkObject>> Keep;
 
-  explicit PassScene(int width = 200, int height = 150)
+  explicit PassScene(int width = 200, int height = 150, StartLight start = StartLight::Default)
   {
     this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetBackground(0.1, 0.1, 0.2);
-    this->Renderer->SetPass(this->Pass);
-    this->Light->SetLightTypeToSceneLight();
-    this->Light->SetPositional(true);
-    this->Light->SetConeAngle(180);
-    this->Light->SetPosition(-2, 6, 3);
-    this->Light->SetFocalPoint(0, 0, 0);
-    this->Renderer->AddLight(this->Light);
+    this->Renderer = this->AddRenderer(0, 0, 1, 1);
+    this->Pass = this->Passes.front();
+    if (start == StartLight::Default)
+    {
+      this->Light = AddSceneLight(this->Renderer, -2, 6, 3);
+    }
   }
 
-  vtkActor* Add(vtkPolyDataAlgorithm* source, double r, double g, double b)
+  /// Adds a renderer with its own pass over `viewport` (xmin, ymin, xmax, ymax).
+  vtkRenderer* AddRenderer(double xmin, double ymin, double xmax, double ymax)
   {
-    return AddActor(this->Renderer, source, r, g, b, this->Keep);
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
+    auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
+    renderer->SetViewport(xmin, ymin, xmax, ymax);
+    renderer->SetBackground(0.1, 0.1, 0.2);
+    renderer->SetPass(pass);
+    this->Window->AddRenderer(renderer);
+    this->Renderers.push_back(renderer);
+    this->Passes.push_back(pass);
+    return renderer;
   }
 
-  vtkActor* Ground(double half = 5.0) { return this->Add(GroundSource(half), 0.85, 0.85, 0.8); }
-
-  vtkActor* Sphere(double x, double y, double z, double radius)
+  /// Puts a scene description's actors, lights and camera into the first renderer, in place of
+  /// what it had; Light becomes the description's first light.
+  void AddDescription(const penumbra::scene::Description& description)
   {
-    return this->Add(SphereSource(x, y, z, radius, 40, 20), 0.9, 0.3, 0.3);
+    description.AddTo(this->Renderer);
+    this->Light = description.Lights.empty() ? nullptr : description.Lights.front();
+  }
+
+  /// A positional scene light with radius `radius` (0: point light), added to `renderer`.
+  vtkLight* PointLight(double x, double y, double z, double radius, vtkRenderer* renderer = nullptr)
+  {
+    auto light = AddSceneLight(renderer ? renderer : this->Renderer, x, y, z);
+    vtkSoftShadowPass::SetLightRadius(light, radius);
+    return light;
+  }
+
+  /// A directional light from the direction (x, y, z), angular radius in degrees.
+  vtkLight* DirectionalLight(double x, double y, double z, double degrees)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetPosition(x, y, z);
+    light->SetFocalPoint(0, 0, 0);
+    vtkSoftShadowPass::SetLightRadius(light, degrees);
+    this->Renderer->AddLight(light);
+    return light;
+  }
+
+  vtkActor* Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer = nullptr)
+  {
+    return AddActor(renderer ? renderer : this->Renderer, source, r, g, b, this->Keep);
+  }
+
+  vtkActor* AddData(vtkPolyData* data, double r, double g, double b)
+  {
+    vtkNew<vtkTrivialProducer> producer;
+    producer->SetOutput(data);
+    return this->Add(producer, r, g, b);
+  }
+
+  vtkActor* Ground(double half = 5.0, double height = 0.0)
+  {
+    return this->Add(GroundSource(half, height), 0.85, 0.85, 0.8);
+  }
+
+  /// A sphere of `resolution` segments round and half as many from pole to pole.
+  vtkActor* Sphere(double x, double y, double z, double radius, int resolution = 40)
+  {
+    return this->Add(SphereSource(x, y, z, radius, resolution, resolution / 2), 0.9, 0.3, 0.3);
   }
 
   vtkActor* Box(double x, double y, double z, double sx, double sy, double sz)
@@ -421,9 +486,10 @@ struct PassScene
     return this->Add(BoxSource(x, y, z, sx, sy, sz), 0.3, 0.5, 0.9);
   }
 
-  void Camera(double px, double py, double pz, double fx, double fy, double fz)
+  void Camera(double px, double py, double pz, double fx, double fy, double fz,
+    vtkRenderer* renderer = nullptr)
   {
-    PlaceCamera(this->Renderer, px, py, pz, fx, fy, fz);
+    PlaceCamera(renderer ? renderer : this->Renderer, px, py, pz, fx, fy, fz);
   }
 
   Comparison Render(int lightIndex = 0)

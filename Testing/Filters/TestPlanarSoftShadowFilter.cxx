@@ -43,9 +43,10 @@ constexpr double LightRadius = 0.6;
 constexpr int Pixels = 256; // truth image is Pixels x Pixels over [-HalfSize, HalfSize]^2
 constexpr double HalfSize = 3.0;
 
-/// Casters: a sphere, a box crossing the ground and a plank narrower than the light samples'
-/// spacing as projected on the ground. `shift` moves the sphere along x.
-struct Scene
+/// The filter's casters, appended into one polydata: a sphere, a box crossing the ground and a
+/// plank narrower than the light samples' spacing as projected on the ground. `shift` moves the
+/// sphere along x.
+struct CasterSet
 {
   vtkNew<vtkSphereSource> Sphere;
   vtkNew<vtkCubeSource> Box;
@@ -53,7 +54,7 @@ struct Scene
   vtkNew<vtkAppendPolyData> Casters;
   bool SphereOnly;
 
-  explicit Scene(double shift = 0.0, bool sphereOnly = false)
+  explicit CasterSet(double shift = 0.0, bool sphereOnly = false)
     : SphereOnly(sphereOnly)
   {
     this->Sphere->SetCenter(-1.0 + shift, 0.4, 1.1);
@@ -149,7 +150,7 @@ std::vector<float> Rasterize(
 /// Ray-traced visibility of the ground from an orthographic camera looking straight down; -1
 /// where a caster hides the ground.
 std::vector<float> TraceTruth(
-  Scene& scene, int pixels, double half, int rays, double cx = 0.0, double cy = 0.0)
+  CasterSet& scene, int pixels, double half, int rays, double cx = 0.0, double cy = 0.0)
 {
   auto window = penumbra_test::NewRenderWindow();
   window->SetSize(pixels, pixels);
@@ -249,7 +250,7 @@ Errors Compare(const std::vector<float>& truth, const std::vector<float>& filter
 
 int TestTruth()
 {
-  Scene scene;
+  CasterSet scene;
   const auto start = std::chrono::steady_clock::now();
   std::vector<float> truth = TraceTruth(scene, Pixels, HalfSize, 256);
   std::printf("     truth traced in %.2f s\n",
@@ -316,7 +317,7 @@ int TestTemporal()
   const double cx = -1.4, cy = 0.35; // the sphere's shadow
   for (int step = 0; step <= steps; ++step)
   {
-    Scene scene(step * dx, true);
+    CasterSet scene(step * dx, true);
     auto filter = MakeFilter(scene.Casters->GetOutputPort());
     filter->Update();
     const std::vector<float> current = Rasterize(filter->GetOutput(), pixels, half, cx, cy);
@@ -589,7 +590,7 @@ int TestBadInput()
 
 int TestImage(const char* baseline, const char* outputDir)
 {
-  Scene scene;
+  CasterSet scene;
   auto filter = MakeFilter(scene.Casters->GetOutputPort());
   filter->SetOffset(0.002);
   filter->OutputLitRegionOn();

@@ -415,7 +415,7 @@ double CompareWithTiles(
   const int w = scene.Window->GetSize()[0], h = scene.Window->GetSize()[1];
   scene.Window->SetSize(w / 2, h / 2);
   vtkNew<vtkRenderLargeImage> large;
-  large->SetInput(scene.Renderer());
+  large->SetInput(scene.Renderer);
   large->SetMagnification(2);
   large->Update();
   vtkImageData* image = large->GetOutput();
@@ -500,7 +500,9 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
   vtkNew<vtkCountingOutputWindow> log;
   vtkOutputWindow::SetInstance(log);
 
-  CaseScene scene(c.Width, c.Height);
+  CaseScene scene(c.Width, c.Height, CaseScene::StartLight::None);
+  // Single-sampled, as the truth is traced: one ray through each pixel centre.
+  scene.Window->SetMultiSamples(0);
   c.Build(scene);
   if (options.CameraOffset != 0.0)
   {
@@ -627,7 +629,7 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
   const View& first = views.front();
   const std::vector<char> firstMask = CompareMask(first);
   int origin[2], size[2];
-  scene.Renderer()->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  scene.Renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   auto greyPanel = [&](vtkImageData* image, int column,
                      const std::vector<std::vector<float>>& lights,
                      const std::vector<std::vector<float>>* truth)

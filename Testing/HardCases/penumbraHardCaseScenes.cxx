@@ -3,8 +3,6 @@
 // degrees (directional), as vtkSoftShadowPass::SetLightRadius takes them.
 #include "penumbraHardCases.h"
 
-#include "penumbraTestHarness.h"
-
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
@@ -54,82 +52,6 @@ const char* MethodName(int method)
 {
   static const char* names[METHOD_COUNT] = { "hard", "averaged16", "wedges", "automatic" };
   return method >= 0 && method < METHOD_COUNT ? names[method] : "?";
-}
-
-//------------------------------------------------------------------------------
-CaseScene::CaseScene(int width, int height)
-{
-  this->Window = penumbra_test::NewRenderWindow(); // one X connection for all windows
-  this->Window->SetMultiSamples(0);
-  this->Window->SetSize(width, height);
-  this->AddRenderer(0, 0, 1, 1);
-}
-
-vtkRenderer* CaseScene::AddRenderer(double xmin, double ymin, double xmax, double ymax)
-{
-  auto renderer = vtkSmartPointer<vtkRenderer>::New();
-  auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
-  renderer->SetViewport(xmin, ymin, xmax, ymax);
-  renderer->SetBackground(0.12, 0.13, 0.2);
-  renderer->SetPass(pass);
-  this->Window->AddRenderer(renderer);
-  this->Renderers.push_back(renderer);
-  this->Passes.push_back(pass);
-  return renderer;
-}
-
-vtkLight* CaseScene::PointLight(double x, double y, double z, double radius, vtkRenderer* renderer)
-{
-  auto light = penumbra_test::AddSceneLight(renderer ? renderer : this->Renderer(), x, y, z);
-  vtkSoftShadowPass::SetLightRadius(light, radius);
-  return light;
-}
-
-vtkLight* CaseScene::DirectionalLight(double x, double y, double z, double degrees)
-{
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(false);
-  light->SetPosition(x, y, z);
-  light->SetFocalPoint(0, 0, 0);
-  vtkSoftShadowPass::SetLightRadius(light, degrees);
-  this->Renderer()->AddLight(light);
-  return light;
-}
-
-vtkActor* CaseScene::Add(vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer)
-{
-  return penumbra_test::AddActor(
-    renderer ? renderer : this->Renderer(), source, r, g, b, this->Keep);
-}
-
-vtkActor* CaseScene::AddData(vtkPolyData* data, double r, double g, double b)
-{
-  vtkNew<vtkTrivialProducer> producer;
-  producer->SetOutput(data);
-  return this->Add(producer, r, g, b);
-}
-
-vtkActor* CaseScene::Ground(double half, double height)
-{
-  return this->Add(penumbra_test::GroundSource(half, height), 0.85, 0.85, 0.8);
-}
-
-vtkActor* CaseScene::Sphere(double x, double y, double z, double radius, int resolution)
-{
-  return this->Add(
-    penumbra_test::SphereSource(x, y, z, radius, resolution, resolution / 2), 0.9, 0.35, 0.3);
-}
-
-vtkActor* CaseScene::Box(double x, double y, double z, double sx, double sy, double sz)
-{
-  return this->Add(penumbra_test::BoxSource(x, y, z, sx, sy, sz), 0.3, 0.5, 0.9);
-}
-
-void CaseScene::Camera(
-  double px, double py, double pz, double fx, double fy, double fz, vtkRenderer* renderer)
-{
-  penumbra_test::PlaceCamera(renderer ? renderer : this->Renderer(), px, py, pz, fx, fy, fz);
 }
 
 namespace
@@ -227,7 +149,7 @@ void TransformedScene(CaseScene& scene, double scale, double offset)
   place(box, 0.3, 0.5, 0.9);
   auto at = [&](double x) { return scale * x + offset; };
   scene.PointLight(at(-2), at(6), at(3), 0.4 * scale);
-  vtkCamera* camera = scene.Renderer()->GetActiveCamera();
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetPosition(at(3), at(4), at(7));
   camera->SetFocalPoint(at(0), at(0.5), at(0));
   camera->SetViewUp(0, 1, 0);
@@ -238,7 +160,7 @@ void TransformedScene(CaseScene& scene, double scale, double offset)
 void ClassicScene(CaseScene& scene, double radius = 0.4)
 {
   scene.Ground();
-  scene.Sphere(-0.8, 0.9, 0, 0.7);
+  scene.Sphere(-0.8, 0.9, 0, 0.7, 32);
   scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
   scene.PointLight(-2, 6, 3, radius);
   scene.Camera(3, 4, 7, 0, 0.5, 0);
@@ -343,7 +265,7 @@ std::vector<HardCase> BuildCases()
     {
       RoofScene(s, 0.5);
       s.Camera(0, 1.0, 0, 4, 0.2, 4);
-      s.Renderer()->GetActiveCamera()->SetClippingRange(0.05, 50);
+      s.Renderer->GetActiveCamera()->SetClippingRange(0.05, 50);
     });
   add("camera_in_penumbra_wedge", 1,
     "the eye inside the wedge of the roof's edge: penumbra unchanged",
@@ -351,7 +273,7 @@ std::vector<HardCase> BuildCases()
     {
       RoofScene(s, 0.8);
       s.Camera(2.3, 1.5, 0, 3.5, 0, 3);
-      s.Renderer()->GetActiveCamera()->SetClippingRange(0.05, 50);
+      s.Renderer->GetActiveCamera()->SetClippingRange(0.05, 50);
     });
   add("near_plane_cuts_volume_and_wedge", 1,
     "the near plane straddles the shadow boundary and its penumbra",
@@ -359,7 +281,7 @@ std::vector<HardCase> BuildCases()
     {
       RoofScene(s, 0.8);
       s.Camera(1.95, 0.8, 0, 1.95, 0.0, 3);
-      s.Renderer()->GetActiveCamera()->SetClippingRange(0.3, 50);
+      s.Renderer->GetActiveCamera()->SetClippingRange(0.3, 50);
     });
 
   // 2. Lights inside bounds and close to surfaces.
@@ -384,7 +306,7 @@ std::vector<HardCase> BuildCases()
     {
       s.Ground();
       s.Box(0.8, 0.15, 0, 0.3, 0.3, 0.3);
-      s.Sphere(-0.6, 0.2, 0.5, 0.2);
+      s.Sphere(-0.6, 0.2, 0.5, 0.2, 32);
       s.PointLight(0, 0.05, 0, 0.02);
       s.Camera(0.5, 4, 4, 0.5, 0, 0);
     });
@@ -632,7 +554,7 @@ std::vector<HardCase> BuildCases()
     [nan, inf](CaseScene& s)
     {
       s.Ground();
-      s.Sphere(-1, 1, 0, 0.5);
+      s.Sphere(-1, 1, 0, 0.5, 32);
       // One polydata with everything mixed: a box as strips and a pentagon, zero-area and
       // duplicated triangles, collinear points, lines and vertices.
       vtkNew<vtkPoints> points;
@@ -711,7 +633,7 @@ std::vector<HardCase> BuildCases()
     [](CaseScene& s)
     {
       s.Ground();
-      vtkActor* a = s.Sphere(0, 0, 0, 0.6);
+      vtkActor* a = s.Sphere(0, 0, 0, 0.6, 32);
       a->SetScale(2, 0.5, 1);
       a->SetPosition(0, 1.2, 0);
       a->RotateY(30);
@@ -743,7 +665,7 @@ std::vector<HardCase> BuildCases()
     [](CaseScene& s)
     {
       s.Ground();
-      s.Sphere(0, 1.0, 0, 0.3);
+      s.Sphere(0, 1.0, 0, 0.3, 32);
       s.PointLight(0, 4, 0, 1.5);
       s.Camera(2, 4, 4, 0, 0.3, 0);
     });
@@ -753,7 +675,7 @@ std::vector<HardCase> BuildCases()
     {
       s.Ground(8);
       s.Box(-2, 0.3, 0, 0.4, 0.6, 0.4);
-      s.Sphere(-1, 0.3, 1, 0.3);
+      s.Sphere(-1, 0.3, 1, 0.3, 32);
       s.DirectionalLight(-1, std::tan(4.0 * 3.14159265358979 / 180.0), 0.2, 1.0);
       s.Camera(2, 4, 6, 1, 0, 0);
     });
@@ -765,7 +687,7 @@ std::vector<HardCase> BuildCases()
     {
       s.Ground();
       s.Box(0.6, 0.5, 0, 1.0, 1.0, 1.0);
-      s.Sphere(-0.9, 0.6, 0.3, 0.6);
+      s.Sphere(-0.9, 0.6, 0.3, 0.6, 32);
       s.PointLight(-2, 5, 2.5, 0.3);
       s.Camera(3, 3, 5, 0, 0.3, 0);
     });
@@ -822,8 +744,8 @@ std::vector<HardCase> BuildCases()
     [](CaseScene& s)
     {
       s.Ground();
-      s.Sphere(-0.4, 1.6, 0, 0.45);
-      s.Sphere(0.3, 1.0, 0.2, 0.4);
+      s.Sphere(-0.4, 1.6, 0, 0.45, 32);
+      s.Sphere(0.3, 1.0, 0.2, 0.4, 32);
       s.Box(0.1, 2.2, -0.3, 0.8, 0.15, 0.8);
       s.PointLight(-0.5, 6, 0.5, 0.5);
       s.Camera(2.5, 4.5, 5, 0, 0.5, 0);
@@ -840,7 +762,7 @@ std::vector<HardCase> BuildCases()
       ClassicScene(s, 0.3);
       s.PointLight(2, 5, -2, 0.3);
       s.PointLight(0, 6, 4, 0.3);
-      auto lights = s.Renderer()->GetLights();
+      auto lights = s.Renderer->GetLights();
       const double colours[3][3] = { { 1, 0.2, 0.2 }, { 0.2, 1, 0.2 }, { 0.3, 0.3, 1 } };
       lights->InitTraversal();
       for (int i = 0; i < 3; ++i)
@@ -867,10 +789,10 @@ std::vector<HardCase> BuildCases()
   add("two_viewports", 12, "two viewports, their own cameras and lights",
     [](CaseScene& s)
     {
-      s.Renderer()->SetViewport(0, 0, 0.5, 1);
+      s.Renderer->SetViewport(0, 0, 0.5, 1);
       ClassicScene(s);
       vtkRenderer* right = s.AddRenderer(0.5, 0, 1, 1);
-      s.Add(s.Renderer()->GetActors()->GetLastActor()->GetMapper()->GetInputAlgorithm(), 0.3, 0.8,
+      s.Add(s.Renderer->GetActors()->GetLastActor()->GetMapper()->GetInputAlgorithm(), 0.3, 0.8,
         0.5, right);
       vtkNew<vtkPlaneSource> plane;
       plane->SetOrigin(-3, 0, -3);
@@ -903,7 +825,7 @@ std::vector<HardCase> BuildCases()
     [](CaseScene& s)
     {
       ClassicScene(s);
-      vtkActor* glass = s.Sphere(1.6, 1.2, -1.2, 0.5);
+      vtkActor* glass = s.Sphere(1.6, 1.2, -1.2, 0.5, 32);
       glass->GetProperty()->SetOpacity(0.4);
       vtkActor* ghost = s.Box(-1.5, 0.5, 1.5, 0.6, 1.0, 0.6);
       vtkSoftShadowPass::SetCastsShadows(ghost, false);
@@ -934,12 +856,12 @@ std::vector<HardCase> BuildCases()
       volume->GetProperty()->SetScalarOpacity(opacity);
       volume->GetProperty()->SetColor(colour);
       volume->GetProperty()->SetScalarOpacityUnitDistance(0.05);
-      s.Renderer()->AddVolume(volume);
+      s.Renderer->AddVolume(volume);
       vtkNew<vtkTextActor> text;
       text->SetInput("overlay");
       text->GetTextProperty()->SetFontSize(14);
       text->SetPosition(4, 4);
-      s.Renderer()->AddActor2D(text);
+      s.Renderer->AddActor2D(text);
       s.Keep.push_back(image.GetPointer());
     });
 
@@ -958,7 +880,7 @@ std::vector<HardCase> BuildCases()
   sweep.Frame = [](CaseScene& s, int frame)
   {
     const double x = 0.35 - 0.0125 * frame; // crosses x = z = 0.3 at frame 4
-    vtkLight* light = vtkLight::SafeDownCast(s.Renderer()->GetLights()->GetItemAsObject(0));
+    vtkLight* light = vtkLight::SafeDownCast(s.Renderer->GetLights()->GetItemAsObject(0));
     light->SetPosition(x, 4, x);
   };
   HardCase& orbit =
@@ -981,7 +903,7 @@ std::vector<HardCase> BuildCases()
   orbit.Frame = [](CaseScene& s, int frame)
   {
     const double angle = (30.0 + frame) * 3.14159265358979 / 180.0;
-    vtkLight* light = vtkLight::SafeDownCast(s.Renderer()->GetLights()->GetItemAsObject(0));
+    vtkLight* light = vtkLight::SafeDownCast(s.Renderer->GetLights()->GetItemAsObject(0));
     light->SetPosition(3 * std::cos(angle), 5, 3 * std::sin(angle));
   };
 

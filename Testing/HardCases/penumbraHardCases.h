@@ -4,19 +4,11 @@
 #ifndef penumbraHardCases_h
 #define penumbraHardCases_h
 
-#include "vtkActor.h"
-#include "vtkLight.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
-#include "vtkSoftShadowPass.h"
+#include "penumbraTestHarness.h"
 
 #include <functional>
 #include <string>
 #include <vector>
-
-class vtkAlgorithm;
-class vtkPolyData;
 
 namespace penumbra_hard
 {
@@ -43,34 +35,9 @@ struct Allowance
   std::string Why;
 };
 
-/// A scene under test: one window, one or more renderers, each with its own shadow pass.
-struct CaseScene
-{
-  vtkSmartPointer<vtkRenderWindow> Window;
-  std::vector<vtkSmartPointer<vtkRenderer>> Renderers;
-  std::vector<vtkSmartPointer<vtkSoftShadowPass>> Passes;
-  std::vector<vtkSmartPointer<vtkObject>> Keep;
-
-  CaseScene(int width, int height);
-  vtkRenderer* Renderer() const { return this->Renderers.front(); }
-  /// Adds a renderer with its own pass over `viewport` (xmin, ymin, xmax, ymax).
-  vtkRenderer* AddRenderer(double xmin, double ymin, double xmax, double ymax);
-
-  /// A positional scene light with radius `radius` (0: point light), added to `renderer`.
-  vtkLight* PointLight(
-    double x, double y, double z, double radius, vtkRenderer* renderer = nullptr);
-  /// A directional light from the direction (x, y, z), angular radius in degrees.
-  vtkLight* DirectionalLight(double x, double y, double z, double degrees);
-
-  vtkActor* Add(
-    vtkAlgorithm* source, double r, double g, double b, vtkRenderer* renderer = nullptr);
-  vtkActor* AddData(vtkPolyData* data, double r, double g, double b);
-  vtkActor* Ground(double half = 5.0, double height = 0.0);
-  vtkActor* Sphere(double x, double y, double z, double radius, int resolution = 32);
-  vtkActor* Box(double x, double y, double z, double sx, double sy, double sz);
-  void Camera(double px, double py, double pz, double fx, double fy, double fz,
-    vtkRenderer* renderer = nullptr);
-};
+/// A scene under test: one window, one or more renderers, each with its own shadow pass; it
+/// starts without a light (the case adds its own).
+using CaseScene = penumbra_test::PassScene;
 
 struct HardCase
 {
