@@ -81,6 +81,7 @@ public:
     {
       this->Delegate->ReleaseGraphicsResources(window);
     }
+    this->Superclass::ReleaseGraphicsResources(window);
   }
 
 protected:

@@ -258,7 +258,6 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   }
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_SCISSOR_TEST); // every geometry pixel
   if (countOffset)
   {
@@ -310,8 +309,6 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
   // Resolve leave this state as they find it.
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglDisable(GL_STENCIL_TEST);

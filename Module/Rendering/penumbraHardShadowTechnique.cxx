@@ -38,8 +38,6 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   {
     return;
   }
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   SetScissor(ostate, covered);
   ostate->vtkglEnable(GL_STENCIL_TEST);

@@ -51,6 +51,9 @@ void LightIntensityBuffer::AttachColour(vtkTextureObject* texture, int layer)
 
 void LightIntensityBuffer::CopyDepth(vtkOpenGLState* ostate)
 {
+  // A blit obeys the scissor test: the whole buffer, whatever box the caller left.
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->PushFramebufferBindings();
   this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
   this->DepthCopyFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);

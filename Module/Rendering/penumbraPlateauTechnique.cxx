@@ -248,7 +248,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   const glm::vec3 normal(plane.Normal), u(plane.U), v(plane.V);
   frame.SetDepthUniforms(resolve);
   resolve->SetUniformi("plateauTexture", this->Depth->GetTextureUnit());
-  resolve->SetUniformMatrix4x4("clipToPlane", const_cast<float*>(glm::value_ptr(clipToPlane)));
+  resolve->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(clipToPlane)));
   resolve->SetUniform3f("planeNormal", glm::value_ptr(normal));
   resolve->SetUniform3f("planeU", glm::value_ptr(u));
   resolve->SetUniform3f("planeV", glm::value_ptr(v));
@@ -279,12 +279,9 @@ void PlateauTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
 
 std::size_t PlateauTechnique::GraphicsMemoryBytes() const
 {
-  const std::size_t texels = this->Depth->GetHandle()
-    ? static_cast<std::size_t>(this->Depth->GetWidth()) * this->Depth->GetHeight()
-    : 0;
   const std::size_t buffer =
     this->Vertices->GetHandle() ? this->Triangles.size() * sizeof(PlateauVertex) : 0;
-  return texels * 4 + buffer + this->HardShadowTechnique::GraphicsMemoryBytes();
+  return TextureBytes(this->Depth) + buffer + this->HardShadowTechnique::GraphicsMemoryBytes();
 }
 
 void PlateauTechnique::ReleaseGraphicsResources(vtkWindow* window)

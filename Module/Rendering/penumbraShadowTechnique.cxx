@@ -60,6 +60,9 @@ ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
   , DepthTest(state, GL_DEPTH_TEST)
   , CullFace(state, GL_CULL_FACE)
   , DepthClamp(state, GL_DEPTH_CLAMP)
+  , ScissorTest(state, GL_SCISSOR_TEST)
+  , ScissorBox(state)
+  , BlendFunc(state)
   , ColorMask(state)
   , DepthMask(state)
   , DepthFunc(state)
@@ -82,6 +85,7 @@ ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
   state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->CullFaceMode);
   glGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquationRGB);
   glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquationAlpha);
+  glGetDoublev(GL_DEPTH_CLEAR_VALUE, &this->ClearDepth);
 }
 
 ScopedDrawState::~ScopedDrawState()
@@ -97,6 +101,7 @@ ScopedDrawState::~ScopedDrawState()
   }
   state->vtkglCullFace(this->CullFaceMode);
   state->vtkglBlendEquationSeparate(this->BlendEquationRGB, this->BlendEquationAlpha);
+  state->vtkglClearDepth(this->ClearDepth);
 }
 
 vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
@@ -214,7 +219,7 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
   const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -buffer.Origin) * this->ClipToWorld);
   const glm::vec4 lightWedge(buffer.LightInWedgeSpace());
   program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
-  program->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+  program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(fromClip)));
   program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
   buffer.Bind(program, attributes);
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(buffer.IndexCount()), GL_UNSIGNED_INT, nullptr);

@@ -128,9 +128,10 @@ private:
 };
 
 /// Saves the GL state the pass's drawing changes and restores it when it goes out of scope,
-/// through vtkOpenGLState: VTK's scoped savers for what they cover (enables, masks, depth
-/// function, clear colour, viewport), and the stencil functions, operations and write masks of
-/// both faces, the culled face and the blend equations beside them, which VTK 9.1 has none for.
+/// through vtkOpenGLState: VTK's scoped savers for what they cover (enables, the scissor test
+/// and box, masks, depth function, blend functions, clear colour, viewport), and the stencil
+/// functions, operations and write masks of both faces, the culled face, the blend equations and
+/// the clear depth beside them, which VTK 9.1 has none for.
 class ScopedDrawState
 {
 public:
@@ -141,7 +142,10 @@ public:
 
 private:
   vtkOpenGLState* State;
-  vtkOpenGLState::ScopedglEnableDisable Blend, StencilTest, DepthTest, CullFace, DepthClamp;
+  vtkOpenGLState::ScopedglEnableDisable Blend, StencilTest, DepthTest, CullFace, DepthClamp,
+    ScissorTest;
+  vtkOpenGLState::ScopedglScissor ScissorBox;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
   vtkOpenGLState::ScopedglColorMask ColorMask;
   vtkOpenGLState::ScopedglDepthMask DepthMask;
   vtkOpenGLState::ScopedglDepthFunc DepthFunc;
@@ -151,6 +155,7 @@ private:
   /// the write mask.
   int Stencil[2][7];
   int CullFaceMode = 0, BlendEquationRGB = 0, BlendEquationAlpha = 0;
+  double ClearDepth = 1.0;
 };
 
 /// Sets the scissor box to `rect` (the scissor test is the caller's).

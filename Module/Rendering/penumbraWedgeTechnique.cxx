@@ -76,7 +76,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
     frame.SetDepthUniforms(horizon);
     horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
-    horizon->SetUniformMatrix4x4("clipToWedge", const_cast<float*>(glm::value_ptr(fromClip)));
+    horizon->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(fromClip)));
     horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglBlendEquation(GL_MIN);

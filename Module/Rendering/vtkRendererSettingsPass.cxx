@@ -67,6 +67,7 @@ public:
     this->FXAA->ReleaseGraphicsResources();
     this->Volumes->ReleaseGraphicsResources(w);
     this->Overlays->ReleaseGraphicsResources(w);
+    this->Superclass::ReleaseGraphicsResources(w);
   }
 
 private:

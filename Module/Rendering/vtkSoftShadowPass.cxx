@@ -765,10 +765,7 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
   // No colour output at all: the LI texture is bound for sampling while this pass draws.
   ostate->vtkglDrawBuffer(GL_NONE);
 
-  vtkOpenGLState::ScopedglViewport viewport(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  penumbra::ScopedDrawState saved(ostate); // stencil write mask and clear depth included
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -962,10 +959,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   }
 
   ostate->PushFramebufferBindings();
-  penumbra::ScopedDrawState saved(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorBox(ostate); // the volumes' scissors change it
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+  penumbra::ScopedDrawState saved(ostate); // the volumes' scissors change the box too
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_BLEND);
@@ -1170,9 +1164,6 @@ penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
   }
   vtkOpenGLState* ostate = this->Window->GetState();
   penumbra::ScopedDrawState saved(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorBox(ostate);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   penumbra::SetScissor(ostate, covered);
   frame.AttachClearedFloatTarget(target, components);

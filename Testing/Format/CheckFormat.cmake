@@ -3,6 +3,7 @@
 file(GLOB_RECURSE sources RELATIVE "${SOURCE_DIR}"
   "${SOURCE_DIR}/Module/*.cxx" "${SOURCE_DIR}/Module/*.h"
   "${SOURCE_DIR}/Testing/*.cxx" "${SOURCE_DIR}/Testing/*.h"
+  "${SOURCE_DIR}/Support/*.h"
   "${SOURCE_DIR}/Benchmarks/*.cxx" "${SOURCE_DIR}/Benchmarks/*.h"
   "${SOURCE_DIR}/Examples/*.cxx" "${SOURCE_DIR}/Examples/*.h")
 execute_process(COMMAND "${CLANG_FORMAT}" --dry-run -Werror ${sources}

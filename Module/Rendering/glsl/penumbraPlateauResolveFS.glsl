@@ -2,10 +2,8 @@
 //VTK::Output::Dec
 // Writes the plateau shadow into the light's LI layer at the pixels that lie on the receiver
 // plane; every other pixel keeps the hard shadow already resolved there.
-uniform sampler2D depthTexture;   // the scene depth
+//PENUMBRA::DepthPoint::Dec
 uniform sampler2D plateauTexture; // plateau depth t over the plane (1 where nothing was drawn)
-uniform mat4 clipToPlane;         // NDC of this viewport to world coordinates minus the plane origin
-uniform vec2 viewportSize;
 uniform vec3 planeNormal;
 uniform vec3 planeU;
 uniform vec3 planeV;
@@ -24,12 +22,9 @@ void main()
   {
     discard;
   }
-  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec4 point = clipToPlane * ndc;
-  vec3 p = point.xyz / point.w;
+  vec3 p = penumbraPointAt(pixel, depth, 0.0);
   // How far the point may be off its true place: a few steps of a 24-bit depth buffer.
-  vec4 next = clipToPlane * (ndc + vec4(0.0, 0.0, 8.0 / 16777216.0, 0.0));
-  float slack = length(next.xyz / next.w - p);
+  float slack = length(penumbraPointAt(pixel, depth, -8.0 / 16777216.0) - p);
   if (abs(dot(p, planeNormal)) > planeTolerance + slack)
   {
     discard;
