@@ -68,16 +68,19 @@ std::vector<int> ScaleLightTerms(
     // directional and positional); only diffuse and specular are scaled, ambient stays.
     const std::string colour = "lightColor" + std::to_string(light.ShaderIndex);
     const std::string factor = "penumbraFactor" + std::to_string(light.ShaderIndex) + " * ";
-    int edits = 0;
-    edits += ReplaceAll(fragmentShader, "diffuse += (df * " + colour + ");",
+    const int diffuse = ReplaceAll(fragmentShader, "diffuse += (df * " + colour + ");",
       "diffuse += (df * " + factor + colour + ");");
-    edits += ReplaceAll(fragmentShader, "specular += (sf * " + colour + ");",
+    const int specular = ReplaceAll(fragmentShader, "specular += (sf * " + colour + ");",
       "specular += (sf * " + factor + colour + ");");
-    edits += ReplaceAll(
-      fragmentShader, "radiance = " + colour + ";", "radiance = " + factor + colour + ";");
-    edits += ReplaceAll(fragmentShader, "radiance = " + colour + " * attenuation;",
-      "radiance = " + factor + colour + " * attenuation;");
-    if (edits == 0 && fragmentShader.find("vec3 " + colour + ";") != std::string::npos)
+    const int radiance = ReplaceAll(fragmentShader, "radiance = " + colour + ";",
+                           "radiance = " + factor + colour + ";") +
+      ReplaceAll(fragmentShader, "radiance = " + colour + " * attenuation;",
+        "radiance = " + factor + colour + " * attenuation;");
+    // VTK writes Phong's diffuse and specular statements as a pair: one without the other
+    // would leave that light's highlights (or its diffuse light) unshadowed.
+    const bool scaled =
+      radiance > 0 ? diffuse == 0 && specular == 0 : diffuse > 0 && diffuse == specular;
+    if (!scaled && fragmentShader.find("vec3 " + colour + ";") != std::string::npos)
     {
       missing.push_back(light.ShaderIndex);
     }

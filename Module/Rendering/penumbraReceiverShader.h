@@ -36,9 +36,9 @@ bool InsertLightFactors(std::string& fragmentShader, const std::string& declarat
 bool IsUnlit(const std::string& fragmentShader);
 
 /// Scales each light's diffuse and specular (Phong) or radiance (PBR) by its factor. Returns
-/// the shader indices of the lights whose colour the shader declares but none of whose
-/// statements were found. A shader VTK wrote unlit (its ambient-plus-diffuse statement) is left
-/// alone and not reported.
+/// the shader indices of the lights whose colour the shader declares but whose statements were
+/// not all found: none of them, or Phong's diffuse without its specular (or the reverse). A shader
+/// VTK wrote unlit (its ambient-plus-diffuse statement) is left alone and not reported.
 std::vector<int> ScaleLightTerms(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights);
 

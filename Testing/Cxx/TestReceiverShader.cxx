@@ -74,6 +74,12 @@ int main()
     other.find("specular += (sf * lightColor1);"), 31, "specular += sf*lightColor1;   ");
   const std::vector<int> missing = penumbra::ScaleLightTerms(other, lights);
   Check(missing.size() == 1 && missing[0] == 1, "another VTK's statements: that light reported");
+  // Only the diffuse statement is VTK 9.1's: the light's highlights would stay unshadowed.
+  std::string halfScaled = PhongShader();
+  halfScaled.replace(
+    halfScaled.find("specular += (sf * lightColor0);"), 31, "specular += sf*lightColor0;   ");
+  const std::vector<int> partial = penumbra::ScaleLightTerms(halfScaled, lights);
+  Check(partial.size() == 1 && partial[0] == 0, "diffuse found without specular: reported");
   // An unlit shader declares no light colour: nothing to scale, nothing to report.
   std::string unlit = "//VTK::Light::Dec\nvoid main() {\n//VTK::Light::Impl\n}\n";
   Check(penumbra::ScaleLightTerms(unlit, lights).empty(), "an unlit shader is not reported");
