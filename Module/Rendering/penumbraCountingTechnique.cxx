@@ -7,7 +7,6 @@
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
@@ -334,7 +333,10 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
       return false;
     }
     SetScissor(ostate, covered);
-    window->GetShaderCache()->ReadyShaderProgram(program);
+    if (!frame.Programs->Bind(window, program, "soft shadow volume transmission"))
+    {
+      return false;
+    }
     this->CountOffset->Activate();
     this->SampleCounters->Activate();
     this->LogTransmission->Activate();

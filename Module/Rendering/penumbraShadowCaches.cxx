@@ -39,27 +39,6 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataObject* data)
 
 } // namespace
 
-void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
-  vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
-  const std::vector<VertexAttribute>& attributes)
-{
-  if (boundProgram != program)
-  {
-    // Releases the old VAO: must come before Bind.
-    vao->ShaderProgramChanged();
-    vao->Bind();
-    const VertexAttribute& last = attributes.back();
-    const std::size_t stride = (last.Offset + last.Components) * sizeof(float);
-    for (const VertexAttribute& attribute : attributes)
-    {
-      vao->AddAttributeArray(program, buffer, attribute.Name, attribute.Offset * sizeof(float),
-        stride, VTK_FLOAT, attribute.Components, false);
-    }
-    boundProgram = program;
-  }
-  vao->Bind();
-}
-
 bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
 {
   this->Used = true;

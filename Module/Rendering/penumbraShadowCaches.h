@@ -15,6 +15,8 @@
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 
+#include "penumbraOpenGLHelpers.h"
+
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLVertexArrayObject.h"
@@ -89,21 +91,6 @@ struct VolumeCache
   std::size_t CapCount() const { return this->Volume.LightCap.size(); }
   std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }
 };
-
-/// A vertex attribute in a buffer of floats: its name in the shader, offset and size in floats.
-struct VertexAttribute
-{
-  const char* Name;
-  int Offset;
-  int Components;
-};
-
-/// Binds `vao` for `program`. When the program is not `boundProgram` (VTK's VAOs hold one
-/// program's attribute locations), the VAO is first released and pointed at `attributes` of
-/// `buffer`, floats packed up to the last attribute's end; `boundProgram` then remembers it.
-void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
-  vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
-  const std::vector<VertexAttribute>& attributes);
 
 /// Wedge vertices and triangles with what they hold, built for a run of edges.
 struct WedgeGeometry
@@ -238,7 +225,7 @@ struct CasterCache
   bool Used = false;
 };
 
-/// The GPU-free data of the pass, plus what it keeps between frames.
+/// Every mesh and caster the pass keeps between frames, found by data object and by actor.
 struct ShadowCaches
 {
   std::map<vtkDataObject*, std::unique_ptr<MeshCache>> Meshes;

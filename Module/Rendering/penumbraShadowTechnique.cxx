@@ -3,15 +3,12 @@
 #include "penumbraCulling.h"
 #include "penumbraLightIntensityBuffer.h"
 
-#include "vtkObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "penumbraDepthPointDec.h"
 #include "penumbraResolveFS.h"
 #include "penumbraResolveVS.h"
 
@@ -38,115 +35,10 @@ const std::vector<glm::dvec4>& ShadowLight::TranslucentSamples() const
   return this->CountsCentreInColour() ? this->CountingSamples : this->Samples;
 }
 
-std::size_t TextureBytes(vtkTextureObject* texture)
+PixelRect ShadowFrame::DrawTranslucentVolumes(const ShadowLight& light, std::size_t first,
+  std::size_t count, vtkTextureObject* target, int components) const
 {
-  if (!texture->GetHandle())
-  {
-    return 0;
-  }
-  return static_cast<std::size_t>(texture->GetWidth()) * texture->GetHeight() *
-    std::max(1u, texture->GetDepth()) * static_cast<std::size_t>(texture->GetComponents()) * 4;
-}
-
-void SetScissor(vtkOpenGLState* state, const PixelRect& rect)
-{
-  state->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);
-}
-
-ScopedDrawState::ScopedDrawState(vtkOpenGLState* state)
-  : State(state)
-  , Blend(state, GL_BLEND)
-  , StencilTest(state, GL_STENCIL_TEST)
-  , DepthTest(state, GL_DEPTH_TEST)
-  , CullFace(state, GL_CULL_FACE)
-  , DepthClamp(state, GL_DEPTH_CLAMP)
-  , ScissorTest(state, GL_SCISSOR_TEST)
-  , ScissorBox(state)
-  , BlendFunc(state)
-  , ColorMask(state)
-  , DepthMask(state)
-  , DepthFunc(state)
-  , ClearColor(state)
-  , Viewport(state)
-{
-  static const GLenum names[2][7] = {
-    { GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL,
-      GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK },
-    { GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
-      GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK }
-  };
-  for (int face = 0; face < 2; ++face)
-  {
-    for (int k = 0; k < 7; ++k)
-    {
-      glGetIntegerv(names[face][k], &this->Stencil[face][k]);
-    }
-  }
-  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->CullFaceMode);
-  glGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquationRGB);
-  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquationAlpha);
-  glGetDoublev(GL_DEPTH_CLEAR_VALUE, &this->ClearDepth);
-}
-
-ScopedDrawState::~ScopedDrawState()
-{
-  vtkOpenGLState* state = this->State;
-  const GLenum faces[2] = { GL_FRONT, GL_BACK };
-  for (int face = 0; face < 2; ++face)
-  {
-    const int* s = this->Stencil[face];
-    state->vtkglStencilFuncSeparate(faces[face], s[0], s[1], static_cast<unsigned int>(s[2]));
-    state->vtkglStencilOpSeparate(faces[face], s[3], s[4], s[5]);
-    state->vtkglStencilMaskSeparate(faces[face], static_cast<unsigned int>(s[6]));
-  }
-  state->vtkglCullFace(this->CullFaceMode);
-  state->vtkglBlendEquationSeparate(this->BlendEquationRGB, this->BlendEquationAlpha);
-  state->vtkglClearDepth(this->ClearDepth);
-}
-
-vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
-  const char* fragmentShader, const char* name, const char* instead)
-{
-  // The pass's fragment shaders share one reconstruction of a pixel's point from depth.
-  std::string fragment = fragmentShader;
-  vtkShaderProgram::Substitute(fragment, "//PENUMBRA::DepthPoint::Dec", penumbraDepthPointDec);
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragment.c_str(), "");
-  if (!program && this->Failed.insert(name).second)
-  {
-    vtkErrorWithObjectMacro(
-      this->Owner, "Could not compile the " << name << " shader: " << instead << ".");
-  }
-  return program;
-}
-
-void FullScreenTriangle::VAO::ReleaseGraphicsResources()
-{
-  this->Array->ReleaseGraphicsResources();
-  this->Program = nullptr;
-}
-
-void FullScreenTriangle::Draw(vtkShaderProgram* program, VAO& vao)
-{
-  if (this->Buffer->GetHandle() == 0)
-  {
-    const std::vector<float> triangle = { -1.f, -1.f, 3.f, -1.f, -1.f, 3.f };
-    this->Buffer->Upload(triangle, vtkOpenGLBufferObject::ArrayBuffer);
-    ++this->Generation;
-  }
-  if (vao.Generation != this->Generation)
-  {
-    vao.Program = nullptr; // bound to the buffer before this one
-    vao.Generation = this->Generation;
-  }
-  BindVertexArray(vao.Array, program, vao.Program, this->Buffer, { { "ndCoordIn", 0, 2 } });
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  vao.Array->Release();
-}
-
-void FullScreenTriangle::ReleaseGraphicsResources()
-{
-  this->Buffer->ReleaseGraphicsResources();
+  return this->Volumes->DrawTranslucent(*this, light, first, count, target, components);
 }
 
 void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const

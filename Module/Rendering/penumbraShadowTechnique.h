@@ -5,8 +5,9 @@
  *
  * vtkSoftShadowPass chooses a ShadowTechnique per light (its internals' ChooseTechnique,
  * then the cost model for Automatic's soft lights) and runs every light the same way: the
- * technique brings its per-caster caches up to date (UpdateCaster), the pass draws the opaque
- * casters' shadow volumes of the light's samples into its layer, the technique writes each
+ * technique brings its per-caster caches up to date (UpdateCaster), the ShadowVolumeRenderer
+ * draws the opaque casters' shadow volumes of the light's samples into its layer, the technique
+ * writes each
  * sample's count into the layer (ResolveSample), and finally draws what is its own (Finish):
  * wedges, counting, plateaus. Translucent casters' volumes are drawn, one light sample at a
  * time, when a technique asks for them (ShadowFrame::DrawTranslucentVolumes). Everything a
@@ -17,18 +18,15 @@
 
 #include "penumbraConvexClip.h"
 #include "penumbraCulling.h"
+#include "penumbraOpenGLHelpers.h"
 #include "penumbraShadowCaches.h"
+#include "penumbraShadowVolumeRenderer.h"
 
-#include "vtkNew.h"
-#include "vtkOpenGLBufferObject.h"
-#include "vtkOpenGLState.h" // for the scoped savers
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkType.h"
 
 #include <glm/glm.hpp>
 
 #include <array>
-#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -91,76 +89,6 @@ struct ShadowLight
   }
 };
 
-/// Bytes a texture of 32-bit components holds on the GPU (0 before it is allocated).
-std::size_t TextureBytes(vtkTextureObject* texture);
-
-/// Readies the pass's shader programs. One that does not build is reported once, with what the
-/// pass does instead, and nullptr returned.
-class ShaderPrograms
-{
-public:
-  vtkObject* Owner = nullptr; ///< the pass, for the errors
-  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
-    const char* fragmentShader, const char* name, const char* instead);
-
-private:
-  std::set<std::string> Failed;
-};
-
-/// A full-screen triangle at the far plane, drawn by the resolve, horizon and plateau passes.
-class FullScreenTriangle
-{
-public:
-  /// One program's vertex array for the triangle; rebound when the triangle was uploaded again.
-  struct VAO
-  {
-    vtkNew<vtkOpenGLVertexArrayObject> Array;
-    vtkShaderProgram* Program = nullptr;
-    std::size_t Generation = 0;
-    void ReleaseGraphicsResources();
-  };
-  void Draw(vtkShaderProgram* program, VAO& vao);
-  void ReleaseGraphicsResources();
-
-private:
-  vtkNew<vtkOpenGLBufferObject> Buffer;
-  std::size_t Generation = 1;
-};
-
-/// Saves the GL state the pass's drawing changes and restores it when it goes out of scope,
-/// through vtkOpenGLState: VTK's scoped savers for what they cover (enables, the scissor test
-/// and box, masks, depth function, blend functions, clear colour, viewport), and the stencil
-/// functions, operations and write masks of both faces, the culled face, the blend equations and
-/// the clear depth beside them, which VTK 9.1 has none for.
-class ScopedDrawState
-{
-public:
-  explicit ScopedDrawState(vtkOpenGLState* state);
-  ~ScopedDrawState();
-  ScopedDrawState(const ScopedDrawState&) = delete;
-  ScopedDrawState& operator=(const ScopedDrawState&) = delete;
-
-private:
-  vtkOpenGLState* State;
-  vtkOpenGLState::ScopedglEnableDisable Blend, StencilTest, DepthTest, CullFace, DepthClamp,
-    ScissorTest;
-  vtkOpenGLState::ScopedglScissor ScissorBox;
-  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
-  vtkOpenGLState::ScopedglColorMask ColorMask;
-  vtkOpenGLState::ScopedglDepthMask DepthMask;
-  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
-  vtkOpenGLState::ScopedglClearColor ClearColor;
-  vtkOpenGLState::ScopedglViewport Viewport;
-  /// Front and back: function, reference, value mask, then fail, depth fail, depth pass, then
-  /// the write mask.
-  int Stencil[2][7];
-  int CullFaceMode = 0, BlendEquationRGB = 0, BlendEquationAlpha = 0;
-  double ClearDepth = 1.0;
-};
-
-/// Sets the scissor box to `rect` (the scissor test is the caller's).
-void SetScissor(vtkOpenGLState* state, const PixelRect& rect);
-
 /// What the techniques add to the pass's statistics.
 struct TechniqueCounts
 {
@@ -188,6 +116,10 @@ struct ShadowFrame
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
   TechniqueCounts Counts;
+  /// Holds every visible prop (the pass's scene box): volumes are drawn only where it may be.
+  Box SceneBox;
+  ShadowVolumeRenderer* Volumes = nullptr;
+
   /// Sums log(1 - opacity) over the translucent surfaces between each pixel's point and the
   /// light's samples first .. first + count - 1 (TranslucentSamples) into channels 0 .. count - 1
   /// of `target`, a float target of `components` (1 or 4) channels allocated for the viewport
@@ -195,9 +127,8 @@ struct ShadowFrame
   /// samples may reach the view. Returns the pixels they may cover, where the target is cleared
   /// to 0 first: it is read only there, and elsewhere the transmission is 1. Empty when none was
   /// drawn. The light's layer is bound again after, and the stencil left as it was.
-  std::function<PixelRect(const ShadowLight& light, std::size_t first, std::size_t count,
-    vtkTextureObject* target, int components)>
-    DrawTranslucentVolumes;
+  PixelRect DrawTranslucentVolumes(const ShadowLight& light, std::size_t first, std::size_t count,
+    vtkTextureObject* target, int components) const;
 
   /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
   /// and its draw buffer; the framebuffer must be bound.

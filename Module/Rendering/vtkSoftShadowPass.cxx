@@ -6,6 +6,7 @@
 #include "penumbraPlateauTechnique.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
+#include "penumbraShadowVolumeRenderer.h"
 #include "penumbraWedgeTechnique.h"
 
 #include "penumbraReceiverShader.h"
@@ -33,7 +34,6 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
@@ -52,8 +52,6 @@
 #include "penumbraShadowVolume.h"
 
 #include "penumbraReceiverDec.h"
-#include "penumbraShadowVolumeFS.h"
-#include "penumbraShadowVolumeVS.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -89,11 +87,6 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
   }
   info->Append(vtkOpenGLRenderPass::RenderPasses(), pass);
 }
-
-vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
-  penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  float weight, vtkIdType& zFailCount);
 
 /// Narrows the active camera's clipping range to the depths of the box of every visible prop
 /// (penumbra::TightClippingRange) while it lives, and restores the camera's own range after.
@@ -151,6 +144,8 @@ public:
   {
     return { &this->Hard, &this->Wedges, &this->Plateaus, &this->Counting };
   }
+
+  penumbra::ShadowVolumeRenderer Volumes;
 
   penumbra::ShadowCaches Caches;
   penumbra::SceneWalk SceneWalk;
@@ -236,17 +231,6 @@ public:
   /// through; wedges and plateaus leave them out (culled for the light), with one warning.
   void SortOutTranslucentCasters(ShadowLight& light);
   bool WarnedTranslucent = false;
-  /// The pixels where the caster's volume from `sample` can count (penumbra::ShadowScissor).
-  penumbra::PixelRect VolumeScissor(const penumbra::CasterCache& caster, const glm::dvec4& sample)
-  {
-    return penumbra::ShadowScissor(caster.WorldMin, caster.WorldMax, sample, this->SceneBox,
-      this->WorldToClip, this->Size[0], this->Size[1]);
-  }
-  /// ShadowFrame::DrawTranslucentVolumes, with the volume program; adds to the pass's counts of
-  /// volume triangles and z-fail volumes.
-  penumbra::PixelRect DrawTranslucentVolumes(const penumbra::ShadowFrame& frame,
-    const ShadowLight& light, std::size_t first, std::size_t count, vtkTextureObject* target,
-    int components, vtkShaderProgram* program, vtkIdType& triangles, vtkIdType& zFailVolumes);
   /// What the techniques draw with this frame.
   penumbra::ShadowFrame MakeFrame();
 
@@ -497,7 +481,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
       penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
       internals.LI.CopyDepth(window->GetState());
     }
-    this->RenderLightIntensity(renderer, window);
+    this->RenderLightIntensity(window);
   }
   internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
@@ -904,16 +888,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
     {
       continue; // translucent casters: UpdateTranslucentVolumes
     }
-    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
-    for (std::size_t k = 0; k < light.Samples.size(); ++k)
-    {
-      penumbra::VolumeCache& volume = caster->Volumes[light.VolumeKey(k)];
-      updates += volume.Update(*caster->Mesh, worldToObject * light.Samples[k], mirrored,
-                   penumbra::CountingRule::FrontFacesWhereTheySuffice)
-        ? 1
-        : 0;
-    }
+    updates += penumbra::ShadowVolumeRenderer::UpdateOpaque(light, *caster);
     updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBox);
   }
   return updates;
@@ -928,38 +903,24 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateTranslucentVolumes(const Shadow
     {
       continue;
     }
-    // Its count is the number of its surfaces in the way, for each sample on its own
-    // (DrawTranslucentVolumes); the technique keeps nothing else for it.
-    const glm::dmat4 worldToObject = glm::inverse(caster->ObjectToWorld);
-    const bool mirrored = glm::determinant(caster->ObjectToWorld) < 0.0;
-    const std::vector<glm::dvec4>& samples = light.TranslucentSamples();
-    for (std::size_t k = 0; k < samples.size(); ++k)
-    {
-      penumbra::VolumeCache& volume = caster->Volumes[light.TranslucentVolumeKey(k)];
-      updates += volume.Update(*caster->Mesh, worldToObject * samples[k], mirrored,
-                   penumbra::CountingRule::EveryTriangle)
-        ? 1
-        : 0;
-    }
+    updates += penumbra::ShadowVolumeRenderer::UpdateTranslucent(light, *caster);
   }
   return updates;
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
+void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = window->GetState();
-
-  vtkShaderProgram* volumeProgram = internals.Programs.Ready(
-    window, penumbraShadowVolumeVS, penumbraShadowVolumeFS, "shadow-volume", "no shadow is drawn");
-  if (!volumeProgram)
+  penumbra::ShadowFrame frame = internals.MakeFrame();
+  if (!internals.Volumes.Begin(frame))
   {
     return;
   }
 
   ostate->PushFramebufferBindings();
-  penumbra::ScopedDrawState saved(ostate); // the volumes' scissors change the box too
+  penumbra::ScopedDrawState saved(ostate);
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_BLEND);
@@ -968,13 +929,6 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
-  penumbra::ShadowFrame frame = internals.MakeFrame();
-  frame.DrawTranslucentVolumes = [&](const vtkInternals::ShadowLight& light, std::size_t first,
-                                   std::size_t count, vtkTextureObject* target, int components)
-  {
-    return internals.DrawTranslucentVolumes(frame, light, first, count, target, components,
-      volumeProgram, this->NumberOfShadowVolumeTriangles, this->NumberOfZFailVolumes);
-  };
   for (const auto& light : internals.Lights)
   {
     // Each light's volumes and technique leave the state as they found it.
@@ -985,47 +939,11 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     internals.LI.BindLayer(light.Layer);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    // Wedges and soft shadow volumes count the centre's volumes in colour (additive float).
-    const bool countInColour = light.CountsCentreInColour();
     light.Technique->BeginVolumes(frame, light);
     internals.StageTimes.Begin(penumbra::StageTimes::Volumes);
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
-      ostate->vtkglStencilMask(0xFF);
-      ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
-      if (countInColour)
-      {
-        ostate->vtkglEnable(GL_BLEND);
-        ostate->vtkglDisable(GL_STENCIL_TEST);
-      }
-      else
-      {
-        ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        ostate->vtkglDisable(GL_BLEND);
-        ostate->vtkglEnable(GL_STENCIL_TEST);
-        ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
-      }
-      window->GetShaderCache()->ReadyShaderProgram(volumeProgram);
-      // Each volume only where its cone from the sample meets the scene: elsewhere it counts 0.
-      // Translucent casters' volumes are drawn when the technique asks for them.
-      ostate->vtkglEnable(GL_SCISSOR_TEST);
-      for (penumbra::CasterCache* caster : internals.Casters)
-      {
-        if (caster->Culled.count(light.Light) || caster->Translucent())
-        {
-          continue;
-        }
-        const penumbra::PixelRect rect = internals.VolumeScissor(*caster, light.Samples[k]);
-        if (!rect.Empty())
-        {
-          penumbra::SetScissor(ostate, rect);
-          this->NumberOfShadowVolumeTriangles += DrawShadowVolume(ostate, volumeProgram, *caster,
-            light.VolumeKey(k), light.Samples[k], internals.WorldToClip, internals.NearCorners,
-            countInColour, 1.0f, this->NumberOfZFailVolumes);
-        }
-      }
-      ostate->vtkglDisable(GL_SCISSOR_TEST);
-
+      internals.Volumes.DrawOpaqueSample(frame, light, k);
       ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
       light.Technique->ResolveSample(frame, light, k);
@@ -1036,159 +954,13 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRen
     light.Technique->Finish(frame, light);
     this->NumberOfAveragedLights += light.Samples.size() > 1 ? 1 : 0;
   }
+  this->NumberOfShadowVolumeTriangles = internals.Volumes.GetTriangles();
+  this->NumberOfZFailVolumes = internals.Volumes.GetZFailVolumes();
   this->NumberOfPenumbraWedges = frame.Counts.Wedges;
   this->NumberOfFullViewportWedges = frame.Counts.FullViewportWedges;
   this->NumberOfPlateauTriangles = frame.Counts.PlateauTriangles;
   this->NumberOfCountedLights = frame.Counts.CountedLights;
   ostate->PopFramebufferBindings();
-}
-
-namespace
-{
-/// NDC depth by which light caps are pushed back: well above float rounding of the two
-/// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
-constexpr float CapDepthBias = 5e-5f;
-
-/// Draws one caster's volume for one light into the stencil, or with `countInColor` into colour
-/// (-weight per crossing in front of the point, z-pass, or the same total from those behind it,
-/// z-fail); returns the triangles drawn.
-vtkIdType DrawShadowVolume(vtkOpenGLState* ostate, vtkShaderProgram* program,
-  penumbra::CasterCache& caster, const std::pair<vtkLight*, int>& key, const glm::dvec4& lightWorld,
-  const glm::dmat4& worldToClip, const std::array<glm::dvec3, 4>& nearCorners, bool countInColor,
-  float weight, vtkIdType& zFailCount)
-{
-  penumbra::VolumeCache& volume = caster.Volumes[key];
-  if (volume.Volume.CastingTriangles == 0)
-  {
-    return 0;
-  }
-  const bool zFail =
-    penumbra::VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, lightWorld, nearCorners);
-  // Points seen through a translucent caster lie behind its light cap, which z-pass must then
-  // count too; behind an opaque one nothing is seen.
-  const bool seeThrough = caster.SeenThrough;
-  if (zFail || seeThrough)
-  {
-    volume.EnsureCaps(*caster.Mesh);
-  }
-  const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
-                    lightCap = volume.CapCount();
-  const glm::mat4 objectToClip(worldToClip * caster.ObjectToWorld);
-  const glm::vec4 lightObject(volume.Light);
-  program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
-  program->SetUniform4f("lightMC", glm::value_ptr(lightObject));
-  caster.Mesh->Bind(program);
-  volume.Upload();
-  volume.Indices->Bind();
-
-  vtkIdType drawn = 0;
-  if (!zFail)
-  {
-    // z-pass: count volume faces in front of the visible surface; caps are not needed but for
-    // a translucent caster's light cap.
-    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-    ostate->vtkglDepthFunc(GL_LESS);
-    program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
-    drawn = static_cast<vtkIdType>(sides / 3);
-    if (seeThrough)
-    {
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
-      drawn += static_cast<vtkIdType>(lightCap / 3);
-    }
-  }
-  else
-  {
-    // z-fail: count faces behind it, caps included; depth clamping keeps the far end at
-    // infinity from being clipped. Counting in colour, "behind" is a depth test that passes.
-    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-    ostate->vtkglDepthFunc(countInColor ? GL_GEQUAL : GL_LESS);
-    program->SetUniformf("frontFaceValue", weight); // leaving it behind the point does
-    ostate->vtkglEnable(GL_DEPTH_CLAMP);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
-    // The light cap lies on the caster's own surface: pushed away from the eye, a visible point
-    // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
-    // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
-    // push cannot move it behind any other visible point.
-    // A caster seen through is not in the depth pass: its cap needs no push, and one could move
-    // it behind an opaque point just behind it.
-    program->SetUniformf("capDepthBias", seeThrough ? 0.0f : CapDepthBias);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT,
-      reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t)));
-    program->SetUniformf("capDepthBias", 0.0f);
-    ostate->vtkglDisable(GL_DEPTH_CLAMP);
-    drawn = static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
-    ++zFailCount;
-  }
-  volume.Indices->Release();
-  caster.Mesh->VAO->Release();
-  return drawn;
-}
-} // namespace
-
-penumbra::PixelRect vtkSoftShadowPass::vtkInternals::DrawTranslucentVolumes(
-  const penumbra::ShadowFrame& frame, const ShadowLight& light, std::size_t first,
-  std::size_t count, vtkTextureObject* target, int components, vtkShaderProgram* program,
-  vtkIdType& triangles, vtkIdType& zFailVolumes)
-{
-  struct Volume
-  {
-    penumbra::CasterCache* Caster;
-    std::size_t Sample;
-    penumbra::PixelRect Rect;
-  };
-  std::vector<Volume> volumes;
-  penumbra::PixelRect covered;
-  for (std::size_t k = first; k < first + count; ++k)
-  {
-    for (penumbra::CasterCache* caster : this->Casters)
-    {
-      if (caster->Translucent() && !caster->Culled.count(light.Light))
-      {
-        const penumbra::PixelRect rect =
-          this->VolumeScissor(*caster, light.TranslucentSamples()[k]);
-        if (!rect.Empty())
-        {
-          volumes.push_back({ caster, k, rect });
-          covered = covered.United(rect);
-        }
-      }
-    }
-  }
-  if (volumes.empty())
-  {
-    return covered;
-  }
-  vtkOpenGLState* ostate = this->Window->GetState();
-  penumbra::ScopedDrawState saved(ostate);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
-  penumbra::SetScissor(ostate, covered);
-  frame.AttachClearedFloatTarget(target, components);
-  ostate->vtkglDisable(GL_DEPTH_CLAMP); // as for the opaque volumes: z-fail turns it on itself
-  // Each crossing adds log(1 - opacity) to its sample's channel; the stencil keeps what the
-  // opaque casters' volumes or the counting made of it.
-  ostate->vtkglDisable(GL_STENCIL_TEST);
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthMask(GL_FALSE);
-  ostate->vtkglDisable(GL_CULL_FACE);
-  this->Window->GetShaderCache()->ReadyShaderProgram(program);
-  for (const Volume& volume : volumes)
-  {
-    const int channel = static_cast<int>(volume.Sample - first);
-    ostate->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
-    penumbra::SetScissor(ostate, volume.Rect);
-    triangles +=
-      DrawShadowVolume(ostate, program, *volume.Caster, light.TranslucentVolumeKey(volume.Sample),
-        light.TranslucentSamples()[volume.Sample], this->WorldToClip, this->NearCorners, true,
-        static_cast<float>(-std::log1p(-volume.Caster->Opacity)), zFailVolumes);
-  }
-  frame.AttachColour(frame.LightIntensity, light.Layer);
-  return covered;
 }
 
 penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
@@ -1207,6 +979,8 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;
+  frame.SceneBox = this->SceneBox;
+  frame.Volumes = &this->Volumes;
   return frame;
 }
 
@@ -1312,7 +1086,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
   if (!missing.empty())
   {
     this->WarnShaderEdit(mapper, prop,
-      "does not contain VTK 9.1's diffuse and specular statements for light " +
+      "does not contain all of VTK 9.1's diffuse and specular statements for light " +
         std::to_string(missing.front()) + " (another VTK version, or custom light code?)");
   }
   return true;

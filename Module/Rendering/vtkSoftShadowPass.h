@@ -359,7 +359,7 @@ private:
   void PrepareFramebuffer(vtkOpenGLRenderWindow* window);
   void RenderDepth(const vtkRenderState* s);
   void UpdateCasters(const vtkRenderState* s);
-  void RenderLightIntensity(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  void RenderLightIntensity(vtkOpenGLRenderWindow* window);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -1,0 +1,120 @@
+/**
+ * @file    penumbraOpenGLHelpers.h
+ * @brief   The GL plumbing every stage of vtkSoftShadowPass shares, written once: readying and
+ *          reporting its shader programs, binding a vertex array to a program, the full-screen
+ *          triangle, the scoped saver of the state it changes, scissor boxes and texture sizes.
+ */
+#ifndef penumbraOpenGLHelpers_h
+#define penumbraOpenGLHelpers_h
+
+#include "penumbraCulling.h" // for PixelRect
+
+#include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLState.h" // for the scoped savers
+#include "vtkOpenGLVertexArrayObject.h"
+
+#include <cstddef>
+#include <set>
+#include <string>
+#include <vector>
+
+class vtkObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+namespace penumbra
+{
+
+/// Bytes a texture of 32-bit components holds on the GPU (0 before it is allocated).
+std::size_t TextureBytes(vtkTextureObject* texture);
+
+/// Readies the pass's shader programs. One that does not build is reported once, with what the
+/// pass does instead, and nullptr returned.
+class ShaderPrograms
+{
+public:
+  vtkObject* Owner = nullptr; ///< the pass, for the errors
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
+    const char* fragmentShader, const char* name, const char* instead);
+  /// Binds a program Ready returned before, after other programs were drawn with; false (and
+  /// reported once under `name`) when the shader cache cannot bind it.
+  bool Bind(vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const char* name);
+
+private:
+  std::set<std::string> Failed;
+};
+
+/// A vertex attribute in a buffer of floats: its name in the shader, offset and size in floats.
+struct VertexAttribute
+{
+  const char* Name;
+  int Offset;
+  int Components;
+};
+
+/// Binds `vao` for `program`. When the program is not `boundProgram` (VTK's VAOs hold one
+/// program's attribute locations), the VAO is first released and pointed at `attributes` of
+/// `buffer`, floats packed up to the last attribute's end; `boundProgram` then remembers it.
+void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
+  vtkShaderProgram*& boundProgram, vtkOpenGLBufferObject* buffer,
+  const std::vector<VertexAttribute>& attributes);
+
+/// A full-screen triangle at the far plane, drawn by the resolve, horizon and plateau passes.
+class FullScreenTriangle
+{
+public:
+  /// One program's vertex array for the triangle; rebound when the triangle was uploaded again.
+  struct VAO
+  {
+    vtkNew<vtkOpenGLVertexArrayObject> Array;
+    vtkShaderProgram* Program = nullptr;
+    std::size_t Generation = 0;
+    void ReleaseGraphicsResources();
+  };
+  void Draw(vtkShaderProgram* program, VAO& vao);
+  void ReleaseGraphicsResources();
+
+private:
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  std::size_t Generation = 1;
+};
+
+/// Saves the GL state the pass's drawing changes and restores it when it goes out of scope,
+/// through vtkOpenGLState: VTK's scoped savers for what they cover (enables, the scissor test
+/// and box, masks, depth function, blend functions, clear colour, viewport), and the stencil
+/// functions, operations and write masks of both faces, the culled face, the blend equations and
+/// the clear depth beside them, which VTK 9.1 has none for.
+class ScopedDrawState
+{
+public:
+  explicit ScopedDrawState(vtkOpenGLState* state);
+  ~ScopedDrawState();
+  ScopedDrawState(const ScopedDrawState&) = delete;
+  ScopedDrawState& operator=(const ScopedDrawState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglEnableDisable Blend, StencilTest, DepthTest, CullFace, DepthClamp,
+    ScissorTest;
+  vtkOpenGLState::ScopedglScissor ScissorBox;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  /// Front and back: function, reference, value mask, then fail, depth fail, depth pass, then
+  /// the write mask.
+  int Stencil[2][7];
+  int CullFaceMode = 0, BlendEquationRGB = 0, BlendEquationAlpha = 0;
+  double ClearDepth = 1.0;
+};
+
+/// Sets the scissor box to `rect` (the scissor test is the caller's).
+void SetScissor(vtkOpenGLState* state, const PixelRect& rect);
+
+} // namespace penumbra
+
+#endif

@@ -1,0 +1,256 @@
+#include "penumbraShadowVolumeRenderer.h"
+
+#include "penumbraShadowTechnique.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include "penumbraShadowVolumeFS.h"
+#include "penumbraShadowVolumeVS.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace penumbra
+{
+namespace
+{
+
+/// NDC depth by which light caps are pushed back: well above float rounding of the two
+/// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
+constexpr float CapDepthBias = 5e-5f;
+
+/// The pixels where the caster's volume from `sample` can count (penumbra::ShadowScissor).
+PixelRect VolumeScissor(
+  const ShadowFrame& frame, const CasterCache& caster, const glm::dvec4& sample)
+{
+  return ShadowScissor(caster.WorldMin, caster.WorldMax, sample, frame.SceneBox, frame.WorldToClip,
+    frame.Size[0], frame.Size[1]);
+}
+
+} // namespace
+
+vtkIdType ShadowVolumeRenderer::UpdateOpaque(const ShadowLight& light, CasterCache& caster)
+{
+  const glm::dmat4 worldToObject = glm::inverse(caster.ObjectToWorld);
+  const bool mirrored = glm::determinant(caster.ObjectToWorld) < 0.0;
+  vtkIdType updates = 0;
+  for (std::size_t k = 0; k < light.Samples.size(); ++k)
+  {
+    VolumeCache& volume = caster.Volumes[light.VolumeKey(k)];
+    updates += volume.Update(*caster.Mesh, worldToObject * light.Samples[k], mirrored,
+                 CountingRule::FrontFacesWhereTheySuffice)
+      ? 1
+      : 0;
+  }
+  return updates;
+}
+
+vtkIdType ShadowVolumeRenderer::UpdateTranslucent(const ShadowLight& light, CasterCache& caster)
+{
+  const glm::dmat4 worldToObject = glm::inverse(caster.ObjectToWorld);
+  const bool mirrored = glm::determinant(caster.ObjectToWorld) < 0.0;
+  const std::vector<glm::dvec4>& samples = light.TranslucentSamples();
+  vtkIdType updates = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    VolumeCache& volume = caster.Volumes[light.TranslucentVolumeKey(k)];
+    updates +=
+      volume.Update(*caster.Mesh, worldToObject * samples[k], mirrored, CountingRule::EveryTriangle)
+      ? 1
+      : 0;
+  }
+  return updates;
+}
+
+bool ShadowVolumeRenderer::Begin(const ShadowFrame& frame)
+{
+  this->Triangles = 0;
+  this->ZFailVolumes = 0;
+  this->Program = frame.Programs->Ready(frame.Window, penumbraShadowVolumeVS,
+    penumbraShadowVolumeFS, "shadow-volume", "no shadow is drawn");
+  return this->Program != nullptr;
+}
+
+void ShadowVolumeRenderer::DrawOpaqueSample(
+  const ShadowFrame& frame, const ShadowLight& light, std::size_t k)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  const bool countInColour = light.CountsCentreInColour();
+  ostate->vtkglStencilMask(0xFF);
+  ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  ostate->vtkglDisable(GL_DEPTH_CLAMP); // z-fail turns it on for itself
+  if (countInColour)
+  {
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglDisable(GL_STENCIL_TEST);
+  }
+  else
+  {
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglEnable(GL_STENCIL_TEST);
+    ostate->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+  }
+  if (!frame.Programs->Bind(frame.Window, this->Program, "shadow-volume"))
+  {
+    return;
+  }
+  // Translucent casters' volumes are drawn when the technique asks for them.
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  for (CasterCache* caster : *frame.Casters)
+  {
+    if (caster->Culled.count(light.Light) || caster->Translucent())
+    {
+      continue;
+    }
+    const PixelRect rect = VolumeScissor(frame, *caster, light.Samples[k]);
+    if (!rect.Empty())
+    {
+      SetScissor(ostate, rect);
+      this->DrawVolume(frame, *caster, light.VolumeKey(k), light.Samples[k], countInColour, 1.0f);
+    }
+  }
+}
+
+PixelRect ShadowVolumeRenderer::DrawTranslucent(const ShadowFrame& frame, const ShadowLight& light,
+  std::size_t first, std::size_t count, vtkTextureObject* target, int components)
+{
+  struct Volume
+  {
+    CasterCache* Caster;
+    std::size_t Sample;
+    PixelRect Rect;
+  };
+  std::vector<Volume> volumes;
+  PixelRect covered;
+  for (std::size_t k = first; k < first + count; ++k)
+  {
+    for (CasterCache* caster : *frame.Casters)
+    {
+      if (caster->Translucent() && !caster->Culled.count(light.Light))
+      {
+        const PixelRect rect = VolumeScissor(frame, *caster, light.TranslucentSamples()[k]);
+        if (!rect.Empty())
+        {
+          volumes.push_back({ caster, k, rect });
+          covered = covered.United(rect);
+        }
+      }
+    }
+  }
+  if (volumes.empty())
+  {
+    return covered;
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ScopedDrawState saved(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  SetScissor(ostate, covered);
+  frame.AttachClearedFloatTarget(target, components);
+  ostate->vtkglDisable(GL_DEPTH_CLAMP); // as for the opaque volumes: z-fail turns it on itself
+  // Each crossing adds log(1 - opacity) to its sample's channel; the stencil keeps what the
+  // opaque casters' volumes or the counting made of it.
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  if (frame.Programs->Bind(frame.Window, this->Program, "shadow-volume"))
+  {
+    for (const Volume& volume : volumes)
+    {
+      const int channel = static_cast<int>(volume.Sample - first);
+      ostate->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
+      SetScissor(ostate, volume.Rect);
+      this->DrawVolume(frame, *volume.Caster, light.TranslucentVolumeKey(volume.Sample),
+        light.TranslucentSamples()[volume.Sample], true,
+        static_cast<float>(-std::log1p(-volume.Caster->Opacity)));
+    }
+  }
+  frame.AttachColour(frame.LightIntensity, light.Layer);
+  return covered;
+}
+
+void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& caster,
+  const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour, float weight)
+{
+  VolumeCache& volume = caster.Volumes[key];
+  if (volume.Volume.CastingTriangles == 0)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkShaderProgram* program = this->Program;
+  const bool zFail =
+    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, sample, frame.NearCorners);
+  // Points seen through a translucent caster lie behind its light cap, which z-pass must then
+  // count too; behind an opaque one nothing is seen.
+  const bool seeThrough = caster.SeenThrough;
+  if (zFail || seeThrough)
+  {
+    volume.EnsureCaps(*caster.Mesh);
+  }
+  const std::size_t sides = volume.SideCount(), darkCap = volume.DarkCapCount(),
+                    lightCap = volume.CapCount();
+  const auto* lightCapStart =
+    reinterpret_cast<const void*>((sides + darkCap) * sizeof(std::uint32_t));
+  const glm::mat4 objectToClip(frame.WorldToClip * caster.ObjectToWorld);
+  const glm::vec4 lightObject(volume.Light);
+  program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
+  program->SetUniform4f("lightMC", glm::value_ptr(lightObject));
+  caster.Mesh->Bind(program);
+  volume.Upload();
+  volume.Indices->Bind();
+
+  if (!zFail)
+  {
+    // z-pass: count volume faces in front of the visible surface; caps are not needed but for
+    // a translucent caster's light cap.
+    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    ostate->vtkglDepthFunc(GL_LESS);
+    program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
+    this->Triangles += static_cast<vtkIdType>(sides / 3);
+    if (seeThrough)
+    {
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
+      this->Triangles += static_cast<vtkIdType>(lightCap / 3);
+    }
+  }
+  else
+  {
+    // z-fail: count faces behind it, caps included; depth clamping keeps the far end at
+    // infinity from being clipped. Counting in colour, "behind" is a depth test that passes.
+    ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    ostate->vtkglDepthFunc(countInColour ? GL_GEQUAL : GL_LESS);
+    program->SetUniformf("frontFaceValue", weight); // leaving it behind the point does
+    vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
+    ostate->vtkglEnable(GL_DEPTH_CLAMP);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
+    // The light cap lies on the caster's own surface: pushed away from the eye, a visible point
+    // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
+    // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
+    // push cannot move it behind any other visible point.
+    // A caster seen through is not in the depth pass: its cap needs no push, and one could move
+    // it behind an opaque point just behind it.
+    program->SetUniformf("capDepthBias", seeThrough ? 0.0f : CapDepthBias);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
+    program->SetUniformf("capDepthBias", 0.0f);
+    this->Triangles += static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
+    ++this->ZFailVolumes;
+  }
+  volume.Indices->Release();
+  caster.Mesh->VAO->Release();
+}
+
+} // namespace penumbra
