@@ -8,6 +8,7 @@
 //
 //   build/bin/PenumbraGeometryBench [--runs N]
 #include "penumbraCasterTopology.h"
+#include "penumbraOptions.h"
 #include "penumbraShadowVolume.h"
 
 #include "vtkFlyingEdges3D.h"
@@ -20,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,17 +40,24 @@ double MedianMs(int runs, const std::function<void()>& work)
   std::sort(ms.begin(), ms.end());
   return ms[ms.size() / 2];
 }
+
+void Usage(const char* program)
+{
+  std::fprintf(stderr,
+    "usage: %s [--runs N]\n"
+    "  CPU geometry per triangle on time-varying data: the median of N runs (default 5)\n"
+    "  of a first topology build, a rebuild and a shadow volume, per mesh.\n",
+    program);
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
   int runs = 5;
-  for (int i = 1; i + 1 < argc; ++i)
+  using namespace penumbra::bench;
+  if (!ParseOptions(argc, argv, { IntOption("--runs", 1, 1000, runs) }, Usage))
   {
-    if (!std::strcmp(argv[i], "--runs"))
-    {
-      runs = std::max(1, std::atoi(argv[i + 1]));
-    }
+    return 2;
   }
   std::printf("%-8s %10s %10s %8s %11s %8s %10s %8s\n", "extent", "triangles", "first ms", "ns/tri",
     "rebuild ms", "ns/tri", "volume ms", "ns/tri");

@@ -1,6 +1,5 @@
 // Header-only helpers shared by PenumbraBench, PenumbraLoad, the demo (Examples/PenumbraDemo.cxx)
-// and the hard-case suite: command-line parsing, frame-time summaries, frame grabs and PNG
-// output.
+// and the hard-case suite: frame-time summaries, frame grabs and PNG output.
 #ifndef penumbraBenchSupport_h
 #define penumbraBenchSupport_h
 
@@ -24,7 +23,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -99,7 +97,6 @@ private:
   }
 };
 
-/// The non-empty items of a comma-separated list.
 /// One more frame with `pass`'s stage times on (the pipeline drained at each stage's end): the
 /// wall-clock milliseconds of each stage, in vtkSoftShadowPass's stage order.
 inline std::vector<double> TimedStages(vtkSoftShadowPass* pass, vtkRenderWindow* window)
@@ -113,46 +110,6 @@ inline std::vector<double> TimedStages(vtkSoftShadowPass* pass, vtkRenderWindow*
     ms.push_back(pass->GetStageCPUMilliseconds(stage));
   }
   return ms;
-}
-
-inline std::vector<std::string> SplitList(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');)
-  {
-    if (!item.empty())
-    {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
-/// Parses a whole string as an integer in [minimum, maximum]; false (value untouched) otherwise.
-inline bool ParseInt(const char* text, int minimum, int maximum, int& value)
-{
-  char* end = nullptr;
-  const long parsed = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || parsed < minimum || parsed > maximum)
-  {
-    return false;
-  }
-  value = static_cast<int>(parsed);
-  return true;
-}
-
-/// Parses a whole string as a finite number >= minimum; false (value untouched) otherwise.
-inline bool ParseDouble(const char* text, double minimum, double& value)
-{
-  char* end = nullptr;
-  const double parsed = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(parsed) || parsed < minimum)
-  {
-    return false;
-  }
-  value = parsed;
-  return true;
 }
 
 /// The algorithm's polydata output, detached from the pipeline (a mapper holding it keeps it

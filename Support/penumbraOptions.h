@@ -1,15 +1,16 @@
-// One table-driven command-line parser for the demo, the benchmark and the load test: each
-// program lists its options and what each does with its value; parsing, help, and the errors
-// for a missing value, an unknown option or a bad value are written once, here.
+// One table-driven command-line parser for every program of the project (the demo, the
+// benchmarks, the load test, the hard-case suite and the fuzz driver): each lists its options
+// and what each does with its value; parsing, help, and the errors for a missing value, an
+// unknown option or a bad value are written once, here. Needs nothing but the standard library.
 #ifndef penumbraOptions_h
 #define penumbraOptions_h
 
-#include "penumbraBenchSupport.h"
-
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,47 @@ namespace penumbra
 {
 namespace bench
 {
+
+/// The non-empty items of a comma-separated list.
+inline std::vector<std::string> SplitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+/// Parses a whole string as an integer in [minimum, maximum]; false (value untouched) otherwise.
+inline bool ParseInt(const char* text, int minimum, int maximum, int& value)
+{
+  char* end = nullptr;
+  const long parsed = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || parsed < minimum || parsed > maximum)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+/// Parses a whole string as a finite number >= minimum; false (value untouched) otherwise.
+inline bool ParseDouble(const char* text, double minimum, double& value)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(parsed) || parsed < minimum)
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
 
 /// One option: its name (and an optional short alias), and what it does with its value. A
 /// flag takes no value (Take receives nullptr). Take returns false for a bad value.
@@ -114,10 +156,12 @@ inline Option ListOption(const std::string& name, std::vector<std::string>& targ
 /**
  * Parses argv against `table`. -h and --help print `usage` and exit; a missing value, an
  * unknown option or a bad value is reported on stderr, prefixed with the program's name, and
- * returns false.
+ * returns false. An argument that does not start with '-' goes to `positional` where the
+ * program takes some (input files), and is an error otherwise.
  */
-inline bool ParseOptions(
-  int argc, char* argv[], const std::vector<Option>& table, void (*usage)(const char* program))
+inline bool ParseOptions(int argc, char* argv[], const std::vector<Option>& table,
+  void (*usage)(const char* program),
+  const std::function<void(const char* argument)>& positional = nullptr)
 {
   for (int i = 1; i < argc; ++i)
   {
@@ -126,6 +170,11 @@ inline bool ParseOptions(
     {
       usage(argv[0]);
       std::exit(EXIT_SUCCESS);
+    }
+    if (positional && arg.compare(0, 1, "-") != 0)
+    {
+      positional(argv[i]);
+      continue;
     }
     const auto option = std::find_if(table.begin(), table.end(),
       [&](const Option& o) { return o.Name == arg || (!o.Alias.empty() && o.Alias == arg); });

@@ -6,6 +6,7 @@
 //   penumbraGeometryFuzzSmoke [--runs N] [--seed S] [--max-len L] [--crash-dir DIR]
 //                             [--write-seeds DIR] [FILE|DIR]...
 #include "penumbraFuzzInput.h"
+#include "penumbraOptions.h"
 
 #include <algorithm>
 #include <csignal>
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -281,54 +283,43 @@ std::vector<std::pair<std::string, Bytes>> Seeds()
 
 } // namespace
 
+void Usage(const char* program)
+{
+  std::fprintf(stderr,
+    "usage: %s [--runs N] [--seed S] [--max-len L] [--crash-dir DIR] [--write-seeds DIR] "
+    "[FILE|DIR]...\n"
+    "  replays the corpus files given, then N pseudo-random and mutated inputs of at most L\n"
+    "  bytes from seed S; --write-seeds writes the seed corpus into DIR and stops.\n",
+    program);
+}
+
 int main(int argc, char* argv[])
 {
-  long runs = 0;
-  unsigned seed = 1;
-  std::size_t maxLength = 4096;
+  int runs = 0;
+  int seed = 1;
+  int maxLength = 4096;
+  std::string seedDir;
   std::vector<fs::path> inputs;
-  for (int i = 1; i < argc; ++i)
+  using namespace penumbra::bench;
+  const std::vector<Option> table = { IntOption("--runs", 0, std::numeric_limits<int>::max(), runs),
+    IntOption("--seed", 0, std::numeric_limits<int>::max(), seed),
+    IntOption("--max-len", 0, 1 << 24, maxLength), TextOption("--crash-dir", CrashDir),
+    TextOption("--write-seeds", seedDir) };
+  if (!ParseOptions(
+        argc, argv, table, Usage, [&](const char* input) { inputs.emplace_back(input); }))
   {
-    const std::string arg = argv[i];
-    if (arg == "--runs" && i + 1 < argc)
+    return 2;
+  }
+  if (!seedDir.empty())
+  {
+    fs::create_directories(seedDir);
+    for (const auto& s : Seeds())
     {
-      runs = std::strtol(argv[++i], nullptr, 10);
+      const fs::path path = fs::path(seedDir) / s.first;
+      WriteFile(path, s.second);
+      std::printf("wrote %s (%zu bytes)\n", path.c_str(), s.second.size());
     }
-    else if (arg == "--seed" && i + 1 < argc)
-    {
-      seed = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
-    }
-    else if (arg == "--max-len" && i + 1 < argc)
-    {
-      maxLength = static_cast<std::size_t>(std::strtoul(argv[++i], nullptr, 10));
-    }
-    else if (arg == "--crash-dir" && i + 1 < argc)
-    {
-      CrashDir = argv[++i];
-    }
-    else if (arg == "--write-seeds" && i + 1 < argc)
-    {
-      const fs::path dir = argv[++i];
-      fs::create_directories(dir);
-      for (const auto& s : Seeds())
-      {
-        WriteFile(dir / s.first, s.second);
-        std::printf("wrote %s (%zu bytes)\n", (dir / s.first).c_str(), s.second.size());
-      }
-      return 0;
-    }
-    else if (arg.rfind("--", 0) == 0)
-    {
-      std::fprintf(stderr,
-        "usage: %s [--runs N] [--seed S] [--max-len L] [--crash-dir DIR] [--write-seeds DIR] "
-        "[FILE|DIR]...\n",
-        argv[0]);
-      return 2;
-    }
-    else
-    {
-      inputs.emplace_back(arg);
-    }
+    return 0;
   }
 
   CurrentPath = (fs::path(CrashDir) / "penumbra-fuzz-last-input").string();
@@ -363,7 +354,7 @@ int main(int argc, char* argv[])
   std::printf("replayed %zu corpus file(s)\n", corpus.size());
 
   std::mt19937 rng(seed);
-  for (long r = 0; r < runs; ++r)
+  for (int r = 0; r < runs; ++r)
   {
     Bytes input;
     if (!corpus.empty() && r % 2 == 1)
@@ -380,6 +371,6 @@ int main(int argc, char* argv[])
     }
     Run(input, "random input " + std::to_string(r));
   }
-  std::printf("ran %ld pseudo-random input(s) from seed %u: no invariant violated\n", runs, seed);
+  std::printf("ran %d pseudo-random input(s) from seed %d: no invariant violated\n", runs, seed);
   return 0;
 }

@@ -31,6 +31,7 @@
 
 #include "penumbraBenchSupport.h"
 #include "penumbraMetrics.h"
+#include "penumbraOptions.h"
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
@@ -52,6 +53,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -760,37 +762,48 @@ std::string Format(double value, const char* format)
 
 } // namespace
 
+void Usage(const char* program)
+{
+  std::fprintf(stderr,
+    "usage: %s [--group N]... [--case NAME]... [--check] [--baselines DIR] "
+    "[--write-baselines] [--output DIR] [--report FILE.md] [--camera-offset D]\n"
+    "  runs the hard cases (all, or those of the groups and names given) with every method\n"
+    "  against the ray-traced truth; --check makes a failure the exit status.\n",
+    program);
+}
+
+bool ParseArguments(int argc, char* argv[], Options& options)
+{
+  using namespace penumbra::bench;
+  return ParseOptions(argc, argv,
+    { ValueOption("--group",
+        [&](const char* value)
+        {
+          int group = 0;
+          const bool ok = ParseInt(value, 1, 1000, group);
+          options.Groups.insert(group);
+          return ok;
+        }),
+      ValueOption("--case",
+        [&](const char* value)
+        {
+          options.Names.insert(value);
+          return true;
+        }),
+      FlagOption("--check", [&] { options.Check = true; }),
+      TextOption("--baselines", options.Baselines),
+      FlagOption("--write-baselines", [&] { options.WriteBaselines = true; }),
+      TextOption("--output", options.Output), TextOption("--report", options.Report),
+      DoubleOption("--camera-offset", -std::numeric_limits<double>::max(), options.CameraOffset) },
+    Usage);
+}
+
 int main(int argc, char* argv[])
 {
   Options options;
-  for (int i = 1; i < argc; ++i)
+  if (!ParseArguments(argc, argv, options))
   {
-    const std::string arg = argv[i];
-    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
-    if (arg == "--group")
-      options.Groups.insert(std::stoi(next()));
-    else if (arg == "--case")
-      options.Names.insert(next());
-    else if (arg == "--check")
-      options.Check = true;
-    else if (arg == "--baselines")
-      options.Baselines = next();
-    else if (arg == "--write-baselines")
-      options.WriteBaselines = true;
-    else if (arg == "--output")
-      options.Output = next();
-    else if (arg == "--report")
-      options.Report = next();
-    else if (arg == "--camera-offset")
-      options.CameraOffset = std::stod(next());
-    else
-    {
-      std::fprintf(stderr,
-        "usage: %s [--group N]... [--case NAME]... [--check] [--baselines DIR] "
-        "[--write-baselines] [--output DIR] [--report FILE.md] [--camera-offset D]\n",
-        argv[0]);
-      return 2;
-    }
+    return 2;
   }
   mkdir(options.Output.c_str(), 0755);
 
