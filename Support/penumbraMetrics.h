@@ -1,6 +1,6 @@
 // penumbraMetrics.h: error metrics of a shadowing method against ray-traced ground truth, shared by
-// PenumbraBench and PenumbraDemo. Header-only, plain arrays (no VTK, no GLM), so that anything
-// holding images as rows of floats or bytes can use it.
+// PenumbraBench, PenumbraDemo, the tests and the hard-case suite. Header-only, plain arrays (no
+// VTK, no GLM), so that anything holding images as rows of floats or bytes can use it.
 //
 // Two comparisons, both restricted to pixels where the rasterized surface and the ray-traced one
 // are the same (truth depth and window z-buffer both below 1 and within a tolerance):
@@ -14,6 +14,10 @@
 //   the final image (shadow maps, no shadows at all).
 //
 // Luminance is Rec. 709 (0.2126, 0.7152, 0.0722) of RGB in [0, 1].
+//
+// The tests judge pixel by pixel, with two more helpers: ComparablePixels (the same surface and
+// no object silhouette next to it) and NearTruthValue (a difference that a shadow edge displaced
+// by one pixel explains).
 #ifndef penumbraMetrics_h
 #define penumbraMetrics_h
 
@@ -94,6 +98,7 @@ inline bool SameSurface(float truthDepth, float zbuffer, float depthTolerance)
 struct Options
 {
   float DepthTolerance = 1e-3f;         ///< |truth depth - z-buffer| below this: same surface
+  float SilhouetteStep = 5e-3f;         ///< truth depth step to a neighbour above this: silhouette
   float LitThreshold = 1e-3f;           ///< visibility below 1 - this counts as (partly) shadowed
   double DarkerThreshold = 1.0 / 255.0; ///< method darker than D by more than this: shadowed
 };
@@ -196,6 +201,66 @@ inline ErrorStats CompareTruths(const float* truthA, const float* truthB, const 
     errors.push_back(std::abs(truthA[p] - truthB[p]));
   }
   return Summarize(errors);
+}
+
+/**
+ * The pixels of a width x height view where a method can be judged pixel by pixel against the
+ * truth: the rasterized and ray-traced surface are the same, and no neighbour (3x3) lies across
+ * an object silhouette, where one pixel of rasterization moves the surface itself. The border is
+ * left out. Empty (nothing comparable) when the sizes disagree.
+ */
+inline std::vector<char> ComparablePixels(const std::vector<float>& truthDepth,
+  const std::vector<float>& zbuffer, int width, int height, const Options& options = Options())
+{
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<char> mask(pixels, 0);
+  if (truthDepth.size() != pixels || zbuffer.size() != pixels)
+  {
+    return mask;
+  }
+  for (int y = 1; y + 1 < height; ++y)
+  {
+    for (int x = 1; x + 1 < width; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y) * width + x;
+      const float d = truthDepth[p];
+      if (!SameSurface(d, zbuffer[p], options.DepthTolerance))
+      {
+        continue;
+      }
+      bool silhouette = false;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          silhouette |= std::abs(truthDepth[p + dy * width + dx] - d) > options.SilhouetteStep;
+        }
+      }
+      mask[p] = !silhouette;
+    }
+  }
+  return mask;
+}
+
+/**
+ * True when some truth value in the 3x3 neighbourhood of the interior pixel p is within
+ * `tolerance` of `value`: the method's value there is a shadow edge displaced by up to a pixel
+ * (sampling and tessellation move edges that much), not a wrong shadow.
+ */
+inline bool NearTruthValue(
+  const std::vector<float>& truth, int width, std::size_t p, float value, float tolerance)
+{
+  for (int dy = -1; dy <= 1; ++dy)
+  {
+    for (int dx = -1; dx <= 1; ++dx)
+    {
+      if (std::abs(truth[p + dy * width + dx] - value) <= tolerance)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 } // namespace metrics

@@ -31,9 +31,10 @@
 #include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
-
 #include <utility>
 #include <vector>
 
@@ -149,26 +150,35 @@ void TestLightInsideClosedCaster()
   CheckAgainstTruth("light inside a closed caster", c, 0.9);
 }
 
-/// Mean absolute visibility error against the truth over pixels in shadow or penumbra.
-double SoftError(Scene& scene, vtkImageData* truth, vtkImageData* depth)
+/// Light `lightIndex`'s soft visibility after a fresh frame against `truth`, by the benchmark's
+/// measure (VisibilityError); Finite: every value of the pass's image is within [0, 1].
+struct SoftComparison
+{
+  penumbra::metrics::ErrorStats Error;
+  bool Finite = true;
+};
+
+SoftComparison CompareSoft(Scene& scene, vtkRayTracedVisibility* truth, int lightIndex = 0)
 {
   scene.Window->Render();
-  auto ours =
-    vtkFloatArray::SafeDownCast(scene.Pass->GetVisibilityImage(0)->GetPointData()->GetScalars());
-  auto expected = vtkFloatArray::SafeDownCast(truth->GetPointData()->GetScalars());
-  auto z = vtkFloatArray::SafeDownCast(depth->GetPointData()->GetScalars());
-  double sum = 0;
-  int count = 0;
-  for (vtkIdType i = 0; i < ours->GetNumberOfValues(); ++i)
-  {
-    const float t = expected->GetValue(i), v = ours->GetValue(i);
-    if (z->GetValue(i) < 1.0f && (t < 0.999f || v < 0.999f))
-    {
-      sum += std::abs(t - v);
-      ++count;
-    }
-  }
-  return count ? sum / count : 1.0;
+  SoftComparison result;
+  const std::vector<float> ours = ImageValues(scene.Pass->GetVisibilityImage(lightIndex));
+  result.Finite = std::all_of(
+    ours.begin(), ours.end(), [](float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; });
+  result.Error =
+    VisibilityError(ours, truth, lightIndex, WindowDepth(scene.Window, scene.Renderer));
+  return result;
+}
+
+/// The same against a fresh 256-sample truth of the scene as it stands.
+SoftComparison CompareSoft(Scene& scene, int lightIndex = 0)
+{
+  scene.Window->Render();
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(scene.Renderer);
+  truth->SetSamplesPerLight(256);
+  truth->Update();
+  return CompareSoft(scene, truth, lightIndex);
 }
 
 void TestAveragedHardShadows()
@@ -193,75 +203,30 @@ void TestAveragedHardShadows()
   for (int i = 0; i < 3; ++i)
   {
     scene.Pass->SetLightSamples(samples[i]);
-    errors[i] = SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
+    errors[i] = CompareSoft(scene, truth).Error.MAE;
     std::printf("     averaged %d samples: MAE %.4f\n", samples[i], errors[i]);
   }
   Check(errors[1] < errors[0] && errors[2] < errors[1], "averaged error shrinks with samples");
   Check(errors[2] < 0.012, "averaged 64 samples within 0.012 MAE of the truth");
   scene.Pass->SetMethodToHardVolumes();
-  const double hard = SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
+  const double hard = CompareSoft(scene, truth).Error.MAE;
   std::printf("     hard volumes on the same light: MAE %.4f\n", hard);
   Check(hard > 2 * errors[1], "hard shadows ignore the radius (larger error)");
   // Automatic counts or averages the same 64 samples: the error of averaging 64.
   scene.Pass->SetMethodToAutomatic();
-  const double automatic = SoftError(scene, truth->GetVisibilityImage(0), truth->GetDepthImage());
+  const double automatic = CompareSoft(scene, truth).Error.MAE;
   std::printf("     automatic: MAE %.4f\n", automatic);
   Check(std::abs(automatic - errors[2]) < 0.003, "automatic is as accurate as averaging 64");
-}
-
-/// Soft visibility of light `lightIndex` against a 256-sample truth: mean absolute error and
-/// fraction off by more than 0.1, over pixels where either is below 1 and the surfaces agree.
-struct SoftComparison
-{
-  double MeanError = 1.0, FractionAbove01 = 1.0, MinimumVisibility = 1.0;
-  int Pixels = 0;
-  bool Finite = true;
-};
-
-SoftComparison CompareSoft(Scene& scene, int lightIndex = 0)
-{
-  SoftComparison result;
-  scene.Window->Render();
-  vtkNew<vtkRayTracedVisibility> truth;
-  truth->SetRenderer(scene.Renderer);
-  truth->SetSamplesPerLight(256);
-  truth->Update();
-  auto ours = vtkFloatArray::SafeDownCast(
-    scene.Pass->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
-  auto expected = vtkFloatArray::SafeDownCast(
-    truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
-  auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
-  double sum = 0;
-  int above = 0;
-  for (vtkIdType i = 0; i < ours->GetNumberOfValues(); ++i)
-  {
-    const float t = expected->GetValue(i), v = ours->GetValue(i);
-    result.Finite = result.Finite && std::isfinite(v) && v >= 0.0f && v <= 1.0f;
-    if (depth->GetValue(i) >= 1.0f || (t > 0.999f && v > 0.999f))
-    {
-      continue;
-    }
-    result.MinimumVisibility = std::min(result.MinimumVisibility, double(v));
-    sum += std::abs(t - v);
-    above += std::abs(t - v) > 0.1f;
-    ++result.Pixels;
-  }
-  if (result.Pixels)
-  {
-    result.MeanError = sum / result.Pixels;
-    result.FractionAbove01 = double(above) / result.Pixels;
-  }
-  return result;
 }
 
 void CheckSoft(
   const std::string& name, const SoftComparison& c, double meanTolerance, double fractionTolerance)
 {
-  std::printf("     %s: %d px in shadow or penumbra, MAE %.4f, >0.1: %.2f%%\n", name.c_str(),
-    c.Pixels, c.MeanError, 100.0 * c.FractionAbove01);
-  Check(c.Pixels > 500, name + ": penumbra in view");
+  std::printf("     %s: %zu px in shadow or penumbra, MAE %.4f, >0.1: %.2f%%\n", name.c_str(),
+    c.Error.Pixels, c.Error.MAE, 100.0 * c.Error.FracGt01);
+  Check(c.Error.Pixels > 500, name + ": penumbra in view");
   Check(c.Finite, name + ": visibility finite and within [0, 1]");
-  Check(c.MeanError <= meanTolerance && c.FractionAbove01 <= fractionTolerance,
+  Check(c.Error.MAE <= meanTolerance && c.Error.FracGt01 <= fractionTolerance,
     name + ": agrees with the ray-traced soft shadow");
 }
 
@@ -673,9 +638,9 @@ void TestAutomaticOnLayeredOutlines()
     "camera orbit does no silhouette work with Automatic's soft shadow volumes");
   scene.Pass->SetMethodToPenumbraWedges();
   const SoftComparison wedges = CompareSoft(scene);
-  std::printf("     forced wedges on it: MAE %.4f, >0.1: %.2f%%\n", wedges.MeanError,
-    100.0 * wedges.FractionAbove01);
-  Check(wedges.MeanError > automatic.MeanError, "counting is the better choice there");
+  std::printf("     forced wedges on it: MAE %.4f, >0.1: %.2f%%\n", wedges.Error.MAE,
+    100.0 * wedges.Error.FracGt01);
+  Check(wedges.Error.MAE > automatic.Error.MAE, "counting is the better choice there");
 }
 
 void TestCachingAndHeadlights()

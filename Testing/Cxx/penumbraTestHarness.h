@@ -299,50 +299,23 @@ inline Comparison CompareWithTruth(
   }
   int size[2], origin[2];
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-  const int w = size[0], h = size[1];
-  const std::vector<float> zbuffer = WindowDepth(window, renderer);
-  auto pass_ = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  auto true_ = vtkFloatArray::SafeDownCast(
-    truth->GetVisibilityImage(lightIndex)->GetPointData()->GetScalars());
-  auto depth = vtkFloatArray::SafeDownCast(truth->GetDepthImage()->GetPointData()->GetScalars());
-  auto at = [w](int x, int y) { return static_cast<vtkIdType>(y) * w + x; };
-  for (int y = 1; y + 1 < h; ++y)
+  const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(lightIndex));
+  const std::vector<float> actual = ImageValues(image);
+  const std::vector<char> comparable = penumbra::metrics::ComparablePixels(
+    ImageValues(truth->GetDepthImage()), WindowDepth(window, renderer), size[0], size[1]);
+  for (std::size_t p = 0; p < comparable.size(); ++p)
   {
-    for (int x = 1; x + 1 < w; ++x)
+    if (!comparable[p])
     {
-      const float d = depth->GetValue(at(x, y));
-      if (!penumbra::metrics::SameSurface(d, zbuffer[at(x, y)], 1e-3f))
-      {
-        continue;
-      }
-      bool silhouette = false;
-      for (int dy = -1; dy <= 1; ++dy)
-      {
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          silhouette |= std::abs(depth->GetValue(at(x + dx, y + dy)) - d) > 5e-3f;
-        }
-      }
-      if (silhouette)
-      {
-        continue;
-      }
-      ++result.Compared;
-      const float expected = true_->GetValue(at(x, y)), actual = pass_->GetValue(at(x, y));
-      result.Shadowed += expected < 0.5f;
-      if (std::abs(expected - actual) <= 0.5f)
-      {
-        continue;
-      }
-      bool nearBoundary = false;
-      for (int dy = -1; dy <= 1; ++dy)
-      {
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          nearBoundary |= std::abs(true_->GetValue(at(x + dx, y + dy)) - actual) <= 0.5f;
-        }
-      }
-      ++(nearBoundary ? result.Boundary : result.Mismatched);
+      continue;
+    }
+    ++result.Compared;
+    result.Shadowed += expected[p] < 0.5f;
+    if (std::abs(expected[p] - actual[p]) > 0.5f)
+    {
+      const bool displaced =
+        penumbra::metrics::NearTruthValue(expected, size[0], p, actual[p], 0.5f);
+      ++(displaced ? result.Boundary : result.Mismatched);
     }
   }
   return result;

@@ -65,6 +65,8 @@ namespace
 {
 
 using penumbra::bench::vtkCountingOutputWindow;
+using penumbra_test::ImageValues;
+using penumbra_test::WindowDepth;
 
 constexpr double DefaultMAE[METHOD_COUNT] = { 0.05, 0.04, 0.04, 0.04 };
 constexpr double TemporalLimit = 0.005; ///< share of pixels popping in the worst step
@@ -96,13 +98,6 @@ struct View
   std::vector<std::vector<char>> Facing;
 };
 
-std::vector<float> Values(vtkImageData* image)
-{
-  auto array = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  return std::vector<float>(
-    array->GetPointer(0), array->GetPointer(0) + array->GetNumberOfValues());
-}
-
 /// Ray-traced truth of one renderer: `samples` per light, or the lights' centres when hard.
 std::vector<std::vector<float>> Truth(
   vtkRenderer* renderer, const std::vector<int>& lights, bool hard, std::vector<float>* depth)
@@ -126,11 +121,11 @@ std::vector<std::vector<float>> Truth(
   {
     for (int index : lights)
     {
-      images.push_back(Values(truth->GetVisibilityImage(index)));
+      images.push_back(ImageValues(truth->GetVisibilityImage(index)));
     }
     if (depth)
     {
-      *depth = Values(truth->GetDepthImage());
+      *depth = ImageValues(truth->GetDepthImage());
     }
   }
   for (std::size_t i = 0; i < radii.size(); ++i)
@@ -247,16 +242,12 @@ std::vector<std::vector<std::vector<float>>> PassVisibility(
   for (std::size_t r = 0; r < scene.Renderers.size(); ++r)
   {
     View& view = views[r];
-    int size[2], origin[2];
-    scene.Renderers[r]->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-    view.ZBuffer.assign(static_cast<std::size_t>(size[0]) * size[1], 1.0f);
-    scene.Window->GetZbufferData(
-      origin[0], origin[1], origin[0] + size[0] - 1, origin[1] + size[1] - 1, view.ZBuffer.data());
+    view.ZBuffer = WindowDepth(scene.Window, scene.Renderers[r]);
     std::vector<std::vector<float>> lights;
     for (int index : view.Lights)
     {
       vtkImageData* image = scene.Passes[r]->GetVisibilityImage(index);
-      lights.push_back(image ? Values(image) : std::vector<float>(view.ZBuffer.size(), 1.0f));
+      lights.push_back(image ? ImageValues(image) : std::vector<float>(view.ZBuffer.size(), 1.0f));
     }
     result.push_back(std::move(lights));
   }
@@ -266,34 +257,7 @@ std::vector<std::vector<std::vector<float>>> PassVisibility(
 /// Pixels compared: same surface in both, no object silhouette in the 3x3 neighbourhood.
 std::vector<char> CompareMask(const View& view)
 {
-  const int w = view.Width, h = view.Height;
-  std::vector<char> mask(view.Depth.size(), 0);
-  if (view.ZBuffer.size() != view.Depth.size())
-  {
-    return mask;
-  }
-  for (int y = 1; y + 1 < h; ++y)
-  {
-    for (int x = 1; x + 1 < w; ++x)
-    {
-      const std::size_t p = static_cast<std::size_t>(y) * w + x;
-      const float d = view.Depth[p];
-      if (d >= 1.0f || view.ZBuffer[p] >= 1.0f || std::abs(d - view.ZBuffer[p]) > 1e-3f)
-      {
-        continue;
-      }
-      bool silhouette = false;
-      for (int dy = -1; dy <= 1 && !silhouette; ++dy)
-      {
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          silhouette |= std::abs(view.Depth[p + dy * w + dx] - d) > 5e-3f;
-        }
-      }
-      mask[p] = !silhouette;
-    }
-  }
-  return mask;
+  return penumbra::metrics::ComparablePixels(view.Depth, view.ZBuffer, view.Width, view.Height);
 }
 
 void Accumulate(Row& row, const View& view, const std::vector<char>& mask,
@@ -319,18 +283,7 @@ void Accumulate(Row& row, const View& view, const std::vector<char>& mask,
       ++row.Pixels;
       row.ErrorSum += error;
       row.Over01 += error > 0.1f;
-      if (error > 0.5f)
-      {
-        bool displacedEdge = false;
-        for (int dy = -1; dy <= 1; ++dy)
-        {
-          for (int dx = -1; dx <= 1; ++dx)
-          {
-            displacedEdge |= std::abs(t[p + dy * w + dx] - v[p]) <= 0.5f;
-          }
-        }
-        row.Leaks += !displacedEdge;
-      }
+      row.Leaks += error > 0.5f && !penumbra::metrics::NearTruthValue(t, w, p, v[p], 0.5f);
     }
   }
 }
