@@ -43,6 +43,22 @@ inline vtkIdType CountTriangles(vtkPolyData* data)
   return triangles;
 }
 
+/// A scene light shining all round (cone 180) from `position` towards `focal`, or a directional
+/// one from `position` towards it; `radius` in world units, or degrees for a directional light:
+/// the one way the benchmarks, the load test and the tests make a shadowing light.
+inline vtkSmartPointer<vtkLight> MakeLight(bool positional, const Point& position, double radius,
+  const Point& focal = Point{ 0.0, 0.0, 0.0 })
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(positional);
+  light->SetConeAngle(180.0);
+  light->SetPosition(position.data());
+  light->SetFocalPoint(focal.data());
+  vtkSoftShadowPass::SetLightRadius(light, radius);
+  return light;
+}
+
 /// Where a light or the camera starts; a benchmark or test that moves it puts it back from here.
 struct Pose
 {
@@ -88,19 +104,11 @@ struct Description
     this->Actors.push_back(actor);
   }
 
-  /// A scene light shining all round (cone 180) from `position` towards `focal`, or a
-  /// directional one from `position` towards it; `radius` in world units, or degrees for a
-  /// directional light. Returns it for further settings (colour, intensity, cone).
+  /// Adds MakeLight's light; returns it for further settings (colour, intensity, cone).
   vtkLight* AddLight(bool positional, const Point& position, double radius,
     const Point& focal = Point{ 0.0, 0.0, 0.0 })
   {
-    auto light = vtkSmartPointer<vtkLight>::New();
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(positional);
-    light->SetConeAngle(180.0);
-    light->SetPosition(position.data());
-    light->SetFocalPoint(focal.data());
-    vtkSoftShadowPass::SetLightRadius(light, radius);
+    auto light = MakeLight(positional, position, radius, focal);
     this->Lights.push_back(light);
     this->LightPoses.push_back(Pose{ position, focal });
     return light;

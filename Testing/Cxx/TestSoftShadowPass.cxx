@@ -302,13 +302,8 @@ void TestWedgesHardCases()
   two.Ground();
   two.Sphere(0, 1, 0, 0.6);
   vtkSoftShadowPass::SetLightRadius(two.Light, 0.4);
-  vtkNew<vtkLight> second;
-  second->SetLightTypeToSceneLight();
-  second->SetPositional(true);
-  second->SetConeAngle(180);
-  second->SetPosition(2.5, 5, -1);
+  auto second = penumbra::scene::MakeLight(true, { 2.5, 5, -1 }, 0.7);
   second->SetDiffuseColor(0.4, 0.6, 1.0);
-  vtkSoftShadowPass::SetLightRadius(second, 0.7);
   two.Renderer->AddLight(second);
   two.Pass->SetMethodToPenumbraWedges();
   two.Camera(3, 5, 6, 0, 0.5, 0);
@@ -783,20 +778,14 @@ void TestViewportsLightsAndResize()
     renderers[i]->AddActor(MakeActor(sphere, 0.9, 0.3, 0.3));
     keep.push_back(plane);
     keep.push_back(sphere);
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(true);
-    light->SetConeAngle(180);
-    light->SetPosition(i ? 2 : -2, 5, 1);
+    auto light = penumbra::scene::MakeLight(true, { i ? 2.0 : -2.0, 5, 1 }, 0.0);
     light->SetDiffuseColor(1.0, 0.7, 0.7);
     renderers[i]->AddLight(light);
     vtkCamera* camera = renderers[i]->GetActiveCamera();
     camera->SetPosition(0, 5, 6);
     camera->SetFocalPoint(0, 0, 0);
   }
-  vtkNew<vtkLight> second;
-  second->SetLightTypeToSceneLight();
-  second->SetPosition(1, 4, -2);
+  auto second = penumbra::scene::MakeLight(false, { 1, 4, -2 }, 0.0);
   second->SetDiffuseColor(0.5, 0.5, 1.0);
   renderers[1]->AddLight(second);
 

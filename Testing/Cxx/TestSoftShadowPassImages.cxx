@@ -23,17 +23,6 @@
 namespace
 {
 
-vtkSmartPointer<vtkLight> KeyLight(double x, double y, double z, bool positional)
-{
-  auto light = vtkSmartPointer<vtkLight>::New();
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(positional);
-  light->SetConeAngle(180);
-  light->SetPosition(x, y, z);
-  light->SetFocalPoint(0, 0, 0);
-  return light;
-}
-
 /// An isosurface of vtkRTAnalyticSource (open where the extent clips it) and sphere glyphs
 /// over a ground plane, under a positional key light and a second, coloured directional light.
 void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
@@ -71,8 +60,8 @@ void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObjec
     { field.GetPointer(), contour.GetPointer(), seeds.GetPointer(), ball.GetPointer(),
       glyphs.GetPointer(), ground.GetPointer() });
 
-  renderer->AddLight(KeyLight(-2, 6, 2, true));
-  auto fill = KeyLight(3, 4, 1, false);
+  renderer->AddLight(penumbra::scene::MakeLight(true, { -2, 6, 2 }, 0.0));
+  auto fill = penumbra::scene::MakeLight(false, { 3, 4, 1 }, 0.0);
   fill->SetDiffuseColor(0.4, 0.5, 0.9);
   fill->SetIntensity(0.5);
   renderer->AddLight(fill);
@@ -111,7 +100,7 @@ void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>
   keep.insert(
     keep.end(), { boy.GetPointer(), source.GetPointer(), roof.GetPointer(), ground.GetPointer() });
 
-  renderer->AddLight(KeyLight(0.5, 8, 2.5, true));
+  renderer->AddLight(penumbra::scene::MakeLight(true, { 0.5, 8, 2.5 }, 0.0));
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.8, 1.0, 3.5);
   camera->SetFocalPoint(0, 0.8, 0);
@@ -158,7 +147,7 @@ void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& k
   keep.insert(keep.end(),
     { ground.GetPointer(), box.GetPointer(), first.GetPointer(), second.GetPointer(),
       hump.GetPointer() });
-  auto light = KeyLight(-1.5, 5, 2, true);
+  auto light = penumbra::scene::MakeLight(true, { -1.5, 5, 2 }, 0.0);
   vtkSoftShadowPass::SetLightRadius(light, 0.7);
   renderer->AddLight(light);
   vtkCamera* camera = renderer->GetActiveCamera();

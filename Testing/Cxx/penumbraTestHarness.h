@@ -107,12 +107,7 @@ inline vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, doubl
 /// A positional scene light at `position` shining all round (cone 180), added to `renderer`.
 inline vtkSmartPointer<vtkLight> AddSceneLight(vtkRenderer* renderer, double x, double y, double z)
 {
-  auto light = vtkSmartPointer<vtkLight>::New();
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetConeAngle(180);
-  light->SetPosition(x, y, z);
-  light->SetFocalPoint(0, 0, 0);
+  auto light = penumbra::scene::MakeLight(true, { x, y, z }, 0.0);
   renderer->AddLight(light);
   return light;
 }
@@ -421,12 +416,7 @@ struct PassScene
   /// A directional light from the direction (x, y, z), angular radius in degrees.
   vtkLight* DirectionalLight(double x, double y, double z, double degrees)
   {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(false);
-    light->SetPosition(x, y, z);
-    light->SetFocalPoint(0, 0, 0);
-    vtkSoftShadowPass::SetLightRadius(light, degrees);
+    auto light = penumbra::scene::MakeLight(false, { x, y, z }, degrees);
     this->Renderer->AddLight(light);
     return light;
   }
