@@ -298,6 +298,9 @@ public:
 
   /// Update's stages, in order: the scene's meshes, Embree's scenes of them (moved next to the
   /// origin), the lights with their images, then every pixel.
+  /// Creates the Embree device on first use; false (an error reported on `owner`) if Embree
+  /// cannot.
+  bool EnsureDevice(vtkObject* owner);
   void CollectMeshes(vtkRenderer* renderer);
   bool BuildScenes(vtkObject* owner, vtkIdType& triangles, vtkIdType& casterTriangles);
   std::vector<ShadowLight> CollectLights(
@@ -1240,82 +1243,35 @@ void vtkRayTracedVisibility::vtkInternals::TracePixel(const PixelCamera& camera,
   }
 }
 
-bool vtkRayTracedVisibility::Update()
+namespace
 {
-  vtkInternals& internals = *this->Internals;
-  internals.Visibility.clear();
-  internals.Depth = nullptr;
-  this->NumberOfTriangles = 0;
-  this->NumberOfCasterTriangles = 0;
-  this->NumberOfShadowingLights = 0;
-
-  vtkRenderer* renderer = this->Renderer;
-  if (!renderer || !renderer->GetRenderWindow())
-  {
-    vtkErrorMacro("No renderer, or a renderer without a render window, to trace.");
-    return false;
-  }
-  int width = 0, height = 0, x0 = 0, y0 = 0;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  if (width <= 0 || height <= 0)
-  {
-    vtkErrorMacro("The renderer's viewport is empty (" << width << " x " << height << ").");
-    return false;
-  }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  if (!camera)
-  {
-    vtkErrorMacro("The renderer has no camera.");
-    return false;
-  }
-  if (!internals.Device)
-  {
-    internals.Device = rtcNewDevice(nullptr);
-    if (!internals.Device)
-    {
-      vtkErrorMacro(
-        "Embree could not create a device (error " << rtcGetDeviceError(nullptr) << ").");
-      return false;
-    }
-  }
-
-  double progress = 0.0;
-  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
-  internals.CollectMeshes(renderer);
-  if (!internals.BuildScenes(this, this->NumberOfTriangles, this->NumberOfCasterTriangles))
-  {
-    return false;
-  }
-  const std::vector<ShadowLight> lights = internals.CollectLights(renderer, width, height, this);
-  this->NumberOfShadowingLights = static_cast<int>(lights.size());
-  internals.Depth = NewImage(width, height, "Depth", 1.0f);
-  float* depth = static_cast<float*>(internals.Depth->GetScalarPointer());
-
-  // World -> NDC exactly as the rasterizer sees it, and back.
+/// World -> NDC exactly as the rasterizer sees the renderer's tiled viewport, and back.
+PixelCamera MakePixelCamera(vtkRenderer* renderer, vtkCamera* camera, int width, int height)
+{
   PixelCamera pixels;
   pixels.Width = width;
   pixels.Height = height;
   vtkMatrix4x4::DeepCopy(pixels.ToNDC,
     camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
   vtkMatrix4x4::Invert(pixels.ToNDC, pixels.FromNDC);
-  const int samples = this->SamplesPerLight;
-  const unsigned int seed = this->Seed;
-  auto traceRow = [&](int j)
-  {
-    for (int i = 0; i < width; ++i)
-    {
-      internals.TracePixel(pixels, i, j, lights, samples, seed, depth);
-    }
-  };
+  return pixels;
+}
 
-  int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads
-                                          : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min(threads, height));
+/**
+ * Runs traceRow(j) for every row j < rows on `threads` threads (this one among them), rows
+ * handed out in turn so that slow rows do not leave threads idle. The caller's thread is the
+ * only one that calls `progress` (with the rows done so far), about fifty times in all: VTK's
+ * events must not fire from worker threads.
+ */
+template <typename TraceRow, typename Progress>
+void TraceRowsInParallel(int rows, int threads, TraceRow traceRow, Progress progress)
+{
+  threads = std::max(1, std::min(threads, rows));
   std::atomic<int> nextRow{ 0 };
   std::atomic<int> rowsDone{ 0 };
   auto work = [&]()
   {
-    for (int j = nextRow++; j < height; j = nextRow++)
+    for (int j = nextRow++; j < rows; j = nextRow++)
     {
       traceRow(j);
       ++rowsDone;
@@ -1327,24 +1283,111 @@ bool vtkRayTracedVisibility::Update()
   {
     workers.emplace_back(work);
   }
-  // This thread traces rows too and, being the caller's, is the one that fires the events.
-  const int reportEvery = std::max(1, height / 50);
+  const int reportEvery = std::max(1, rows / 50);
   int lastReported = 0;
-  for (int j = nextRow++; j < height; j = nextRow++)
+  for (int j = nextRow++; j < rows; j = nextRow++)
   {
     traceRow(j);
     const int done = ++rowsDone;
     if (done - lastReported >= reportEvery)
     {
       lastReported = done;
-      progress = static_cast<double>(done) / height;
-      this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+      progress(done);
     }
   }
   for (std::thread& worker : workers)
   {
     worker.join();
   }
+}
+} // namespace
+
+bool vtkRayTracedVisibility::vtkInternals::EnsureDevice(vtkObject* owner)
+{
+  if (!this->Device)
+  {
+    this->Device = rtcNewDevice(nullptr);
+    if (!this->Device)
+    {
+      vtkErrorWithObjectMacro(
+        owner, "Embree could not create a device (error " << rtcGetDeviceError(nullptr) << ").");
+      return false;
+    }
+  }
+  return true;
+}
+
+bool vtkRayTracedVisibility::CheckRenderer(int& width, int& height)
+{
+  vtkRenderer* renderer = this->Renderer;
+  if (!renderer || !renderer->GetRenderWindow())
+  {
+    vtkErrorMacro("No renderer, or a renderer without a render window, to trace.");
+    return false;
+  }
+  int x0 = 0, y0 = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    vtkErrorMacro("The renderer's viewport is empty (" << width << " x " << height << ").");
+    return false;
+  }
+  if (!renderer->GetActiveCamera())
+  {
+    vtkErrorMacro("The renderer has no camera.");
+    return false;
+  }
+  return true;
+}
+
+bool vtkRayTracedVisibility::Update()
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Visibility.clear();
+  internals.Depth = nullptr;
+  this->NumberOfTriangles = 0;
+  this->NumberOfCasterTriangles = 0;
+  this->NumberOfShadowingLights = 0;
+  int width = 0, height = 0;
+  if (!this->CheckRenderer(width, height) || !internals.EnsureDevice(this))
+  {
+    return false;
+  }
+
+  double progress = 0.0;
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  vtkRenderer* renderer = this->Renderer;
+  internals.CollectMeshes(renderer);
+  if (!internals.BuildScenes(this, this->NumberOfTriangles, this->NumberOfCasterTriangles))
+  {
+    return false;
+  }
+  const std::vector<ShadowLight> lights = internals.CollectLights(renderer, width, height, this);
+  this->NumberOfShadowingLights = static_cast<int>(lights.size());
+  internals.Depth = NewImage(width, height, "Depth", 1.0f);
+  float* depth = static_cast<float*>(internals.Depth->GetScalarPointer());
+
+  const PixelCamera pixels = MakePixelCamera(renderer, renderer->GetActiveCamera(), width, height);
+  const int samples = this->SamplesPerLight;
+  const unsigned int seed = this->Seed;
+  const int threads = this->NumberOfThreads > 0
+    ? this->NumberOfThreads
+    : static_cast<int>(std::thread::hardware_concurrency());
+  TraceRowsInParallel(
+    height, threads,
+    [&](int j)
+    {
+      for (int i = 0; i < width; ++i)
+      {
+        internals.TracePixel(pixels, i, j, lights, samples, seed, depth);
+      }
+    },
+    [&](int rowsDone)
+    {
+      progress = static_cast<double>(rowsDone) / height;
+      this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+    });
+
   // The images are all that is kept: the scenes are rebuilt by the next Update anyway.
   internals.ReleaseScenes();
   internals.Meshes.clear();

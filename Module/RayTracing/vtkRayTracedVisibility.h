@@ -130,6 +130,10 @@ protected:
   int NumberOfShadowingLights = 0;
 
 private:
+  /// The renderer's tiled viewport size, or false (an error reported) when there is nothing to
+  /// trace: no renderer or window, an empty viewport, no camera.
+  bool CheckRenderer(int& width, int& height);
+
   vtkRayTracedVisibility(const vtkRayTracedVisibility&) = delete;
   void operator=(const vtkRayTracedVisibility&) = delete;
 
