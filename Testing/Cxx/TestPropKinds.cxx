@@ -63,22 +63,15 @@ namespace
 {
 constexpr int Width = 400, Height = 250;
 
-/// A window with a ground-lighting scene light, a camera and the pass (hard shadows).
-struct View
+/// The tests' pass scene (its light at (-2, 6, 3)) with hard shadows and a fixed camera.
+struct View : PassScene
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkLight> Light = AddSceneLight(Renderer, -2.0, 6.0, 3.0);
-  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
-  vtkNew<vtkSoftShadowPass> Pass;
-
   View()
+    : PassScene(Width, Height)
   {
     this->Renderer->SetBackground(0.2, 0.2, 0.25);
-    this->Window->SetSize(Width, Height);
     this->Window->SetMultiSamples(0);
-    this->Window->AddRenderer(this->Renderer);
     this->Pass->SetMethodToHardVolumes();
-    this->Renderer->SetPass(this->Pass);
   }
 
   void Render()

@@ -34,36 +34,32 @@ struct Image
   std::vector<unsigned char> Rgb;
 };
 
-/// One window showing the test scene in `viewport`, rendered by VTK alone or with the pass.
-struct View
+/// One window showing the test scene in `viewport`, drawn through the pass or, without it, by
+/// VTK alone (the same renderer with no pass set).
+struct View : PassScene
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkLight> Light = AddSceneLight(Renderer, -2.0, 6.0, 3.0);
-  vtkSmartPointer<vtkRenderWindow> Window = NewRenderWindow();
-  vtkNew<vtkSoftShadowPass> Pass;
-
-  explicit View(const double viewport[4])
+  View(const double viewport[4], bool withPass)
+    : PassScene(Width, Height)
   {
     this->Renderer->SetBackground(0.2, 0.2, 0.25);
     this->Renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    this->Renderer->AddActor(MakeActor(GroundSource(4.0), 0.85, 0.85, 0.8));
-    this->Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 48, 24), 0.9, 0.3, 0.3));
-    this->Renderer->AddActor(MakeActor(BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7), 0.3, 0.6, 0.9));
+    if (!withPass)
+    {
+      this->Renderer->SetPass(nullptr);
+    }
+    this->Add(GroundSource(4.0), 0.85, 0.85, 0.8);
+    this->Add(SphereSource(-0.9, 1.0, 0.0, 0.6, 48, 24), 0.9, 0.3, 0.3);
+    this->Add(BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7), 0.3, 0.6, 0.9);
     for (int i = 0; i < 2; ++i)
     {
-      auto glass =
-        MakeActor(SphereSource(0.1 + 0.35 * i, 0.9, 1.3 - 0.3 * i, 0.45, 32, 16), i, 0.8, 1 - i);
+      vtkActor* glass =
+        this->Add(SphereSource(0.1 + 0.35 * i, 0.9, 1.3 - 0.3 * i, 0.45, 32, 16), i, 0.8, 1 - i);
       glass->GetProperty()->SetOpacity(0.45);
       vtkSoftShadowPass::SetCastsShadows(glass, false);
-      this->Renderer->AddActor(glass);
     }
-    this->Renderer->GetActiveCamera()->SetPosition(3.0, 4.0, 7.0);
-    this->Renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.6, 0.0);
-    this->Renderer->ResetCameraClippingRange();
-    this->Window->SetSize(Width, Height);
+    this->Camera(3.0, 4.0, 7.0, 0.0, 0.6, 0.0);
     this->Window->SetMultiSamples(0);
     this->Window->SetAlphaBitPlanes(1);
-    this->Window->AddRenderer(this->Renderer);
   }
 
   Image Render()
@@ -72,10 +68,7 @@ struct View
     Image image;
     int origin[2];
     this->Renderer->GetTiledSizeAndOrigin(&image.Size[0], &image.Size[1], &origin[0], &origin[1]);
-    vtkNew<vtkUnsignedCharArray> pixels;
-    this->Window->GetPixelData(origin[0], origin[1], origin[0] + image.Size[0] - 1,
-      origin[1] + image.Size[1] - 1, 0, pixels);
-    image.Rgb.assign(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+    image.Rgb = WindowColours(this->Window, this->Renderer);
     return image;
   }
 };
@@ -108,9 +101,8 @@ int Luminance(const Image& image, std::size_t pixel)
 
 void TestSetting(const Setting& setting, const double viewport[4])
 {
-  View plainOff(viewport), plainOn(viewport), shadowed(viewport);
+  View plainOff(viewport, false), plainOn(viewport, false), shadowed(viewport, true);
   setting.Apply(plainOn, false);
-  shadowed.Renderer->SetPass(shadowed.Pass);
   setting.Apply(shadowed, true);
   const Image off = plainOff.Render(), on = plainOn.Render(), ours = shadowed.Render();
 
