@@ -22,11 +22,14 @@
 
 namespace
 {
+using penumbra::scene::Description;
 
 /// An isosurface of vtkRTAnalyticSource (open where the extent clips it) and sphere glyphs
 /// over a ground plane, under a positional key light and a second, coloured directional light.
-void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+Description ScientificScene()
 {
+  Description scene;
+  scene.Name = "scientific";
   vtkNew<vtkRTAnalyticSource> field;
   field->SetWholeExtent(-10, 10, -10, 10, -10, 10);
   vtkNew<vtkContourFilter> contour;
@@ -38,7 +41,7 @@ void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObjec
   surface->SetPosition(0, 1.3, 0);
   surface->GetProperty()->SetSpecular(0.4);
   surface->GetProperty()->SetSpecularPower(40);
-  renderer->AddActor(surface);
+  scene.Add(surface);
 
   vtkNew<vtkPointSource> seeds;
   seeds->SetNumberOfPoints(40);
@@ -49,31 +52,28 @@ void ScientificScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObjec
   vtkNew<vtkGlyph3D> glyphs;
   glyphs->SetInputConnection(seeds->GetOutputPort());
   glyphs->SetSourceConnection(ball->GetOutputPort());
-  renderer->AddActor(penumbra_test::MakeActor(glyphs, 0.3, 0.5, 0.9));
+  scene.Add(penumbra_test::MakeActor(glyphs, 0.3, 0.5, 0.9));
 
   vtkNew<vtkPlaneSource> ground;
   ground->SetOrigin(-4, -0.2, -4);
   ground->SetPoint1(4, -0.2, -4);
   ground->SetPoint2(-4, -0.2, 4);
-  renderer->AddActor(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
-  keep.insert(keep.end(),
-    { field.GetPointer(), contour.GetPointer(), seeds.GetPointer(), ball.GetPointer(),
-      glyphs.GetPointer(), ground.GetPointer() });
+  scene.Add(penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8));
 
-  renderer->AddLight(penumbra::scene::MakeLight(true, { -2, 6, 2 }, 0.0));
-  auto fill = penumbra::scene::MakeLight(false, { 3, 4, 1 }, 0.0);
+  scene.AddLight(true, { -2, 6, 2 }, 0.0);
+  vtkLight* fill = scene.AddLight(false, { 3, 4, 1 }, 0.0);
   fill->SetDiffuseColor(0.4, 0.5, 0.9);
   fill->SetIntensity(0.5);
-  renderer->AddLight(fill);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(3.5, 5, 7);
-  camera->SetFocalPoint(0, 0.8, 0);
+  scene.SetCamera({ 3.5, 5, 7 }, { 0, 0.8, 0 }, { 0, 1, 0 }, 30);
+  return scene;
 }
 
 /// Boy's surface (non-orientable, self-intersecting) over a PBR ground, seen from inside the
 /// shadow of a roof.
-void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+Description AwkwardScene()
 {
+  Description scene;
+  scene.Name = "awkward";
   vtkNew<vtkParametricBoy> boy;
   vtkNew<vtkParametricFunctionSource> source;
   source->SetParametricFunction(boy);
@@ -81,13 +81,13 @@ void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>
   source->SetVResolution(60);
   auto surface = penumbra_test::MakeActor(source, 0.3, 0.8, 0.5);
   surface->SetPosition(0, 1.2, 0);
-  renderer->AddActor(surface);
+  scene.Add(surface);
 
   vtkNew<vtkPlaneSource> roof;
   roof->SetOrigin(-1, 3.5, 1.5);
   roof->SetPoint1(3, 3.5, 1.5);
   roof->SetPoint2(-1, 3.5, 6);
-  renderer->AddActor(penumbra_test::MakeActor(roof, 0.7, 0.7, 0.75));
+  scene.Add(penumbra_test::MakeActor(roof, 0.7, 0.7, 0.75));
 
   vtkNew<vtkPlaneSource> ground;
   ground->SetOrigin(-5, 0, -5);
@@ -96,34 +96,32 @@ void AwkwardScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>
   auto floor = penumbra_test::MakeActor(ground, 0.9, 0.9, 0.9);
   floor->GetProperty()->SetInterpolationToPBR();
   floor->GetProperty()->SetRoughness(0.5);
-  renderer->AddActor(floor);
-  keep.insert(
-    keep.end(), { boy.GetPointer(), source.GetPointer(), roof.GetPointer(), ground.GetPointer() });
+  scene.Add(floor);
 
-  renderer->AddLight(penumbra::scene::MakeLight(true, { 0.5, 8, 2.5 }, 0.0));
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.8, 1.0, 3.5);
-  camera->SetFocalPoint(0, 0.8, 0);
-  camera->SetClippingRange(0.1, 30);
+  scene.AddLight(true, { 0.5, 8, 2.5 }, 0.0);
+  scene.SetCamera({ 0.8, 1.0, 3.5 }, { 0, 0.8, 0 }, { 0, 1, 0 }, 30);
+  return scene;
 }
 
 /// Soft shadows from penumbra wedges: a box resting on the ground (the penumbra shrinks to zero
 /// at the contact), overlapping casters and a curved receiver under a large spherical light.
-void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+Description SoftScene()
 {
+  Description scene;
+  scene.Name = "soft";
   vtkNew<vtkPlaneSource> ground;
   ground->SetOrigin(-4, 0, -4);
   ground->SetPoint1(4, 0, -4);
   ground->SetPoint2(-4, 0, 4);
   auto groundActor = penumbra_test::MakeActor(ground, 0.85, 0.85, 0.8);
   vtkSoftShadowPass::SetShadowPlane(groundActor, true); // for the plateaus variant
-  renderer->AddActor(groundActor);
+  scene.Add(groundActor);
   vtkNew<vtkCubeSource> box;
   box->SetCenter(1.2, 0.5, -0.5);
   box->SetXLength(0.8);
   box->SetYLength(1.0);
   box->SetZLength(0.8);
-  renderer->AddActor(penumbra_test::MakeActor(box, 0.3, 0.5, 0.9));
+  scene.Add(penumbra_test::MakeActor(box, 0.3, 0.5, 0.9));
   vtkNew<vtkSphereSource> first, second;
   first->SetCenter(-0.9, 1.1, 0.2);
   first->SetRadius(0.5);
@@ -133,7 +131,7 @@ void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& k
   {
     sphere->SetThetaResolution(48);
     sphere->SetPhiResolution(24);
-    renderer->AddActor(penumbra_test::MakeActor(sphere, 0.9, 0.3, 0.3));
+    scene.Add(penumbra_test::MakeActor(sphere, 0.9, 0.3, 0.3));
   }
   vtkNew<vtkCylinderSource> hump;
   hump->SetCenter(0, 0, 0);
@@ -143,16 +141,10 @@ void SoftScene(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& k
   auto curved = penumbra_test::MakeActor(hump, 0.8, 0.8, 0.6);
   curved->RotateZ(90);
   curved->SetPosition(0.2, -0.25, 1.6);
-  renderer->AddActor(curved);
-  keep.insert(keep.end(),
-    { ground.GetPointer(), box.GetPointer(), first.GetPointer(), second.GetPointer(),
-      hump.GetPointer() });
-  auto light = penumbra::scene::MakeLight(true, { -1.5, 5, 2 }, 0.0);
-  vtkSoftShadowPass::SetLightRadius(light, 0.7);
-  renderer->AddLight(light);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(3, 4.5, 6.5);
-  camera->SetFocalPoint(0, 0.4, 0.3);
+  scene.Add(curved);
+  scene.AddLight(true, { -1.5, 5, 2 }, 0.7);
+  scene.SetCamera({ 3, 4.5, 6.5 }, { 0, 0.4, 0.3 }, { 0, 1, 0 }, 30);
+  return scene;
 }
 
 } // namespace
@@ -165,44 +157,34 @@ int main(int argc, char* argv[])
       stderr, "usage: %s scientific|awkward|soft|plateaus baseline.png output-dir\n", argv[0]);
     return 2;
   }
-  const std::string scene = argv[1];
-  vtkSmartPointer<vtkRenderWindow> window = penumbra_test::NewRenderWindow();
-  window->SetSize(400, 300);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.15, 0.17, 0.25);
-  window->AddRenderer(renderer);
-  vtkNew<vtkSoftShadowPass> pass;
-  renderer->SetPass(pass);
-  std::vector<vtkSmartPointer<vtkObject>> keep;
-  if (scene == "scientific")
+  const std::string name = argv[1];
+  penumbra_test::PassScene view(400, 300);
+  view.Renderer->SetBackground(0.15, 0.17, 0.25);
+  // The plateaus variant is the soft scene with Haines' plateaus on the ground plane.
+  const Description scene = name == "scientific" ? ScientificScene()
+    : name == "awkward"                          ? AwkwardScene()
+                                                 : SoftScene();
+  view.AddDescription(scene);
+  if (name == "awkward")
   {
-    ScientificScene(renderer, keep);
-    renderer->ResetCameraClippingRange();
+    // The eye is inside the roof's shadow, close to Boy's surface: a near plane of 0.1.
+    view.Renderer->GetActiveCamera()->SetClippingRange(0.1, 30);
   }
-  else if (scene == "soft" || scene == "plateaus")
+  if (name == "plateaus")
   {
-    // The same scene with Haines' plateaus on the ground plane.
-    SoftScene(renderer, keep);
-    renderer->ResetCameraClippingRange();
-    if (scene == "plateaus")
-    {
-      pass->SetMethodToPlateaus();
-    }
+    view.Pass->SetMethodToPlateaus();
   }
-  else
-  {
-    AwkwardScene(renderer, keep);
-  }
-  window->Render();
+  view.Window->Render();
 
   vtkNew<vtkTesting> testing;
   testing->AddArgument("-V");
   testing->AddArgument(argv[2]);
   testing->AddArgument("-T");
   testing->AddArgument(argv[3]);
-  testing->SetRenderWindow(window);
+  testing->SetRenderWindow(view.Window);
   const int result = testing->RegressionTest(10);
-  penumbra_test::Check(result == vtkTesting::PASSED, scene + " matches its baseline image");
-  penumbra_test::Check(pass->GetNumberOfShadowingLights() >= 1, scene + " has shadowing lights");
+  penumbra_test::Check(result == vtkTesting::PASSED, name + " matches its baseline image");
+  penumbra_test::Check(
+    view.Pass->GetNumberOfShadowingLights() >= 1, name + " has shadowing lights");
   return penumbra_test::Failures() ? 1 : 0;
 }
