@@ -113,7 +113,7 @@ bool CountingTechnique::IsCheaper(
   return CountingIsCheaper(costs, static_cast<int>(light.CountingSamples.size()));
 }
 
-void CountingTechnique::PrepareWedges(
+void CountingTechnique::PrepareLight(
   const ShadowLight& light, const std::vector<CasterCache*>& casters)
 {
   for (CasterCache* caster : casters)

@@ -36,10 +36,11 @@ public:
   /// Whether counting the light's samples should be cheaper than averaging them
   /// (penumbra::CountingIsCheaper), from its casters' potential silhouettes.
   bool IsCheaper(const ShadowLight& light, const std::vector<CasterCache*>& casters) const;
-  /// Builds the wedges of the opaque casters that are not culled (after IsCheaper kept counting).
-  void PrepareWedges(const ShadowLight& light, const std::vector<CasterCache*>& casters);
-
   bool CountsCentreInColour() const override { return true; }
+  bool ShadowsTranslucentCasters() const override { return true; }
+  /// Builds the wedges of the opaque casters that are not culled (after the chooser kept
+  /// counting).
+  void PrepareLight(const ShadowLight& light, const std::vector<CasterCache*>& casters) override;
   /// Finds the caster's potential silhouette again when its mesh, matrix, the light or the
   /// counting rule changed.
   vtkIdType UpdateCaster(

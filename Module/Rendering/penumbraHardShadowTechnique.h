@@ -25,6 +25,9 @@ namespace penumbra
 class HardShadowTechnique : public ShadowTechnique
 {
 public:
+  /// The stencil and the volumes' own depth test are all it needs.
+  bool ReadsDepthCopy() const override { return false; }
+  bool ShadowsTranslucentCasters() const override { return true; }
   /// Every geometry pixel with a non-zero stencil count is in sample k's shadow: 1/N of the
   /// light goes. Where the count is 0, 1/N of the light times one minus the transmission of the
   /// translucent casters' volumes of sample k, drawn then, goes.

@@ -46,6 +46,11 @@ public:
   /// Warns (once) that plateaus have no receiver plane and the pass draws hard shadows.
   void WarnNoPlane(vtkObject* owner);
 
+  /// Pixels are placed on the receiver plane from the depth copy.
+  bool ReadsDepthCopy() const override { return true; }
+  /// Plateaus are drawn from the opaque casters' silhouettes only.
+  bool ShadowsTranslucentCasters() const override { return false; }
+
   void Finish(ShadowFrame& frame, const ShadowLight& light) override;
   /// The plateau texture and triangles.
   std::size_t GraphicsMemoryBytes() const override;

@@ -159,9 +159,15 @@ public:
   /// Whether the pass counts the centre's volume into the layer in colour (+-1 per crossing)
   /// instead of each sample's in the stencil.
   virtual bool CountsCentreInColour() const { return false; }
+  /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
+  virtual bool ReadsDepthCopy() const { return true; }
+  /// Whether translucent casters shadow by their opacity (otherwise they are left out).
+  virtual bool ShadowsTranslucentCasters() const { return false; }
   /// Brings this technique's caches of one caster for the light, beyond the samples' volumes,
   /// up to date; returns the silhouette updates it made.
   virtual vtkIdType UpdateCaster(const ShadowLight&, CasterCache&, const Box&) { return 0; }
+  /// Once the light's technique and casters are final for the frame, before anything is drawn.
+  virtual void PrepareLight(const ShadowLight&, const std::vector<CasterCache*>&) {}
   /// Prepares the light's targets before its volumes are drawn (its layer bound and cleared).
   virtual void BeginVolumes(ShadowFrame&, const ShadowLight&) {}
   /// Writes the opaque casters' volume count just drawn for light.Samples[k] into the layer.

@@ -1,13 +1,10 @@
 #include "vtkSoftShadowPass.h"
 
-#include "penumbraCountingTechnique.h"
-#include "penumbraHardShadowTechnique.h"
 #include "penumbraLightIntensityBuffer.h"
-#include "penumbraPlateauTechnique.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
 #include "penumbraShadowVolumeRenderer.h"
-#include "penumbraWedgeTechnique.h"
+#include "penumbraTechniqueChooser.h"
 
 #include "penumbraReceiverShader.h"
 #include "penumbraSceneWalk.h"
@@ -47,7 +44,6 @@
 #include "vtk_glew.h"
 
 #include "penumbraCulling.h"
-#include "penumbraLightSamples.h"
 #include "penumbraMatrices.h"
 #include "penumbraShadowVolume.h"
 
@@ -136,14 +132,7 @@ class vtkSoftShadowPass::vtkInternals
 public:
   using ShadowLight = penumbra::ShadowLight;
   /// One object per shadow method; each light points at the one that draws its layer.
-  penumbra::HardShadowTechnique Hard;
-  penumbra::WedgeTechnique Wedges;
-  penumbra::PlateauTechnique Plateaus;
-  penumbra::CountingTechnique Counting;
-  std::array<penumbra::ShadowTechnique*, 4> Techniques()
-  {
-    return { &this->Hard, &this->Wedges, &this->Plateaus, &this->Counting };
-  }
+  penumbra::TechniqueChooser Techniques;
 
   penumbra::ShadowVolumeRenderer Volumes;
 
@@ -177,7 +166,7 @@ public:
   std::size_t GraphicsMemoryBytes()
   {
     std::size_t bytes = this->LI.GraphicsMemoryBytes() + this->Caches.GraphicsBufferBytes();
-    for (const penumbra::ShadowTechnique* technique : this->Techniques())
+    for (const penumbra::ShadowTechnique* technique : this->Techniques.All())
     {
       bytes += technique->GraphicsMemoryBytes();
     }
@@ -215,18 +204,12 @@ public:
     }
   }
 
-  /// Fills the light's samples (the light itself, or LightSamples points on it when the method
-  /// averages) and its wedge settings, from the pass's method and the light's radius.
-  void ChooseTechnique(vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& light);
   /// Brings every opaque caster's volumes and the technique's caches for `light` up to date;
   /// returns the silhouette updates it made.
   vtkIdType UpdateLightCasters(const ShadowLight& light);
   /// The same for the translucent casters' volumes, one per sample (TranslucentSamples), once
   /// the light's technique and samples are final.
   vtkIdType UpdateTranslucentVolumes(const ShadowLight& light);
-  /// Makes a counted light average `lightSamples` samples: the counted ones, unless counting
-  /// clamped them to its maximum.
-  void AverageInstead(ShadowLight& light, int lightSamples);
   /// Averaged and counted lights multiply each sample's light by what translucent casters let
   /// through; wedges and plateaus leave them out (culled for the light), with one warning.
   void SortOutTranslucentCasters(ShadowLight& light);
@@ -476,7 +459,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     // plateaus without a receiver plane fall back to hard shadows.
     if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
           [&](const vtkInternals::ShadowLight& light)
-          { return light.Technique != &internals.Hard; }))
+          { return light.Technique->ReadsDepthCopy(); }))
     {
       penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
       internals.LI.CopyDepth(window->GetState());
@@ -518,6 +501,13 @@ void vtkSoftShadowPass::RenderDelegate(const vtkRenderState* s)
 void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
 {
   vtkInternals& internals = *this->Internals;
+  // Soft lights' samples face the visible scene's centre (or, with nothing visible, the
+  // light's focal point).
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const bool haveBounds = vtkMath::AreBoundsInitialized(bounds);
+  const glm::dvec3 sceneCentre =
+    glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   vtkLight* light;
@@ -566,65 +556,10 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     shadowLight.Layer = static_cast<int>(internals.Lights.size());
     shadowLight.World = world;
     shadowLight.Attenuation = static_cast<float>(light->GetShadowAttenuation());
-    internals.ChooseTechnique(this, renderer, shadowLight);
+    internals.Techniques.Choose(this, shadowLight,
+      haveBounds ? sceneCentre : glm::make_vec3(light->GetTransformedFocalPoint()));
     internals.Lights.push_back(shadowLight);
   }
-}
-
-void vtkSoftShadowPass::vtkInternals::ChooseTechnique(
-  vtkSoftShadowPass* self, vtkRenderer* renderer, ShadowLight& shadowLight)
-{
-  vtkLight* light = shadowLight.Light;
-  const glm::dvec4& world = shadowLight.World;
-  double radius = GetLightRadius(light);
-  shadowLight.Samples = { world };
-  shadowLight.Technique = &this->Hard;
-  shadowLight.CountingChosenAutomatically = false;
-  shadowLight.SoftRadius = 0.0;
-  shadowLight.CountingSamples.clear();
-  if (self->Method == METHOD_HARD_VOLUMES || radius <= 0.0)
-  {
-    return;
-  }
-  if (world.w == 0.0 && radius >= 90.0)
-  {
-    if (this->WarnedLights.insert(light).second)
-    {
-      vtkWarningWithObjectMacro(self,
-        "Directional light " << light << " has an angular radius of " << radius
-                             << " degrees; clamped to 89.");
-    }
-    radius = 89.0;
-  }
-  double bounds[6];
-  renderer->ComputeVisiblePropBounds(bounds);
-  const glm::dvec3 target = vtkMath::AreBoundsInitialized(bounds)
-    ? glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5
-    : glm::dvec3(light->GetTransformedFocalPoint()[0], light->GetTransformedFocalPoint()[1],
-        light->GetTransformedFocalPoint()[2]);
-  shadowLight.SampleTarget = target;
-  shadowLight.SampleRadius = radius;
-  shadowLight.SoftRadius = world.w != 0.0 ? radius : glm::radians(radius);
-  if (self->Method == METHOD_PLATEAUS)
-  {
-    shadowLight.Technique = &this->Plateaus;
-    return;
-  }
-  if (self->Method == METHOD_PENUMBRA_WEDGES)
-  {
-    shadowLight.Technique = &this->Wedges;
-    return;
-  }
-  if ((self->Method == METHOD_AUTOMATIC || self->Method == METHOD_SOFT_SHADOW_VOLUMES) &&
-    this->Counting.Supported(self))
-  {
-    shadowLight.Technique = &this->Counting;
-    shadowLight.CountingChosenAutomatically = self->Method == METHOD_AUTOMATIC;
-    shadowLight.CountingSamples =
-      this->Counting.ChooseSamples(self, world, radius, self->LightSamples, target);
-    return;
-  }
-  shadowLight.Samples = penumbra::SpreadLightSamples(world, radius, self->LightSamples, target);
 }
 
 void vtkSoftShadowPass::UpdateShaderConfiguration()
@@ -799,22 +734,13 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     internals.Casters.push_back(caster);
   }
 
-  const bool plateaus = std::any_of(internals.Lights.begin(), internals.Lights.end(),
-    [&](const vtkInternals::ShadowLight& light) { return light.Technique == &internals.Plateaus; });
-  penumbra::PlateauSettings& settings = internals.Plateaus.Settings;
+  penumbra::PlateauSettings& settings = internals.Techniques.Plateaus.Settings;
   settings.Resolution = this->PlateauResolution;
   settings.Sinusoidal = this->PlateauFalloff == PLATEAU_FALLOFF_SINUSOIDAL;
   settings.UseGivenPlane = this->UseReceiverPlane;
   settings.Origin = glm::make_vec3(this->ReceiverPlaneOrigin);
   settings.Normal = glm::make_vec3(this->ReceiverPlaneNormal);
-  if (plateaus && !internals.Plateaus.FindReceiverPlane(s->GetRenderer(), this))
-  {
-    internals.Plateaus.WarnNoPlane(this);
-    for (auto& light : internals.Lights)
-    {
-      light.Technique = &internals.Hard;
-    }
-  }
+  internals.Techniques.FindPlateauPlane(s->GetRenderer(), this, internals.Lights);
 
   for (auto& light : internals.Lights)
   {
@@ -831,27 +757,14 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     }
     internals.SortOutTranslucentCasters(light);
     this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
-    if (light.Technique == &internals.Counting && light.CountingChosenAutomatically &&
-      !internals.Counting.IsCheaper(light, internals.Casters))
+    if (internals.Techniques.Reconsider(light, internals.Casters, this->LightSamples))
     {
-      // Averaging the same samples gives the same image and is expected to be cheaper here.
-      internals.AverageInstead(light, this->LightSamples);
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     }
-    if (light.Technique == &internals.Counting)
-    {
-      internals.Counting.PrepareWedges(light, internals.Casters);
-    }
+    light.Technique->PrepareLight(light, internals.Casters);
     // Once the samples are final: Automatic may have traded counting's for averaging's.
     this->NumberOfSilhouetteUpdates += internals.UpdateTranslucentVolumes(light);
   }
-}
-
-void vtkSoftShadowPass::vtkInternals::AverageInstead(ShadowLight& light, int lightSamples)
-{
-  light.Technique = &this->Hard;
-  light.Samples =
-    penumbra::SpreadLightSamples(light.World, light.SampleRadius, lightSamples, light.SampleTarget);
 }
 
 void vtkSoftShadowPass::vtkInternals::SortOutTranslucentCasters(ShadowLight& light)
@@ -863,7 +776,7 @@ void vtkSoftShadowPass::vtkInternals::SortOutTranslucentCasters(ShadowLight& lig
     {
       continue;
     }
-    if (light.Technique == &this->Hard || light.Technique == &this->Counting)
+    if (light.Technique->ShadowsTranslucentCasters())
     {
       light.ShadowedByTranslucentCasters = true;
       continue;
@@ -1175,7 +1088,7 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.StageTimes.ReleaseGraphicsResources();
   internals.Caches.ReleaseGraphicsResources();
   internals.LI.ReleaseGraphicsResources(w);
-  for (penumbra::ShadowTechnique* technique : internals.Techniques())
+  for (penumbra::ShadowTechnique* technique : internals.Techniques.All())
   {
     technique->ReleaseGraphicsResources(w);
   }

@@ -1,0 +1,94 @@
+#include "penumbraTechniqueChooser.h"
+
+#include "penumbraLightSamples.h"
+
+#include "vtkLight.h"
+#include "vtkSoftShadowPass.h"
+
+namespace penumbra
+{
+
+void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target)
+{
+  const glm::dvec4& world = light.World;
+  double radius = vtkSoftShadowPass::GetLightRadius(light.Light);
+  light.Samples = { world };
+  light.Technique = &this->Hard;
+  light.CountingChosenAutomatically = false;
+  light.SoftRadius = 0.0;
+  light.CountingSamples.clear();
+  const int method = pass->GetMethod();
+  if (method == vtkSoftShadowPass::METHOD_HARD_VOLUMES || radius <= 0.0)
+  {
+    return;
+  }
+  if (world.w == 0.0 && radius >= 90.0)
+  {
+    if (this->WarnedRadius.insert(light.Light).second)
+    {
+      vtkWarningWithObjectMacro(pass,
+        "Directional light " << light.Light << " has an angular radius of " << radius
+                             << " degrees; clamped to 89.");
+    }
+    radius = 89.0;
+  }
+  light.SampleTarget = target;
+  light.SampleRadius = radius;
+  light.SoftRadius = world.w != 0.0 ? radius : glm::radians(radius);
+  if (method == vtkSoftShadowPass::METHOD_PLATEAUS)
+  {
+    light.Technique = &this->Plateaus;
+    return;
+  }
+  if (method == vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES)
+  {
+    light.Technique = &this->Wedges;
+    return;
+  }
+  if ((method == vtkSoftShadowPass::METHOD_AUTOMATIC ||
+        method == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES) &&
+    this->Counting.Supported(pass))
+  {
+    light.Technique = &this->Counting;
+    light.CountingChosenAutomatically = method == vtkSoftShadowPass::METHOD_AUTOMATIC;
+    light.CountingSamples =
+      this->Counting.ChooseSamples(pass, world, radius, pass->GetLightSamples(), target);
+    return;
+  }
+  light.Samples = SpreadLightSamples(world, radius, pass->GetLightSamples(), target);
+}
+
+void TechniqueChooser::FindPlateauPlane(
+  vtkRenderer* renderer, vtkObject* owner, std::vector<ShadowLight>& lights)
+{
+  bool plateaus = false;
+  for (const ShadowLight& light : lights)
+  {
+    plateaus = plateaus || light.Technique == &this->Plateaus;
+  }
+  if (!plateaus || this->Plateaus.FindReceiverPlane(renderer, owner))
+  {
+    return;
+  }
+  this->Plateaus.WarnNoPlane(owner);
+  for (ShadowLight& light : lights)
+  {
+    light.Technique = &this->Hard;
+  }
+}
+
+bool TechniqueChooser::Reconsider(
+  ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples)
+{
+  if (light.Technique != &this->Counting || !light.CountingChosenAutomatically ||
+    this->Counting.IsCheaper(light, casters))
+  {
+    return false;
+  }
+  light.Technique = &this->Hard;
+  light.Samples =
+    SpreadLightSamples(light.World, light.SampleRadius, lightSamples, light.SampleTarget);
+  return true;
+}
+
+} // namespace penumbra

@@ -1,0 +1,69 @@
+/**
+ * @file    penumbraTechniqueChooser.h
+ * @brief   The pass's shadow methods, one object each, and the one place that picks which of
+ *          them draws each light's LI layer this frame.
+ */
+#ifndef penumbraTechniqueChooser_h
+#define penumbraTechniqueChooser_h
+
+#include "penumbraCountingTechnique.h"
+#include "penumbraHardShadowTechnique.h"
+#include "penumbraPlateauTechnique.h"
+#include "penumbraWedgeTechnique.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <set>
+#include <vector>
+
+class vtkLight;
+class vtkObject;
+class vtkRenderer;
+class vtkSoftShadowPass;
+
+namespace penumbra
+{
+
+/**
+ * Holds the methods and chooses between them in two steps. Choose, when the frame's lights are
+ * collected: from the pass's Method and the light's radius (hard shadows without a radius;
+ * Automatic and soft shadow volumes count where the context allows, and average the same
+ * samples where it does not). Reconsider, once the light's casters are up to date: plateaus
+ * without a receiver plane draw hard shadows, and Automatic averages the counted samples where
+ * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper.
+ */
+class TechniqueChooser
+{
+public:
+  HardShadowTechnique Hard;
+  WedgeTechnique Wedges;
+  PlateauTechnique Plateaus;
+  CountingTechnique Counting;
+
+  std::array<ShadowTechnique*, 4> All()
+  {
+    return { &this->Hard, &this->Wedges, &this->Plateaus, &this->Counting };
+  }
+
+  /// Sets the light's technique, samples and radii from `pass`'s Method and LightSamples and
+  /// the light's radius (vtkSoftShadowPass::GetLightRadius); the samples face `target`. A
+  /// directional light's radius of 90 degrees or more is clamped to 89, with one warning.
+  void Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target);
+
+  /// Plateaus need a receiver plane: finds this frame's, and without one makes every light
+  /// draw hard shadows (warned once). Call after Choose, before the casters are updated.
+  void FindPlateauPlane(vtkRenderer* renderer, vtkObject* owner, std::vector<ShadowLight>& lights);
+
+  /// Once the light's casters are up to date: Automatic averages the counted samples instead
+  /// where that is expected to be cheaper (the same samples, the same image). Returns true when
+  /// it changed the light's samples, whose casters then need updating again.
+  bool Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples);
+
+private:
+  std::set<vtkLight*> WarnedRadius;
+};
+
+} // namespace penumbra
+
+#endif
