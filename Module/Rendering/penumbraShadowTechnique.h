@@ -3,13 +3,12 @@
  * @brief   How a light's layer of the LI buffer is drawn: one class per shadow method behind one
  *          small interface, and what they draw with.
  *
- * vtkSoftShadowPass chooses a ShadowTechnique per light (its internals' ChooseTechnique,
- * then the cost model for Automatic's soft lights) and runs every light the same way: the
- * technique brings its per-caster caches up to date (UpdateCaster), the ShadowVolumeRenderer
- * draws the opaque casters' shadow volumes of the light's samples into its layer, the technique
- * writes each
- * sample's count into the layer (ResolveSample), and finally draws what is its own (Finish):
- * wedges, counting, plateaus. Translucent casters' volumes are drawn, one light sample at a
+ * penumbra::TechniqueChooser picks a ShadowTechnique per light, and vtkSoftShadowPass runs
+ * every light the same way: the technique brings its per-caster caches up to date
+ * (UpdateCaster) and prepares what it draws from (PrepareLight), the ShadowVolumeRenderer draws
+ * the opaque casters' shadow volumes of the light's samples, the technique writes each sample's
+ * count into the layer (ResolveSample), and finally draws what is its own (Finish): wedges,
+ * counting, plateaus. Translucent casters' volumes are drawn, one light sample at a
  * time, when a technique asks for them (ShadowFrame::DrawTranslucentVolumes). Everything a
  * technique draws with lives in the ShadowFrame the pass fills.
  */

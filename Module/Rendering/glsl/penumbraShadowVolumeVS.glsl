@@ -7,7 +7,7 @@ in vec4 vertexMC;
 uniform mat4 MCDCMatrix;
 // Object space, relative to the caster's origin: (position, 1) or (direction to light, 0).
 uniform vec4 lightMC;
-// Pushes the light cap away from the eye (NDC depth units); see DrawShadowVolume.
+// Pushes the light cap away from the eye (NDC depth units); see ShadowVolumeRenderer::DrawVolume.
 uniform float capDepthBias;
 
 void main()
