@@ -36,11 +36,7 @@ float faceWeight(vec3 normal, vec3 fromEdge)
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(depthTexture, pixel, 0).r;
-  if (depth >= 1.0)
-  {
-    discard; // background
-  }
+  float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
   vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
 

@@ -14,3 +14,15 @@ vec3 penumbraPointAt(ivec2 pixel, float depth, float eyeDepthBias)
   vec4 point = clipToLocal * ndc;
   return point.xyz / point.w;
 }
+
+/// The scene depth at the fragment's pixel; a background fragment (depth 1: nothing there to
+/// shadow) is discarded.
+float penumbraSceneDepth(ivec2 pixel)
+{
+  float depth = texelFetch(depthTexture, pixel, 0).r;
+  if (depth >= 1.0)
+  {
+    discard;
+  }
+  return depth;
+}

@@ -26,11 +26,7 @@ vec3 tangent(ivec2 pixel, float depth, ivec2 step, vec3 p)
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(depthTexture, pixel, 0).r;
-  if (depth >= 1.0)
-  {
-    discard;
-  }
+  float depth = penumbraSceneDepth(pixel);
   vec3 p = penumbraPointAt(pixel, depth, 0.0);
   // Screen x and y steps: their cross product faces the eye, the side that is seen.
   vec3 n = cross(tangent(pixel, depth, ivec2(1, 0), p), tangent(pixel, depth, ivec2(0, 1), p));

@@ -17,11 +17,7 @@ const float pi = 3.14159265358979;
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(depthTexture, pixel, 0).r;
-  if (depth >= 1.0)
-  {
-    discard;
-  }
+  float depth = penumbraSceneDepth(pixel);
   vec3 p = penumbraPointAt(pixel, depth, 0.0);
   // How far the point may be off its true place: a few steps of a 24-bit depth buffer.
   float slack = length(penumbraPointAt(pixel, depth, -8.0 / 16777216.0) - p);

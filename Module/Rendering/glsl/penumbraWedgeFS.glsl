@@ -99,11 +99,7 @@ float edgeOcclusion(vec3 p, vec3 a, vec3 b)
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(depthTexture, pixel, 0).r;
-  if (depth >= 1.0)
-  {
-    discard; // background
-  }
+  float depth = penumbraSceneDepth(pixel);
   float occlusion = edgeOcclusion(penumbraPointAt(pixel, depth, 0.0), edgeFromVS, edgeToVS);
   gl_FragData[0] = vec4(-edgeWeightVS * occlusion);
 }
