@@ -75,6 +75,28 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   return true;
 }
 
+VolumeDrawPlan PlanVolumeDraw(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners, bool seenThrough)
+{
+  VolumeDrawPlan plan;
+  plan.ZFail = VolumeMayReachNearPlane(boxMin, boxMax, light, nearCorners);
+  plan.DarkCap = plan.ZFail;
+  plan.LightCap = plan.ZFail || seenThrough;
+  return plan;
+}
+
+bool WedgesDrawnByFrontFaces(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dvec4& light, double radius, const std::array<glm::dvec3, 4>& nearCorners,
+  bool anyFallback)
+{
+  if (light.w == 0.0 || anyFallback)
+  {
+    return false;
+  }
+  const glm::dvec3 grow(radius);
+  return !VolumeMayReachNearPlane(boxMin - grow, boxMax + grow, light, nearCorners);
+}
+
 bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dvec4& light,
   double radius, const glm::dmat4& worldToClip)
 {

@@ -29,6 +29,33 @@ namespace penumbra
 VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners);
 
+/// How one caster's shadow volume is drawn for one light sample (McGuire et al.'s choice).
+struct VolumeDrawPlan
+{
+  bool ZFail = false;    ///< count faces behind the point: the volume may reach the near plane
+  bool DarkCap = false;  ///< draw the cap at infinity (z-fail only)
+  bool LightCap = false; ///< draw the cap on the lit faces: z-fail, or a caster points are seen
+                         ///< through (they lie behind that cap, so z-pass must count it)
+};
+
+/// The plan for a caster's volume from `light`: z-pass wherever VolumeMayReachNearPlane allows.
+VTKPENUMBRAGEOMETRY_EXPORT VolumeDrawPlan PlanVolumeDraw(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners,
+  bool seenThrough);
+
+/**
+ * Whether a caster's penumbra wedges are rasterized by their front faces. A point inside a wedge
+ * lies behind its front faces and in front of its back faces. When neither the eye nor the near
+ * plane can be inside the wedges (the caster's bounds grown by the light's `radius` miss the near
+ * plane's hull with the light, as for z-pass), front faces tested against the scene depth skip
+ * every point in front of the wedge. Otherwise, and for a directional light or when some edge had
+ * no wedge planes (`anyFallback`: its wedge is a light pyramid or the viewport), back faces, which
+ * every ray meeting the wedge crosses once, skip the points behind it.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool WedgesDrawnByFrontFaces(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dvec4& light, double radius,
+  const std::array<glm::dvec3, 4>& nearCorners, bool anyFallback);
+
 /**
  * Whether a caster's shadow can reach the view: false when, for one frustum plane, the caster's
  * bounds lie outside it and every direction it is swept in (away from any point of the light:

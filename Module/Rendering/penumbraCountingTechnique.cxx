@@ -142,16 +142,9 @@ void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& ligh
   // lights hold none.
   const int width = frame.Size[0], height = frame.Size[1];
   const unsigned int words = static_cast<unsigned int>((light.CountingSamples.size() + 3) / 4);
-  if (this->SampleCounters->GetContext() != frame.Window)
+  if (TextureNeedsAllocation(this->SampleCounters, frame.Window, width, height,
+        static_cast<int>(words), 1, vtkTextureObject::Nearest))
   {
-    this->SampleCounters->SetContext(frame.Window);
-  }
-  if (static_cast<int>(this->SampleCounters->GetWidth()) != width ||
-    static_cast<int>(this->SampleCounters->GetHeight()) != height ||
-    this->SampleCounters->GetDepth() != words)
-  {
-    this->SampleCounters->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->SampleCounters->SetMagnificationFilter(vtkTextureObject::Nearest);
     this->SampleCounters->SetInternalFormat(GL_R32UI);
     this->SampleCounters->SetFormat(GL_RED_INTEGER);
     this->SampleCounters->SetDataType(GL_UNSIGNED_INT);

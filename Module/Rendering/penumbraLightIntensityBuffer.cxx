@@ -1,5 +1,7 @@
 #include "penumbraLightIntensityBuffer.h"
 
+#include "penumbraOpenGLHelpers.h"
+
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtk_glew.h"
@@ -9,23 +11,23 @@ namespace penumbra
 
 void LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers)
 {
-  if (!this->Framebuffer->GetFBOIndex())
+  // A new window releases every texture (SetContext), so all are allocated again.
+  const bool newWindow = this->Framebuffer->GetContext() != window;
+  if (newWindow)
   {
     this->Framebuffer->SetContext(window);
-    this->DepthStencil->SetContext(window);
-    this->Layers->SetContext(window);
-    this->DepthCopy->SetContext(window);
     this->DepthCopyFramebuffer->SetContext(window);
+    this->DepthStencil->SetContext(window);
+    this->DepthCopy->SetContext(window);
   }
-  if (width != this->Width || height != this->Height)
+  if (newWindow || width != this->Width || height != this->Height)
   {
     this->DepthStencil->AllocateDepthStencil(width, height);
     this->DepthCopy->AllocateDepthStencil(width, height);
   }
-  if (width != this->Width || height != this->Height || layers != this->LayerCount)
+  if (TextureNeedsAllocation(
+        this->Layers, window, width, height, layers, 1, vtkTextureObject::Nearest))
   {
-    this->Layers->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Layers->SetMagnificationFilter(vtkTextureObject::Nearest);
     this->Layers->Allocate3D(width, height, layers, 1, VTK_FLOAT);
   }
   this->Width = width;

@@ -24,6 +24,25 @@ std::size_t TextureBytes(vtkTextureObject* texture)
     std::max(1u, texture->GetDepth()) * static_cast<std::size_t>(texture->GetComponents()) * 4;
 }
 
+bool TextureNeedsAllocation(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
+  int height, int depth, int components, int filter)
+{
+  if (texture->GetContext() != window)
+  {
+    texture->SetContext(window);
+  }
+  if (texture->GetHandle() && static_cast<int>(texture->GetWidth()) == width &&
+    static_cast<int>(texture->GetHeight()) == height &&
+    static_cast<int>(std::max(1u, texture->GetDepth())) == depth &&
+    texture->GetComponents() == components)
+  {
+    return false;
+  }
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(filter);
+  return true;
+}
+
 void SetScissor(vtkOpenGLState* state, const PixelRect& rect)
 {
   state->vtkglScissor(rect.X0, rect.Y0, rect.X1 - rect.X0, rect.Y1 - rect.Y0);

@@ -30,6 +30,13 @@ namespace penumbra
 /// Bytes a texture of 32-bit components holds on the GPU (0 before it is allocated).
 std::size_t TextureBytes(vtkTextureObject* texture);
 
+/// Points `texture` at `window` and says whether the caller must allocate it (again) for
+/// `width` x `height` x `depth` texels of `components`: true when it has no storage yet, the
+/// window changed (which releases it) or its shape differs; the filters are then set to
+/// `filter` (a vtkTextureObject filter) for the new storage.
+bool TextureNeedsAllocation(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
+  int height, int depth, int components, int filter);
+
 /// Readies the pass's shader programs. One that does not build is reported once, with what the
 /// pass does instead, and nullptr returned.
 class ShaderPrograms

@@ -206,16 +206,14 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   const double tolerance = this->Bounded ? this->Tolerance : 1e-5 * glm::length(size);
 
   vtkOpenGLState* ostate = window->GetState();
-  if (!this->Framebuffer->GetFBOIndex())
+  if (this->Framebuffer->GetContext() != window)
   {
     this->Framebuffer->SetContext(window);
-    this->Depth->SetContext(window);
   }
-  if (static_cast<int>(this->Depth->GetWidth()) != resolution)
+  // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
+  if (TextureNeedsAllocation(
+        this->Depth, window, resolution, resolution, 1, 1, vtkTextureObject::Linear))
   {
-    // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
-    this->Depth->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Depth->SetMagnificationFilter(vtkTextureObject::Linear);
     this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
     this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
     this->Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32);

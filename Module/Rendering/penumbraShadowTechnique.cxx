@@ -48,20 +48,14 @@ void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
 
 void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture, int components) const
 {
-  if (texture->GetContext() != this->Window)
+  if (TextureNeedsAllocation(texture, this->Window, this->Size[0], this->Size[1], 1, components,
+        vtkTextureObject::Nearest))
   {
-    texture->SetContext(this->Window);
-  }
-  if (static_cast<int>(texture->GetWidth()) != this->Size[0] ||
-    static_cast<int>(texture->GetHeight()) != this->Size[1] ||
-    texture->GetComponents() != components)
-  {
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
     texture->Allocate2D(this->Size[0], this->Size[1], components, VTK_FLOAT);
   }
   vtkOpenGLState* ostate = this->Window->GetState();
   this->AttachColour(texture, 0);
+  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   vtkOpenGLState::ScopedglClearColor clearColor(ostate);
   ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -96,15 +90,8 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
     return;
   }
   vtkOpenGLState* ostate = this->Window->GetState();
-  // A point inside a wedge lies behind its front faces and in front of its back faces. When
-  // neither the eye nor the near plane can be inside this caster's wedges (its bounds grown by
-  // the light's radius miss the near plane's hull with the light, as for z-pass), front faces
-  // tested against the scene depth skip every point in front of the wedge. Otherwise back
-  // faces, which every ray meeting the wedge crosses once, skip points behind it.
-  const glm::dvec3 grow(light.World.w != 0.0 ? light.SoftRadius : 0.0);
-  const bool frontFaces = light.World.w != 0.0 && buffer.Fallbacks == 0 &&
-    !VolumeMayReachNearPlane(
-      caster.WorldMin - grow, caster.WorldMax + grow, light.World, this->NearCorners);
+  const bool frontFaces = WedgesDrawnByFrontFaces(caster.WorldMin, caster.WorldMax, light.World,
+    light.SoftRadius, this->NearCorners, buffer.Fallbacks != 0);
   ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
   ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
   const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), buffer.Origin));

@@ -81,6 +81,7 @@ void ShadowVolumeRenderer::DrawOpaqueSample(
   const ShadowFrame& frame, const ShadowLight& light, std::size_t k)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
+  ScopedDrawState saved(ostate);
   const bool countInColour = light.CountsCentreInColour();
   ostate->vtkglStencilMask(0xFF);
   ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
@@ -102,7 +103,6 @@ void ShadowVolumeRenderer::DrawOpaqueSample(
     return;
   }
   // Translucent casters' volumes are drawn when the technique asks for them.
-  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   for (CasterCache* caster : *frame.Casters)
   {
@@ -189,12 +189,9 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   }
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkShaderProgram* program = this->Program;
-  const bool zFail =
-    VolumeMayReachNearPlane(caster.WorldMin, caster.WorldMax, sample, frame.NearCorners);
-  // Points seen through a translucent caster lie behind its light cap, which z-pass must then
-  // count too; behind an opaque one nothing is seen.
-  const bool seeThrough = caster.SeenThrough;
-  if (zFail || seeThrough)
+  const VolumeDrawPlan plan =
+    PlanVolumeDraw(caster.WorldMin, caster.WorldMax, sample, frame.NearCorners, caster.SeenThrough);
+  if (plan.LightCap || plan.DarkCap)
   {
     volume.EnsureCaps(*caster.Mesh);
   }
@@ -210,7 +207,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   volume.Upload();
   volume.Indices->Bind();
 
-  if (!zFail)
+  if (!plan.ZFail)
   {
     // z-pass: count volume faces in front of the visible surface; caps are not needed but for
     // a translucent caster's light cap.
@@ -220,7 +217,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
     this->Triangles += static_cast<vtkIdType>(sides / 3);
-    if (seeThrough)
+    if (plan.LightCap)
     {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
       this->Triangles += static_cast<vtkIdType>(lightCap / 3);
@@ -243,7 +240,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     // push cannot move it behind any other visible point.
     // A caster seen through is not in the depth pass: its cap needs no push, and one could move
     // it behind an opaque point just behind it.
-    program->SetUniformf("capDepthBias", seeThrough ? 0.0f : CapDepthBias);
+    program->SetUniformf("capDepthBias", caster.SeenThrough ? 0.0f : CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
     program->SetUniformf("capDepthBias", 0.0f);
     this->Triangles += static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);

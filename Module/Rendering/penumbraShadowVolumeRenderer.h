@@ -48,7 +48,7 @@ public:
   bool Begin(const ShadowFrame& frame);
   /// Counts the opaque casters' volumes from light.Samples[k] into the bound layer's stencil
   /// (cleared first), or, when the light's technique counts the centre in colour, additively
-  /// into the layer itself. Leaves the stencil test and colour writes as set for that.
+  /// into the layer itself. The GL state is restored on return; the counts stay.
   void DrawOpaqueSample(const ShadowFrame& frame, const ShadowLight& light, std::size_t k);
   /// What ShadowFrame::DrawTranslucentVolumes does.
   PixelRect DrawTranslucent(const ShadowFrame& frame, const ShadowLight& light, std::size_t first,
@@ -60,7 +60,8 @@ public:
 private:
   /// Draws one caster's volume from `sample` into the stencil or, with `countInColour`, as
   /// -weight per crossing in front of the point (z-pass) or the same total from those behind it
-  /// (z-fail) into colour.
+  /// (z-fail) into colour. It sets the stencil operations and depth function of its draws: its
+  /// callers hold the ScopedDrawState, not it, as it runs per caster and sample.
   void DrawVolume(const ShadowFrame& frame, CasterCache& caster,
     const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour,
     float weight);

@@ -838,6 +838,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglDisable(GL_STENCIL_TEST); // each draw that reads the counts turns it on
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
@@ -857,10 +858,9 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       internals.Volumes.DrawOpaqueSample(frame, light, k);
-      ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
       ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
       light.Technique->ResolveSample(frame, light, k);
-      ostate->vtkglDisable(GL_DEPTH_CLAMP);
     }
     internals.StageTimes.End(penumbra::StageTimes::Volumes);
     penumbra::StageTimes::Scope timedWedges(internals.StageTimes, penumbra::StageTimes::Wedges);

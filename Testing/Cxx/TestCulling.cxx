@@ -4,7 +4,11 @@
 //   box's shadow volume (the segment from the light, or the ray towards it, meets the box).
 // - ShadowMayReachView false: no point of the view frustum (500 random points) is shadowed by
 //   the box from any of 32 points of the light (its centre and points of its sphere or cone).
-// Random cameras, boxes and lights, positional and directional. The share of "may" answers that
+// - WedgesDrawnByFrontFaces true: no point of the near rectangle (a 12 x 12 grid) is shadowed
+//   by the box from any of those 32 light points, so no wedge reaches it.
+// PlanVolumeDraw's caps follow its z-pass/z-fail choice; directional lights and wedge fallbacks
+// draw wedges by their back faces. Random cameras, boxes and lights, positional and
+// directional. The share of "may" answers that
 // brute force confirms is printed: the decisions cull something, not nothing.
 #include "penumbraCheck.h"
 #include "penumbraCulling.h"
@@ -246,6 +250,8 @@ int main()
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int nearNo = 0, nearNoWrong = 0, nearYes = 0, nearYesConfirmed = 0;
   int viewNo = 0, viewNoWrong = 0;
+  int frontWedges = 0, frontWedgesWrong = 0, badPlans = 0;
+  std::mt19937 wedgeRng(29); // its own stream, so the other checks see the cases they always saw
   for (int trial = 0; trial < 4000; ++trial)
   {
     const Case c = RandomCase(rng);
@@ -273,6 +279,46 @@ int main()
       nearNoWrong += reaches;
     }
 
+    // The volume's plan: caps exactly where its counting needs them.
+    for (const bool seenThrough : { false, true })
+    {
+      const penumbra::VolumeDrawPlan plan =
+        penumbra::PlanVolumeDraw(c.Lo, c.Hi, c.Light, c.NearCorners, seenThrough);
+      const bool zFail = penumbra::VolumeMayReachNearPlane(c.Lo, c.Hi, c.Light, c.NearCorners);
+      badPlans +=
+        (plan.ZFail != zFail || plan.DarkCap != zFail || plan.LightCap != (zFail || seenThrough))
+        ? 1
+        : 0;
+    }
+
+    // Wedges by their front faces: no point of the near plane inside the penumbra or umbra.
+    if (penumbra::WedgesDrawnByFrontFaces(c.Lo, c.Hi, c.Light, c.Radius, c.NearCorners, false))
+    {
+      ++frontWedges;
+      const std::vector<glm::dvec4> light = LightPoints(c, wedgeRng);
+      bool shadowed = false;
+      for (int i = 0; i <= 11 && !shadowed; ++i)
+      {
+        for (int j = 0; j <= 11 && !shadowed; ++j)
+        {
+          const double s = i / 11.0, t = j / 11.0;
+          const glm::dvec3 p = (1 - s) * (1 - t) * c.NearCorners[0] +
+            s * (1 - t) * c.NearCorners[1] + s * t * c.NearCorners[2] +
+            (1 - s) * t * c.NearCorners[3];
+          for (const glm::dvec4& q : light)
+          {
+            shadowed = shadowed || InShadow(p, q, c.Lo, c.Hi);
+          }
+        }
+      }
+      frontWedgesWrong += shadowed;
+    }
+    const bool directionalFront = c.Light.w == 0.0 &&
+      penumbra::WedgesDrawnByFrontFaces(c.Lo, c.Hi, c.Light, c.Radius, c.NearCorners, false);
+    const bool fallbackFront =
+      penumbra::WedgesDrawnByFrontFaces(c.Lo, c.Hi, c.Light, c.Radius, c.NearCorners, true);
+    badPlans += (directionalFront || fallbackFront) ? 1 : 0;
+
     // View reach: the whole light against points of the frustum.
     if (!penumbra::ShadowMayReachView(c.Lo, c.Hi, c.Light, c.Radius, c.WorldToClip))
     {
@@ -295,10 +341,16 @@ int main()
   std::printf("     near plane: %d said cannot reach (%d wrong), %d said may (%d confirmed)\n",
     nearNo, nearNoWrong, nearYes, nearYesConfirmed);
   std::printf("     view: %d said cannot reach (%d wrong)\n", viewNo, viewNoWrong);
+  std::printf("     wedges: %d drawn by front faces (%d wrong)\n", frontWedges, frontWedgesWrong);
   Check(nearNo > 100 && nearNoWrong == 0,
     "z-pass is chosen only where no volume reaches the near plane");
   Check(nearYesConfirmed > 0, "volumes that do reach the near plane are found");
   Check(viewNo > 100 && viewNoWrong == 0, "a shadow is culled only where it cannot reach the view");
+  Check(frontWedges > 100 && frontWedgesWrong == 0,
+    "wedges are drawn by their front faces only where none reaches the near plane");
+  Check(badPlans == 0,
+    "z-fail draws both caps, z-pass only a seen-through caster's light cap, a wedge fallback "
+    "draws back faces");
   TestTightClippingRange(rng);
   TestShadowScissor(rng);
   return penumbra_test::Finish();
