@@ -19,6 +19,17 @@ int ReplaceAll(std::string& text, const std::string& what, const std::string& wi
   return count;
 }
 
+/// How often `what` occurs in `text`.
+int Count(const std::string& text, const std::string& what)
+{
+  int count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+  {
+    ++count;
+  }
+  return count;
+}
+
 const char* const DeclarationsTag = "//VTK::Light::Dec";
 const char* const ImplementationTag = "//VTK::Light::Impl";
 } // namespace
@@ -26,8 +37,7 @@ const char* const ImplementationTag = "//VTK::Light::Impl";
 bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights)
 {
-  if (fragmentShader.find(DeclarationsTag) == std::string::npos ||
-    fragmentShader.find(ImplementationTag) == std::string::npos)
+  if (Count(fragmentShader, DeclarationsTag) != 1 || Count(fragmentShader, ImplementationTag) != 1)
   {
     return false;
   }

@@ -26,8 +26,9 @@ struct ReceiverLight
 };
 
 /// Adds the LI lookup (`declarations`: penumbraReceiverDec.glsl) at VTK's light declarations and
-/// one factor per light before its light code. Returns false, changing nothing, when the shader
-/// lacks VTK's //VTK::Light::Dec or //VTK::Light::Impl tags.
+/// one factor per light before its light code. Returns false, changing nothing, unless the
+/// shader has VTK's //VTK::Light::Dec and //VTK::Light::Impl tags once each (a second copy, from
+/// a vtkShaderProperty, would declare the lookup twice and the shader would not build).
 bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights);
 

@@ -41,6 +41,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
+#include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
 #include "penumbraCulling.h"
@@ -127,6 +128,15 @@ private:
 } // namespace
 
 //------------------------------------------------------------------------------
+namespace
+{
+struct ShaderEditWarning
+{
+  vtkWeakPointer<vtkProp> Prop;
+  std::string Problem; ///< the mapper's class and what was not found
+};
+} // namespace
+
 class vtkSoftShadowPass::vtkInternals
 {
 public:
@@ -142,8 +152,8 @@ public:
   /// The pass, for the warnings and errors the internals report.
   vtkObject* Owner = nullptr;
   penumbra::ShaderPrograms Programs;
-  /// Prop and problem of every shader edit warned about (once each).
-  std::set<std::string> WarnedShaderEdits;
+  /// The shader edits warned about, once per live prop and problem.
+  std::vector<ShaderEditWarning> WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
@@ -998,9 +1008,14 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     penumbra::ScaleLightTerms(fragmentShader, ReceiverLights(lights));
   if (!missing.empty())
   {
+    std::string which = missing.size() == 1 ? "light " : "lights ";
+    for (std::size_t k = 0; k < missing.size(); ++k)
+    {
+      which += (k ? ", " : "") + std::to_string(missing[k]);
+    }
     this->WarnShaderEdit(mapper, prop,
-      "does not contain all of VTK 9.1's diffuse and specular statements for light " +
-        std::to_string(missing.front()) + " (another VTK version, or custom light code?)");
+      "does not contain all of VTK 9.1's diffuse and specular statements for " + which +
+        " (another VTK version, or custom light code?)");
   }
   return true;
 }
@@ -1011,11 +1026,23 @@ void vtkSoftShadowPass::WarnShaderEdit(
   std::ostringstream what;
   what << (prop ? prop->GetClassName() : "a prop") << " (" << prop << ", drawn by "
        << (mapper ? mapper->GetClassName() : "a mapper") << ")";
-  if (this->Internals->WarnedShaderEdits.insert(what.str() + problem).second)
+  // Once per live prop and problem: a deleted prop's records go, so a new prop at its address
+  // is warned about again.
+  auto& warned = this->Internals->WarnedShaderEdits;
+  warned.erase(std::remove_if(
+                 warned.begin(), warned.end(), [](const ShaderEditWarning& w) { return !w.Prop; }),
+    warned.end());
+  const std::string key = std::string(mapper ? mapper->GetClassName() : "") + ": " + problem;
+  for (const ShaderEditWarning& w : warned)
   {
-    vtkWarningMacro(
-      "The fragment shader of " << what.str() << " " << problem << ": it is drawn unshadowed.");
+    if (w.Prop == prop && w.Problem == key)
+    {
+      return;
+    }
   }
+  warned.push_back({ prop, key });
+  vtkWarningMacro(
+    "The fragment shader of " << what.str() << " " << problem << ": it is drawn unshadowed.");
 }
 
 bool vtkSoftShadowPass::SetShaderParameters(

@@ -67,6 +67,21 @@ int main()
   const std::string before = custom;
   Check(!penumbra::InsertLightFactors(custom, "// LI lookup\n", lights) && custom == before,
     "no light tags: reported, shader unchanged");
+  // A vtkShaderProperty that repeats a tag: the lookup would be declared twice. Reported.
+  std::string repeated = PhongShader() + "//VTK::Light::Dec\n";
+  const std::string repeatedBefore = repeated;
+  Check(
+    !penumbra::InsertLightFactors(repeated, "// LI lookup\n", lights) && repeated == repeatedBefore,
+    "a light tag twice: reported, shader unchanged");
+  // Two lights whose statements are not VTK 9.1's: both reported.
+  std::string neither = PhongShader();
+  for (const char* light : { "0", "1" })
+  {
+    const std::string statement = std::string("specular += (sf * lightColor") + light + ");";
+    neither.replace(neither.find(statement), statement.size(), "/* replaced */");
+  }
+  const std::vector<int> both = penumbra::ScaleLightTerms(neither, lights);
+  Check(both.size() == 2 && both[0] == 0 && both[1] == 1, "two lights not found: both reported");
   // Light code that is not VTK 9.1's: the light is reported.
   std::string other = PhongShader();
   other.replace(other.find("diffuse += (df * lightColor1);"), 30, "diffuse += df*lightColor1;  ");
