@@ -252,7 +252,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   resolve->SetUniform3f("planeV", glm::value_ptr(v));
   resolve->SetUniform4f("planeToTexture", planeToTexture);
   resolve->SetUniformf("planeTolerance", static_cast<float>(tolerance));
-  resolve->SetUniformi("sinusoidal", this->Settings.Sinusoidal);
+  resolve->SetUniformi("sinusoidal", this->Settings.Falloff == PlateauFalloff::Sinusoidal);
   frame.FullScreen->Draw(resolve, this->ResolveVAO);
   this->Depth->Deactivate();
   frame.DepthCopy->Deactivate();

@@ -28,7 +28,7 @@ namespace penumbra
 struct PlateauSettings
 {
   int Resolution = 1024;
-  bool Sinusoidal = true;
+  PlateauFalloff Falloff = PlateauFalloff::Sinusoidal;
   bool UseGivenPlane = false; ///< the plane below, not a marked actor's
   glm::dvec3 Origin{ 0.0 };
   glm::dvec3 Normal{ 0.0, 0.0, 1.0 };

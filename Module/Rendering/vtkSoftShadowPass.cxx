@@ -746,7 +746,9 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
 
   penumbra::PlateauSettings& settings = internals.Techniques.Plateaus.Settings;
   settings.Resolution = this->PlateauResolution;
-  settings.Sinusoidal = this->PlateauFalloff == PLATEAU_FALLOFF_SINUSOIDAL;
+  settings.Falloff = this->PlateauFalloff == PLATEAU_FALLOFF_SINUSOIDAL
+    ? penumbra::PlateauFalloff::Sinusoidal
+    : penumbra::PlateauFalloff::Linear;
   settings.UseGivenPlane = this->UseReceiverPlane;
   settings.Origin = glm::make_vec3(this->ReceiverPlaneOrigin);
   settings.Normal = glm::make_vec3(this->ReceiverPlaneNormal);

@@ -1,5 +1,10 @@
-# clang-format --dry-run -Werror over the tracked C++ sources.
+# clang-format --dry-run -Werror over the C++ sources of Module, Testing, Support, Benchmarks
+# and Examples.
 #   cmake -DCLANG_FORMAT=... -DSOURCE_DIR=... -P CheckFormat.cmake
+if (NOT CLANG_FORMAT)
+  message(FATAL_ERROR "clang-format was not found: install it (apt-get install clang-format; "
+    "./build.sh does) and configure again")
+endif ()
 file(GLOB_RECURSE sources RELATIVE "${SOURCE_DIR}"
   "${SOURCE_DIR}/Module/*.cxx" "${SOURCE_DIR}/Module/*.h"
   "${SOURCE_DIR}/Testing/*.cxx" "${SOURCE_DIR}/Testing/*.h"
