@@ -8,6 +8,7 @@
 #include "penumbraLightSamples.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
+#include "penumbraWedgeBound.h"
 
 #include "vtkCubeSource.h"
 #include "vtkNew.h"
@@ -242,6 +243,107 @@ void TestWedgeContainsItsSupport()
   Check(invalid <= 2, "edges nearly parallel to the light are the only wedges without planes");
 }
 
+/// Whether p lies inside the closed convex polyhedron of outward triangles that
+/// AppendWedgeBound wrote (vertices of `stride` floats, w = 1), within `tolerance`.
+bool InsideBound(const glm::dvec3& p, const std::vector<float>& vertices, int stride,
+  const std::vector<std::uint32_t>& indices, double tolerance)
+{
+  auto point = [&](std::uint32_t i)
+  {
+    const float* v = &vertices[static_cast<std::size_t>(i) * stride];
+    return glm::dvec3(v[0], v[1], v[2]);
+  };
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+  {
+    const glm::dvec3 a = point(indices[t]), b = point(indices[t + 1]), c = point(indices[t + 2]);
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double length = glm::length(n);
+    if (length > 0.0 && glm::dot(n, p - a) > tolerance * length)
+    {
+      return false;
+    }
+  }
+  return !indices.empty();
+}
+
+void TestWedgeBound()
+{
+  // The geometry drawn for an edge, cut to the receivers' box, holds every point of the box
+  // where the edge's correction is non-zero; each vertex carries the edge's attributes.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(12);
+  sphere->SetPhiResolution(8);
+  const CasterTopology ball = Mesh(sphere);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  Box receivers;
+  receivers.Extend({ -3.0, -5.0, -3.0 }, { 3.0, 1.0, 3.0 });
+  const float attributes[2] = { 7.0f, -2.0f };
+  int checked = 0, outside = 0, badVertices = 0, cut = 0;
+  for (const glm::dvec4& light : { glm::dvec4(0.3, 2.5, 0.2, 1.0), glm::dvec4(0.2, 1.0, 0.1, 0.0) })
+  {
+    const double radius = light.w != 0.0 ? 0.4 : 0.15;
+    const ShadowVolume volume = ShadowVolume::Build(ball, light, false);
+    for (const SilhouetteEdge& e : volume.Silhouette)
+    {
+      const glm::dvec3 a = ball.Points[e.From], b = ball.Points[e.To];
+      std::vector<float> vertices;
+      std::vector<std::uint32_t> indices;
+      const WedgeShape shape = AppendWedgeBound(
+        a, b, light, radius, receivers, nullptr, false, attributes, 2, vertices, indices);
+      if (shape == WedgeShape::Nothing)
+      {
+        continue;
+      }
+      ++cut;
+      for (std::size_t v = 0; v + 5 < vertices.size() + 1; v += 6)
+      {
+        badVertices +=
+          (vertices[v + 3] != 1.0f || vertices[v + 4] != 7.0f || vertices[v + 5] != -2.0f) ? 1 : 0;
+      }
+      for (std::uint32_t index : indices)
+      {
+        badVertices += index * 6 >= vertices.size() ? 1 : 0;
+      }
+      for (int i = 0; i < 400; ++i)
+      {
+        const glm::dvec3 p(coordinate(rng), coordinate(rng) - 2.0, coordinate(rng));
+        if (std::abs(EdgeOcclusion(p, a, b, light, radius)) > 1e-12)
+        {
+          ++checked;
+          outside += InsideBound(p, vertices, 6, indices, 1e-5) ? 0 : 1;
+        }
+      }
+    }
+  }
+  std::printf("     %d edges' bounds cut to the box, %d points with a correction, %d outside\n",
+    cut, checked, outside);
+  Check(cut > 20 && checked > 100 && outside == 0,
+    "the bound cut to the receivers holds every point the edge shades");
+  Check(badVertices == 0, "every vertex carries w = 1 and the edge's attributes");
+
+  // A box the wedge misses: nothing drawn. No box: the wedge whole; no wedge: the viewport.
+  Box far;
+  far.Extend({ 50.0, 50.0, 50.0 }, { 51.0, 51.0, 51.0 });
+  const glm::dvec4 above(0.0, 3.0, 0.0, 1.0);
+  std::vector<float> vertices;
+  std::vector<std::uint32_t> indices;
+  Check(AppendWedgeBound({ -1, 0, 0 }, { 1, 0, 0 }, above, 0.2, far, nullptr, false, nullptr, 0,
+          vertices, indices) == WedgeShape::Nothing &&
+      vertices.empty() && indices.empty(),
+    "a receivers' box the wedge misses: nothing appended");
+  Check(AppendWedgeBound({ -1, 0, 0 }, { 1, 0, 0 }, above, 0.2, Box(), nullptr, false, nullptr, 0,
+          vertices, indices) == WedgeShape::Planes &&
+      indices.size() == Wedge::Triangles().size(),
+    "no receivers' box: the whole wedge");
+  vertices.clear();
+  indices.clear();
+  Check(AppendWedgeBound({ 0, 0, 0 }, { 0, 4, 0 }, above, 0.2, Box(), nullptr, false, nullptr, 0,
+          vertices, indices) == WedgeShape::FullViewport &&
+      indices.size() == 3 && vertices.size() == 12 && vertices[3] == 2.0f,
+    "an edge reaching into the light (no wedge, no pyramid): the full-viewport triangle");
+}
+
 void TestDegenerateEdges()
 {
   const glm::dvec4 light(0, 2, 0, 1), sun(0, 1, 0, 0);
@@ -393,6 +495,7 @@ int main()
   TestAgainstMonteCarlo();
   TestContinuityAndMonotonicity();
   TestWedgeContainsItsSupport();
+  TestWedgeBound();
   TestDegenerateEdges();
   TestLightSamples();
   TestLightPyramid();

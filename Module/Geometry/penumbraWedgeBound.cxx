@@ -1,0 +1,105 @@
+#include "penumbraWedgeBound.h"
+
+#include "penumbraSampleCounting.h"
+#include "penumbraWedge.h"
+
+#include <array>
+
+namespace penumbra
+{
+namespace
+{
+/// How far the silhouette sector's planes are pushed out, as a share of the receivers' box.
+constexpr double SectorMargin = 2e-4;
+
+/// Where an edge's fragments can be: its Wedge, or else its LightPyramid, as half-spaces.
+WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+  double radius, Wedge& wedge, LightPyramid& pyramid, std::vector<HalfSpace>& halfSpaces)
+{
+  wedge = Wedge::Build(from, to, light, radius);
+  if (wedge.Valid)
+  {
+    halfSpaces = wedge.HalfSpaces();
+    return WedgeShape::Planes;
+  }
+  pyramid = LightPyramid::Build(from, to, light, radius);
+  if (pyramid.Valid)
+  {
+    halfSpaces = pyramid.HalfSpaces();
+    return WedgeShape::Pyramid;
+  }
+  halfSpaces.clear();
+  return WedgeShape::FullViewport;
+}
+} // namespace
+
+WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+  double radius, const Box& receivers, const EdgeFace* faces, bool frontFacesOnly,
+  const float* attributes, int attributeCount, std::vector<float>& vertices,
+  std::vector<std::uint32_t>& indices)
+{
+  const int floatsPerVertex = 4 + attributeCount;
+  const auto first = static_cast<std::uint32_t>(vertices.size() / floatsPerVertex);
+  auto emit = [&](const glm::dvec4& position)
+  {
+    const float xyzw[4] = { static_cast<float>(position.x), static_cast<float>(position.y),
+      static_cast<float>(position.z), static_cast<float>(position.w) };
+    vertices.insert(vertices.end(), xyzw, xyzw + 4);
+    vertices.insert(vertices.end(), attributes, attributes + attributeCount);
+  };
+  auto emitShape = [&](const auto& corners, const auto& triangles)
+  {
+    for (const auto& corner : corners)
+    {
+      emit(glm::dvec4(corner));
+    }
+    for (unsigned int index : triangles)
+    {
+      indices.push_back(first + index);
+    }
+  };
+  Wedge wedge;
+  LightPyramid pyramid;
+  std::vector<HalfSpace> halfSpaces;
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
+  if (receivers.Valid)
+  {
+    if (faces && wedge.Valid)
+    {
+      // Pushed out by a fraction of the scene, well beyond the depth buffer's error, so that
+      // points on the caster's faces next to the edge stay inside.
+      const std::vector<HalfSpace> sector = SilhouetteSector(
+        wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
+      halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
+    }
+    const ConvexPolyhedron cut = ClipBox(receivers, halfSpaces);
+    if (cut.Empty())
+    {
+      return WedgeShape::Nothing;
+    }
+    std::vector<glm::dvec4> corners;
+    for (const glm::dvec3& p : cut.Points)
+    {
+      corners.emplace_back(p, 1.0);
+    }
+    emitShape(corners, cut.Triangles);
+    return shape;
+  }
+  if (shape == WedgeShape::Planes)
+  {
+    emitShape(wedge.Vertices, Wedge::Triangles());
+  }
+  else if (shape == WedgeShape::Pyramid)
+  {
+    emitShape(pyramid.Vertices, LightPyramid::Triangles());
+  }
+  else
+  {
+    const std::array<glm::dvec4, 3> viewport = { glm::dvec4(-1, -1, 0, 2), glm::dvec4(-1, 3, 0, 2),
+      glm::dvec4(3, -1, 0, 2) };
+    emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
+  }
+  return shape;
+}
+
+} // namespace penumbra
