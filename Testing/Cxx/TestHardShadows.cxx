@@ -1,0 +1,137 @@
+// Hard shadows of vtkSoftShadowPass against an independent ray tracer (vtkRayTracedVisibility,
+// Embree): the classic scene, the camera inside a shadow, z-fail for visible casters, open,
+// non-manifold and non-orientable meshes, a light inside a closed caster. Tolerance: see
+// penumbraTestHarness.h.
+#include "penumbraTestHarness.h"
+
+#include "vtkNew.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricKlein.h"
+#include "vtkParametricMobius.h"
+#include "vtkPlaneSource.h"
+
+using namespace penumbra_test;
+
+namespace
+{
+
+using Scene = PassScene;
+
+void TestClassic()
+{
+  Scene scene;
+  scene.Ground();
+  scene.Sphere(-0.8, 0.9, 0, 0.7);
+  scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  CheckAgainstTruth("classic scene, point light", scene.Render());
+  Check(scene.Pass->GetNumberOfShadowingLights() == 1, "classic: one shadowing light");
+  Check(scene.Pass->GetNumberOfZFailVolumes() == 0, "classic: eye outside all volumes, z-pass");
+
+  // A directional light from the same side.
+  scene.Light->SetPositional(false);
+  scene.Light->SetPosition(-1, 3, 1.5);
+  CheckAgainstTruth("classic scene, directional light", scene.Render());
+}
+
+void TestCameraInsideShadow()
+{
+  // A roof over the camera: the eye is inside the roof's shadow volume (z-fail), looking out at
+  // ground that is partly lit beyond the roof's shadow.
+  Scene scene;
+  scene.Ground(8);
+  scene.Box(0, 3, 0, 4, 0.2, 4);
+  scene.Light->SetPosition(0.5, 10, 0.2);
+  scene.Camera(0, 1.0, 0, 4, 0.2, 4);
+  scene.Renderer->GetActiveCamera()->SetClippingRange(0.05, 50);
+  CheckAgainstTruth("camera inside a shadow volume", scene.Render(), 0.05);
+  Check(scene.Pass->GetNumberOfZFailVolumes() >= 1, "camera inside: z-fail used");
+
+  // Near plane straddling the roof's shadow boundary, looking across it.
+  scene.Camera(1.95, 0.8, 0, 1.95, 0.0, 3);
+  scene.Renderer->GetActiveCamera()->SetClippingRange(0.3, 50);
+  CheckAgainstTruth("near plane cutting a shadow volume", scene.Render(), 0.05);
+  Check(scene.Pass->GetNumberOfZFailVolumes() >= 1, "near plane cut: z-fail used");
+}
+
+void TestVisibleCastersOnZFail()
+{
+  // A low camera under a roof: the ground (itself a caster) and the roof take the z-fail path, so
+  // their light caps lie on visible surfaces; those must stay lit, not z-fight.
+  Scene scene;
+  scene.Ground(5);
+  vtkNew<vtkPlaneSource> roof;
+  roof->SetOrigin(-1, 3.5, 1.5);
+  roof->SetPoint1(3, 3.5, 1.5);
+  roof->SetPoint2(-1, 3.5, 6);
+  scene.Add(roof, 0.7, 0.7, 0.75);
+  scene.Sphere(0, 1.2, 0, 0.8);
+  scene.Light->SetPosition(0.5, 8, 2.5);
+  scene.Camera(0.8, 1.0, 3.5, 0, 0.8, 0);
+  scene.Renderer->GetActiveCamera()->SetClippingRange(0.1, 30);
+  CheckAgainstTruth("visible casters on the z-fail path", scene.Render());
+  Check(scene.Pass->GetNumberOfZFailVolumes() >= 2, "ground and roof use z-fail");
+}
+
+void TestAwkwardMeshes()
+{
+  // Open, non-orientable, inconsistently wound and mirrored casters over a ground plane.
+  Scene scene(240, 180);
+  scene.Ground(6);
+  vtkNew<vtkParametricMobius> mobius;
+  vtkNew<vtkParametricFunctionSource> mobiusSource;
+  mobiusSource->SetParametricFunction(mobius);
+  mobiusSource->SetUResolution(40);
+  mobiusSource->SetVResolution(10);
+  vtkActor* strip = scene.Add(mobiusSource, 0.3, 0.8, 0.4);
+  strip->SetPosition(-1.8, 1.5, 0);
+  strip->SetScale(0.8);
+
+  vtkNew<vtkParametricKlein> klein;
+  vtkNew<vtkParametricFunctionSource> kleinSource;
+  kleinSource->SetParametricFunction(klein);
+  kleinSource->SetUResolution(30);
+  kleinSource->SetVResolution(30);
+  vtkActor* bottle = scene.Add(kleinSource, 0.8, 0.7, 0.2);
+  bottle->SetPosition(1.5, 1.8, -0.5);
+  bottle->SetScale(0.25);
+
+  // An open sheet tilted towards the light, and a mirrored (negative-scale) sphere.
+  vtkNew<vtkPlaneSource> sheet;
+  sheet->SetResolution(3, 3);
+  vtkActor* sheetActor = scene.Add(sheet, 0.6, 0.6, 0.9);
+  sheetActor->SetPosition(0.2, 1.2, 1.8);
+  sheetActor->RotateX(60);
+  vtkActor* mirrored = scene.Sphere(0, 0, 0, 0.4);
+  mirrored->SetPosition(-0.3, 0.8, -1.5);
+  mirrored->SetScale(-1.0, 1.3, 1.0);
+
+  scene.Camera(2, 6, 8, 0, 0.5, 0);
+  CheckAgainstTruth("open, non-orientable and mirrored casters", scene.Render());
+}
+
+void TestLightInsideClosedCaster()
+{
+  // A bulb sphere that casts, around its own light: nothing outside it sees the light.
+  Scene scene;
+  scene.Ground();
+  scene.Sphere(0, 1, 0, 0.6);
+  scene.Sphere(-2, 6, 3, 0.3);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  const Comparison c = scene.Render();
+  CheckAgainstTruth("light inside a closed caster", c, 0.9);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  static const Features features = {
+    { "Classic", TestClassic },
+    { "CameraInsideShadow", TestCameraInsideShadow },
+    { "VisibleCastersOnZFail", TestVisibleCastersOnZFail },
+    { "AwkwardMeshes", TestAwkwardMeshes },
+    { "LightInsideClosedCaster", TestLightInsideClosedCaster },
+  };
+  return RunFeatures(argc, argv, features);
+}
