@@ -207,36 +207,63 @@ void TestContinuityAndMonotonicity()
   Check(worstJump < 1e-3, "no cracks: continuous everywhere around a box's corners");
 }
 
-void TestWedgeContainsItsSupport()
+/// Calls visit(a, b, light, radius) for every silhouette edge of a 12 x 8 sphere, from a
+/// positional light of radius 0.4 and a directional one of 0.15 radians.
+template <typename Visit>
+void ForEachBallEdge(Visit&& visit)
 {
-  // Wherever an edge's correction is non-zero, the point lies inside that edge's wedge.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(12);
   sphere->SetPhiResolution(8);
   const CasterTopology ball = Mesh(sphere);
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
-  int checked = 0, outside = 0, invalid = 0;
   for (const glm::dvec4& light : { glm::dvec4(0.3, 2.5, 0.2, 1.0), glm::dvec4(0.2, 1.0, 0.1, 0.0) })
   {
     const double radius = light.w != 0.0 ? 0.4 : 0.15;
     const ShadowVolume volume = ShadowVolume::Build(ball, light, false);
     for (const SilhouetteEdge& e : volume.Silhouette)
     {
-      const glm::dvec3 a = ball.Points[e.From], b = ball.Points[e.To];
-      const Wedge wedge = Wedge::Build(a, b, light, radius);
-      invalid += wedge.Valid ? 0 : 1;
-      for (int i = 0; i < 400 && wedge.Valid; ++i)
-      {
-        const glm::dvec3 p(coordinate(rng), coordinate(rng) - 2.0, coordinate(rng));
-        if (std::abs(EdgeOcclusion(p, a, b, light, radius)) > 1e-12)
-        {
-          ++checked;
-          outside += wedge.Contains(p, 1e-9) ? 0 : 1;
-        }
-      }
+      visit(ball.Points[e.From], ball.Points[e.To], light, radius);
     }
   }
+}
+
+/// Calls check(p) for each of 400 random points below the sphere where edge a -> b's
+/// correction is non-zero: the points its bounds must hold.
+template <typename CheckPoint>
+void ForEachSupportPoint(std::mt19937& rng, const glm::dvec3& a, const glm::dvec3& b,
+  const glm::dvec4& light, double radius, CheckPoint&& check)
+{
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  for (int i = 0; i < 400; ++i)
+  {
+    const glm::dvec3 p(coordinate(rng), coordinate(rng) - 2.0, coordinate(rng));
+    if (std::abs(EdgeOcclusion(p, a, b, light, radius)) > 1e-12)
+    {
+      check(p);
+    }
+  }
+}
+
+void TestWedgeContainsItsSupport()
+{
+  // Wherever an edge's correction is non-zero, the point lies inside that edge's wedge.
+  std::mt19937 rng(3);
+  int checked = 0, outside = 0, invalid = 0;
+  ForEachBallEdge(
+    [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+    {
+      const Wedge wedge = Wedge::Build(a, b, light, radius);
+      invalid += wedge.Valid ? 0 : 1;
+      if (wedge.Valid)
+      {
+        ForEachSupportPoint(rng, a, b, light, radius,
+          [&](const glm::dvec3& p)
+          {
+            ++checked;
+            outside += wedge.Contains(p, 1e-9) ? 0 : 1;
+          });
+      }
+    });
   std::printf("     %d points with a correction, %d outside their wedge, %d invalid wedges\n",
     checked, outside, invalid);
   Check(checked > 100 && outside == 0, "valid wedges contain their support");
@@ -270,30 +297,20 @@ void TestWedgeBound()
 {
   // The geometry drawn for an edge, cut to the receivers' box, holds every point of the box
   // where the edge's correction is non-zero; each vertex carries the edge's attributes.
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
-  const CasterTopology ball = Mesh(sphere);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
   Box receivers;
   receivers.Extend({ -3.0, -5.0, -3.0 }, { 3.0, 1.0, 3.0 });
   const float attributes[2] = { 7.0f, -2.0f };
   int checked = 0, outside = 0, badVertices = 0, cut = 0;
-  for (const glm::dvec4& light : { glm::dvec4(0.3, 2.5, 0.2, 1.0), glm::dvec4(0.2, 1.0, 0.1, 0.0) })
-  {
-    const double radius = light.w != 0.0 ? 0.4 : 0.15;
-    const ShadowVolume volume = ShadowVolume::Build(ball, light, false);
-    for (const SilhouetteEdge& e : volume.Silhouette)
+  ForEachBallEdge(
+    [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
     {
-      const glm::dvec3 a = ball.Points[e.From], b = ball.Points[e.To];
       std::vector<float> vertices;
       std::vector<std::uint32_t> indices;
-      const WedgeShape shape = AppendWedgeBound(
-        a, b, light, radius, receivers, nullptr, false, attributes, 2, vertices, indices);
-      if (shape == WedgeShape::Nothing)
+      if (AppendWedgeBound(a, b, light, radius, receivers, nullptr, false, attributes, 2, vertices,
+            indices) == WedgeShape::Nothing)
       {
-        continue;
+        return;
       }
       ++cut;
       for (std::size_t v = 0; v + 5 < vertices.size() + 1; v += 6)
@@ -305,17 +322,13 @@ void TestWedgeBound()
       {
         badVertices += index * 6 >= vertices.size() ? 1 : 0;
       }
-      for (int i = 0; i < 400; ++i)
-      {
-        const glm::dvec3 p(coordinate(rng), coordinate(rng) - 2.0, coordinate(rng));
-        if (std::abs(EdgeOcclusion(p, a, b, light, radius)) > 1e-12)
+      ForEachSupportPoint(rng, a, b, light, radius,
+        [&](const glm::dvec3& p)
         {
           ++checked;
           outside += InsideBound(p, vertices, 6, indices, 1e-5) ? 0 : 1;
-        }
-      }
-    }
-  }
+        });
+    });
   std::printf("     %d edges' bounds cut to the box, %d points with a correction, %d outside\n",
     cut, checked, outside);
   Check(cut > 20 && checked > 100 && outside == 0,
