@@ -195,7 +195,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   ostate->vtkglEnable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
   glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  frame.DepthCopy->Activate();
+  frame.DepthCopy()->Activate();
 
   frame.SetDepthUniforms(program);
   program->SetUniformi("counters", 0);
@@ -231,7 +231,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   ostate->vtkglDisable(GL_CULL_FACE);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  frame.DepthCopy->Deactivate();
+  frame.DepthCopy()->Deactivate();
 
   return this->Resolve(frame, light, false);
 }
@@ -257,7 +257,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   }
   else
   {
-    frame.AttachColour(frame.LightIntensity, light.Layer);
+    frame.AttachColour(frame.Layers(), light.Layer);
   }
   // At every geometry pixel (the far-plane triangle passes GL_GREATER exactly there): counters
   // where a wedge reached (the stencil's mark), the centre's count elsewhere.
@@ -282,7 +282,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   this->CentreCount->Deactivate();
   if (countOffset)
   {
-    frame.AttachColour(frame.LightIntensity, light.Layer);
+    frame.AttachColour(frame.Layers(), light.Layer);
   }
   return true;
 }

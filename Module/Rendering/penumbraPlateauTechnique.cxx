@@ -237,7 +237,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  frame.DepthCopy->Activate();
+  frame.DepthCopy()->Activate();
   this->Depth->Activate();
   const glm::mat4 clipToPlane(glm::translate(glm::dmat4(1.0), -plane.Origin) * frame.ClipToWorld);
   const float planeToTexture[4] = { static_cast<float>(1.0 / size.x),
@@ -255,7 +255,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   resolve->SetUniformi("sinusoidal", this->Settings.Falloff == PlateauFalloff::Sinusoidal);
   frame.FullScreen->Draw(resolve, this->ResolveVAO);
   this->Depth->Deactivate();
-  frame.DepthCopy->Deactivate();
+  frame.DepthCopy()->Deactivate();
   return static_cast<vtkIdType>(this->Triangles.size() / 3);
 }
 

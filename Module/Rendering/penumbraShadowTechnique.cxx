@@ -41,6 +41,16 @@ PixelRect ShadowFrame::DrawTranslucentVolumes(const ShadowLight& light, std::siz
   return this->Volumes->DrawTranslucent(*this, light, first, count, target, components);
 }
 
+vtkTextureObject* ShadowFrame::DepthCopy() const
+{
+  return this->Buffer->GetDepthCopy();
+}
+
+vtkTextureObject* ShadowFrame::Layers() const
+{
+  return this->Buffer->GetLayers();
+}
+
 void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
 {
   this->Buffer->AttachColour(texture, layer);
@@ -66,7 +76,7 @@ void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program) const
 {
   const float viewport[2] = { static_cast<float>(this->Size[0]),
     static_cast<float>(this->Size[1]) };
-  program->SetUniformi("depthTexture", this->DepthCopy->GetTextureUnit());
+  program->SetUniformi("depthTexture", this->DepthCopy()->GetTextureUnit());
   program->SetUniform2f("viewportSize", viewport);
 }
 

@@ -106,11 +106,11 @@ struct ShadowFrame
   glm::dmat4 ClipToWorld{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
   const std::vector<CasterCache*>* Casters = nullptr;
-  /// The LI buffer (its framebuffer bound while a light's layer is drawn), its depth copy for
-  /// the shaders to read, and its layers.
+  /// The LI buffer (its framebuffer bound while a light's layer is drawn).
   LightIntensityBuffer* Buffer = nullptr;
-  vtkTextureObject* DepthCopy = nullptr;
-  vtkTextureObject* LightIntensity = nullptr;
+  /// The buffer's depth copy, for the shaders to read, and its layers.
+  vtkTextureObject* DepthCopy() const;
+  vtkTextureObject* Layers() const;
   ShaderPrograms* Programs = nullptr;
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;

@@ -175,7 +175,7 @@ PixelRect ShadowVolumeRenderer::DrawTranslucent(const ShadowFrame& frame, const 
         static_cast<float>(-std::log1p(-volume.Caster->Opacity)));
     }
   }
-  frame.AttachColour(frame.LightIntensity, light.Layer);
+  frame.AttachColour(frame.Layers(), light.Layer);
   return covered;
 }
 

@@ -45,7 +45,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
   }
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
-  frame.DepthCopy->Activate();
+  frame.DepthCopy()->Activate();
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -82,7 +82,7 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     ostate->vtkglBlendEquation(GL_MIN);
     frame.FullScreen->Draw(horizon, this->HorizonVAO);
   }
-  frame.DepthCopy->Deactivate();
+  frame.DepthCopy()->Deactivate();
 }
 
 void WedgeTechnique::ReleaseGraphicsResources(vtkWindow*)

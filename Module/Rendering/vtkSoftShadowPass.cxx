@@ -899,8 +899,6 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
   frame.Buffer = &this->LI;
-  frame.DepthCopy = this->LI.GetDepthCopy();
-  frame.LightIntensity = this->LI.GetLayers();
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;
