@@ -17,6 +17,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderPassCollection.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkSphereSource.h"
 #include "vtkTranslucentPass.h"
@@ -251,6 +252,29 @@ void TestDelegateChain()
   std::printf("     glass at (%d, %d) after the pass: %d %d %d, without shadows %d %d %d\n", x, y,
     shadowed[0], shadowed[1], shadowed[2], unshadowed[0], unshadowed[1], unshadowed[2]);
   Check(shadowed == unshadowed, "translucent geometry after the pass is drawn whole");
+
+  // The same pass as the opaque step of a user's vtkRenderStepsPass (VTK's own sequence of
+  // camera, lights, opaque, translucent, volumes and overlays).
+  vtkNew<vtkRenderStepsPass> renderSteps;
+  renderSteps->SetOpaquePass(scene.Pass);
+  scene.Renderer->SetPass(renderSteps);
+  const Comparison stepsTruth = scene.Render();
+  CheckAgainstTruth("as the opaque step of a vtkRenderStepsPass", stepsTruth);
+  // And its shadows reach the image VTK's steps draw: the shadowed pixels are darker than
+  // with shadows off.
+  scene.Pass->ShadowsEnabledOff();
+  scene.Window->Render();
+  const std::vector<unsigned char> lit = WindowColours(scene.Window, scene.Renderer);
+  scene.Pass->ShadowsEnabledOn();
+  scene.Window->Render();
+  const std::vector<unsigned char> shaded = WindowColours(scene.Window, scene.Renderer);
+  int darker = 0;
+  for (std::size_t p = 0; p + 2 < lit.size() && lit.size() == shaded.size(); p += 3)
+  {
+    darker += shaded[p] + shaded[p + 1] + shaded[p + 2] + 30 < lit[p] + lit[p + 1] + lit[p + 2];
+  }
+  std::printf("     vtkRenderStepsPass: %d pixels darker with shadows on\n", darker);
+  Check(darker >= stepsTruth.Shadowed / 2, "vtkRenderStepsPass: the shadows are in its image");
 }
 
 void TestBadInput()
