@@ -50,6 +50,14 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
     if method not in METHODS:
         raise ValueError("method must be one of %s, not %r" % (", ".join(sorted(METHODS)), method))
     targets = list(lights) if lights is not None else _lights_of(renderer)
+    for name, value, positional, instead in (
+            ("radius", radius, True, "angular_radius (degrees)"),
+            ("angular_radius", angular_radius, False, "radius (world units)")):
+        if value and targets and not any(bool(l.GetPositional()) == positional for l in targets):
+            kind = "positional" if positional else "directional"
+            warnings.warn("penumbra.enable_shadows: %s=%r is for %s lights and none of these is "
+                          "one, so no light changes size; give %s" % (name, value, kind, instead),
+                          stacklevel=2)
     for light in targets:
         size = radius if light.GetPositional() else angular_radius
         if size is not None:

@@ -84,6 +84,16 @@ try:
     check(False, "an unknown method is refused")
 except ValueError:
     check(True, "an unknown method is refused")
+# vedo's light is directional: a radius in world units is for positional lights, and is said
+# to change nothing rather than silently giving hard shadows.
+import warnings as python_warnings
+with python_warnings.catch_warnings(record=True) as caught:
+    python_warnings.simplefilter("always")
+    before = penumbra.vtkSoftShadowPass.GetLightRadius(sun)
+    penumbra.enable_shadows(renderer, radius=0.3, lights=[sun])
+said = [str(w.message) for w in caught if "radius=0.3 is for positional lights" in str(w.message)]
+check(len(said) == 1 and penumbra.vtkSoftShadowPass.GetLightRadius(sun) == before,
+      "a radius for directional lights only: one warning, the light unchanged")
 penumbra.disable_shadows(renderer)
 check(renderer.GetPass() is None, "disable_shadows takes the pass off")
 light = penumbra.add_light(renderer, (1, 4, 2), radius=0.3)
