@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <sstream>
 #include <vector>
 
 namespace penumbra
@@ -40,7 +41,7 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataObject* data)
 
 } // namespace
 
-bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
+bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkObject* owner)
 {
   this->Used = true;
   if (this->Data == data && this->BuiltAt >= data->GetMTime() && this->Generation > 0)
@@ -71,19 +72,21 @@ bool MeshCache::Update(vtkDataObject* data, vtkObject* owner)
   // back) warns once, not every frame, and data with nothing to cast says what it had instead
   // (points and lines only, or every triangle dropped) in the same sentence.
   const std::string problems = this->Topology.Report.Describe();
+  std::ostringstream caster;
+  caster << "Shadow caster " << (prop ? prop->GetClassName() : "prop") << " (" << prop << "), its "
+         << data->GetClassName() << " (" << data << ")";
   if (this->Topology.Empty() && !this->WarnedEmpty)
   {
-    vtkWarningWithObjectMacro(owner,
-      "Shadow caster " << data->GetClassName() << " (" << data
-                       << ") has no surface triangles, so it casts no shadow"
-                       << (problems.empty() ? "" : ": " + problems) << ".");
+    vtkWarningWithObjectMacro(owner, << caster.str()
+                                     << " has no surface triangles, so it casts no shadow"
+                                     << (problems.empty() ? "" : ": " + problems) << ".");
     this->WarnedEmpty = this->WarnedProblems = true;
   }
   else if (!problems.empty() && !this->WarnedProblems)
   {
-    vtkWarningWithObjectMacro(owner,
-      "Shadow caster " << data->GetClassName() << " (" << data << "): " << problems
-                       << (this->Generation > 1 ? " (not repeated for later versions)." : "."));
+    vtkWarningWithObjectMacro(
+      owner, << caster.str() << ": " << problems
+             << (this->Generation > 1 ? " (not repeated for later versions)." : "."));
     this->WarnedProblems = true;
   }
   return true;
@@ -412,14 +415,14 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   this->Uploaded = false;
 }
 
-MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkObject* owner)
+MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkProp* prop, vtkObject* owner)
 {
   std::unique_ptr<MeshCache>& mesh = this->Meshes[data];
   if (!mesh || mesh->Data != data)
   {
     mesh.reset(new MeshCache);
   }
-  mesh->Update(data, owner);
+  mesh->Update(data, prop, owner);
   return mesh.get();
 }
 

@@ -34,6 +34,7 @@ class vtkDataObject;
 class vtkLight;
 class vtkObject;
 class vtkPolyData;
+class vtkProp;
 class vtkShaderProgram;
 
 namespace penumbra
@@ -58,8 +59,9 @@ struct MeshCache
   bool WarnedEmpty = false;
 
   /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`,
-  /// once per data object and kind (problems, no triangles).
-  bool Update(vtkDataObject* data, vtkObject* owner);
+  /// once per data object and kind (problems, no triangles), naming `prop`, the first prop
+  /// found drawing it.
+  bool Update(vtkDataObject* data, vtkProp* prop, vtkObject* owner);
   /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
   /// binds the VAO for `program`.
   void Bind(vtkShaderProgram* program);
@@ -233,7 +235,7 @@ struct ShadowCaches
   std::map<std::pair<vtkActor*, std::size_t>, std::unique_ptr<CasterCache>> Casters;
 
   /// Finds or creates the mesh of `data` and brings it up to date.
-  MeshCache* FindMesh(vtkDataObject* data, vtkObject* owner);
+  MeshCache* FindMesh(vtkDataObject* data, vtkProp* prop, vtkObject* owner);
   CasterCache* FindCaster(vtkActor* actor, std::size_t part);
   /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
   void BeginFrame();

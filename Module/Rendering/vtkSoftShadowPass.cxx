@@ -720,7 +720,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   internals.UpdateReceiverBox();
   for (const penumbra::DrawnSurface& surface : internals.SceneWalk.Casters(s->GetRenderer(), this))
   {
-    penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, this);
+    penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, surface.Actor, this);
     if (mesh->Topology.Empty())
     {
       continue;

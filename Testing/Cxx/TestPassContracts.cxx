@@ -282,12 +282,7 @@ void TestBadInput()
   Scene scene;
   scene.Ground();
   scene.Sphere(0, 1, 0, 0.6);
-  int warnings = 0;
-  vtkNew<vtkCallbackCommand> counter;
-  counter->SetClientData(&warnings);
-  counter->SetCallback(
-    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-  scene.Pass->AddObserver(vtkCommand::WarningEvent, counter);
+  const WarningLog warnings(scene.Pass);
 
   auto addData = [&](vtkPolyData* data)
   {
@@ -327,14 +322,25 @@ void TestBadInput()
 
   scene.Camera(3, 4, 7, 0, 0.5, 0);
   const Comparison comparison = scene.Render();
-  std::printf("     warnings: %d\n", warnings);
+  for (const std::string& message : warnings.Messages)
+  {
+    std::printf("     warning: %s\n", message.c_str());
+  }
   // Empty data, lines only, vertices only, and triangles that are all NaN or degenerate: one
-  // warning each, saying what the data had instead of triangles.
-  Check(warnings == 4, "each bad caster is reported with one warning");
+  // warning each, naming the actor and saying what the data had instead of triangles.
+  Check(warnings.Messages.size() == 4, "each bad caster is reported with one warning");
+  Check(warnings.Count("Actor (") == 4 && warnings.Count("), its vtkPolyData (") == 4 &&
+      warnings.Count("has no surface triangles, so it casts no shadow") == 4,
+    "each names its actor and its data, and says it casts no shadow");
+  Check(warnings.Count("and 1 line cells") == 1 && warnings.Count("ignored 1 vertex") == 1 &&
+      warnings.Count("NaN or infinite coordinates") == 3 &&
+      warnings.Count("degenerate (zero-area) triangles") == 1,
+    "each says what its data had instead: lines, vertices, non-finite points, degenerate "
+    "triangles");
   CheckAgainstTruth("good caster beside bad input", comparison);
-  const int before = warnings;
+  const std::size_t before = warnings.Messages.size();
   scene.Window->Render();
-  Check(warnings == before, "warnings are not repeated every frame");
+  Check(warnings.Messages.size() == before, "warnings are not repeated every frame");
 }
 
 } // namespace
