@@ -953,8 +953,15 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
     blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, opacity, leaves);
   auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
+  vtkCompositeDataDisplayAttributes* glyphBlocks = glyphs ? glyphs->GetBlockAttributes() : nullptr;
   for (const auto& leaf : leaves)
   {
+    // A glyph mapper skips a leaf whose own block visibility is off, and nothing else.
+    if (glyphBlocks && glyphBlocks->HasBlockVisibility(leaf.first) &&
+      !glyphBlocks->GetBlockVisibility(leaf.first))
+    {
+      continue;
+    }
     auto points = vtkDataSet::SafeDownCast(leaf.first);
     const double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
     if (!glyphs)

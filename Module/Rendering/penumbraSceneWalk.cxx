@@ -352,10 +352,17 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
   vtkDataObject* input = mapper->GetInputDataObject(0, 0);
   if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
   {
+    // As vtkOpenGLGlyph3DMapper draws composite input: each leaf unless its own block
+    // visibility hides it (VTK 9.1's glyph mapper reads no inherited visibility, no opacity).
+    vtkCompositeDataDisplayAttributes* blocks = mapper->GetBlockAttributes();
     auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      inputs.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+      vtkDataObject* leaf = it->GetCurrentDataObject();
+      if (!blocks || !blocks->HasBlockVisibility(leaf) || blocks->GetBlockVisibility(leaf))
+      {
+        inputs.push_back(vtkDataSet::SafeDownCast(leaf));
+      }
     }
   }
   else

@@ -267,6 +267,50 @@ void TestGlyphsByDirection()
     });
 }
 
+void TestGlyphsOfCompositeInput()
+{
+  // Composite input: a glyph mapper draws each leaf's points, except a leaf whose block
+  // visibility is off. The hidden block, in view, must cast nothing.
+  vtkSmartPointer<vtkPolyData> shown = GlyphPoints();
+  vtkSmartPointer<vtkPolyData> hidden = GlyphPoints();
+  vtkNew<vtkTransform> shift;
+  shift->Translate(0.3, 0.0, 2.2);
+  vtkNew<vtkPoints> moved;
+  shift->TransformPoints(hidden->GetPoints(), moved);
+  hidden->SetPoints(moved);
+  auto cone = Cone();
+  CompareScenes(
+    "glyph mapper, composite input, a hidden block",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkMultiBlockDataSet> blocks;
+      blocks->SetBlock(0, shown);
+      blocks->SetBlock(1, hidden);
+      vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+      attributes->SetBlockVisibility(hidden, false);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputDataObject(blocks);
+      mapper->SetBlockAttributes(attributes);
+      mapper->SetSourceConnection(cone->GetOutputPort());
+      mapper->SetOrientationArray("direction");
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3D> glyphs;
+      glyphs->SetInputData(shown);
+      glyphs->SetSourceConnection(cone->GetOutputPort());
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
+      glyphs->SetScaleModeToDataScalingOff();
+      glyphs->SetVectorModeToUseVector();
+      auto actor = MakeActor(glyphs, 1, 1, 1);
+      actor->GetMapper()->ScalarVisibilityOff();
+      r->AddActor(actor);
+    });
+}
+
 void TestGlyphsByRotation()
 {
   // Rotation angles, two sources picked by an index array, masked points: one plain actor per
@@ -751,6 +795,7 @@ int main()
 {
   TestGlyphsByDirection();
   TestGlyphsByRotation();
+  TestGlyphsOfCompositeInput();
   TestMultiBlock();
   TestAssembly();
   TestLODActor();
