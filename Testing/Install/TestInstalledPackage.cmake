@@ -31,6 +31,15 @@ if (found EQUAL -1)
   message(FATAL_ERROR "PenumbraDemo does not load the installed library:\n${last_output}")
 endif ()
 run("${WORK_DIR}/examples/PenumbraDemo" --help)
+# An application using only the pass loads neither the ray tracer nor Embree.
+run(ldd "${WORK_DIR}/examples/MinimalShadows")
+string(FIND "${last_output}" "${prefix}/lib/libvtkPenumbraRendering" found)
+string(REGEX MATCH "embree|PenumbraRayTracing" truth_library "${last_output}")
+if (found EQUAL -1 OR truth_library)
+  message(FATAL_ERROR "MinimalShadows should load the installed pass and no ray tracer:\n"
+    "${last_output}")
+endif ()
+run("${WORK_DIR}/examples/MinimalShadows" --no-render)
 
 # Python: the installed package, found through the .pth the install wrote into the
 # interpreter's site directory for this prefix (what /usr/local gets).
