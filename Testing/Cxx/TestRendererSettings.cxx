@@ -16,6 +16,7 @@
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkRendererSettingsPass.h"
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
@@ -223,11 +224,22 @@ int main()
   {
     TestSetting(setting, full);
   }
+  {
+    // VTK 9.1 peels with vtkDualDepthPeelingPass where the driver allows it (llvmpipe does)
+    // and vtkDepthPeelingPass elsewhere; there is no switch, so say which one ran above.
+    View probe(full, true);
+    probe.Render();
+    auto renderer = vtkOpenGLRenderer::SafeDownCast(probe.Renderer);
+    std::printf("depth peeling above: VTK's %s\n",
+      renderer && renderer->IsDualDepthPeelingSupported() ? "vtkDualDepthPeelingPass"
+                                                          : "vtkDepthPeelingPass");
+  }
   // A viewport away from the window's origin: the LI buffer is read at the viewport's pixels,
   // not the window's, also inside depth peeling's own framebuffers. (Not SSAO: VTK 9.1's own
   // SSAO draws an offset viewport shifted and cropped, with or without this pass.)
   const double offset[4] = { 0.3, 0.2, 1.0, 1.0 };
   TestSetting({ "FXAA, offset viewport", settings[1].Apply }, offset);
   TestSetting({ "depth peeling, offset viewport", settings[0].Apply }, offset);
+  TestSetting({ "tone mapping, offset viewport", settings[3].Apply, false }, offset);
   return penumbra_test::Finish();
 }
