@@ -11,6 +11,7 @@ import numpy as np
 import penumbra
 import vedo
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 failures = []
 
@@ -84,6 +85,35 @@ try:
     check(False, "an unknown method is refused")
 except ValueError:
     check(True, "an unknown method is refused")
+# The renderer's own settings stay on: the pass's default delegate draws the scene as the
+# renderer would, here with FXAA (on a single-sampled window; see limitations.md).
+def frame():
+    plotter.render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(plotter.window)
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).copy()
+
+
+check(isinstance(shadows.GetDelegatePass(), penumbra.vtkRendererSettingsPass),
+      "enable_shadows draws the scene through vtkRendererSettingsPass")
+plotter.window.SetMultiSamples(0)
+renderer.SetUseFXAA(True)
+penumbra.disable_shadows(renderer)
+vtk_fxaa = frame()
+shadows = penumbra.enable_shadows(renderer)
+shadows.ShadowsEnabledOff()
+pass_fxaa = frame()
+renderer.SetUseFXAA(False)
+pass_plain = frame()
+shadows.ShadowsEnabledOn()
+fxaa_kept = np.abs(pass_fxaa.astype(int) - vtk_fxaa).max(axis=1) > 2
+fxaa_changes = np.abs(pass_plain.astype(int) - vtk_fxaa).max(axis=1) > 2
+print(f"     FXAA: {fxaa_kept.mean():.4%} of pixels differ from VTK's, {fxaa_changes.mean():.4%} "
+      "without it")
+check(fxaa_kept.mean() < 0.001 and fxaa_changes.mean() > 0.002,
+      "enable_shadows keeps the renderer's FXAA (the image is VTK's with FXAA)")
+
 # vedo's light is directional: a radius in world units is for positional lights, and is said
 # to change nothing rather than silently giving hard shadows.
 import warnings as python_warnings
