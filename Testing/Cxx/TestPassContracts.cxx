@@ -275,6 +275,28 @@ void TestDelegateChain()
   }
   std::printf("     vtkRenderStepsPass: %d pixels darker with shadows on\n", darker);
   Check(darker >= stepsTruth.Shadowed / 2, "vtkRenderStepsPass: the shadows are in its image");
+  // Lit pixels are as VTK's steps draw them without the pass.
+  const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
+  vtkNew<vtkOpaquePass> plainOpaque;
+  renderSteps->SetOpaquePass(plainOpaque);
+  scene.Window->Render();
+  const std::vector<unsigned char> withoutPass = WindowColours(scene.Window, scene.Renderer);
+  int litPixels = 0, litDiffer = 0;
+  for (std::size_t i = 0; i < visibility.size() && 3 * visibility.size() == shaded.size(); ++i)
+  {
+    if (visibility[i] >= 1.0f)
+    {
+      ++litPixels;
+      const std::size_t c = 3 * i;
+      litDiffer += std::abs(shaded[c] - withoutPass[c]) > 2 ||
+        std::abs(shaded[c + 1] - withoutPass[c + 1]) > 2 ||
+        std::abs(shaded[c + 2] - withoutPass[c + 2]) > 2;
+    }
+  }
+  std::printf("     vtkRenderStepsPass: %d of %d lit pixels differ from VTK's without the pass\n",
+    litDiffer, litPixels);
+  Check(litPixels > 1000 && litDiffer <= litPixels / 500,
+    "vtkRenderStepsPass: lit pixels as VTK's steps draw them without the pass");
 }
 
 void TestBadInput()
