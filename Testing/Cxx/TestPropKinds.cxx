@@ -20,6 +20,9 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
 #include "vtkCylinderSource.h"
+#include "vtkDataSetMapper.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
@@ -493,6 +496,31 @@ void TestLODActor()
     });
 }
 
+void TestDataSetInput()
+{
+  // Not polydata: an unstructured grid of tetrahedra through vtkDataSetMapper, which VTK draws
+  // as its outer surface. It casts as that surface in a plain actor does.
+  auto ball = SphereSource(-0.6, 1.0, 0.2, 0.7, 16, 12);
+  vtkNew<vtkDelaunay3D> tetrahedra;
+  tetrahedra->SetInputConnection(ball->GetOutputPort());
+  CompareScenes(
+    "unstructured grid through vtkDataSetMapper",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkDataSetMapper> mapper;
+      mapper->SetInputConnection(tetrahedra->GetOutputPort());
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkDataSetSurfaceFilter> surface;
+      surface->SetInputConnection(tetrahedra->GetOutputPort());
+      r->AddActor(MakeActor(surface, 1, 1, 1));
+    });
+}
+
 //------------------------------------------------------------------------------
 /// What cannot cast warns once per prop and reason, over two frames, and the rest still shadows.
 /// Imposter spheres (a vtkOpenGLSphereMapper, radii from an array, one point overlapping
@@ -799,6 +827,7 @@ int main()
   TestMultiBlock();
   TestAssembly();
   TestLODActor();
+  TestDataSetInput();
   TestImposterSpheres();
   TestImposterSticks();
   TestMolecule();
