@@ -15,6 +15,8 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkCylinderSource.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
@@ -48,6 +50,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -724,6 +727,68 @@ vtkSmartPointer<vtkDataSet> DrawnGlyphPoints(
   return kept;
 }
 
+/// The glyph sources of a vtkGlyph3DMapper in index order: its source connections, or the
+/// children of its source table tree (a child that is not polydata draws nothing here).
+std::vector<vtkPolyData*> GlyphSources(vtkGlyph3DMapper* mapper)
+{
+  std::vector<vtkPolyData*> sources;
+  if (!mapper->GetUseSourceTableTree())
+  {
+    for (int i = 0; i < mapper->GetNumberOfInputConnections(1); ++i)
+    {
+      sources.push_back(mapper->GetSource(i));
+    }
+    return sources;
+  }
+  if (vtkDataObjectTree* table = mapper->GetSourceTableTree())
+  {
+    auto it = vtk::TakeSmartPointer(table->NewTreeIterator());
+    it->SetTraverseSubTree(false);
+    it->SetVisitOnlyLeaves(false);
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      sources.push_back(vtkPolyData::SafeDownCast(it->GetCurrentDataObject()));
+    }
+  }
+  return sources;
+}
+
+/// The scale VTK 9.1's vtkOpenGLGlyph3DMapper gives a glyph: the scale array's magnitude or
+/// components, clamped to Range and mapped onto [0, 1] when Clamping, times ScaleFactor (which
+/// applies with or without scaling); 0 becomes 1e-10.
+std::array<double, 3> GlyphScaleOf(vtkGlyph3DMapper* mapper, vtkDataArray* scale, vtkIdType id)
+{
+  std::array<double, 3> by = { 1.0, 1.0, 1.0 };
+  if (scale)
+  {
+    const double* tuple = scale->GetTuple(id);
+    if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS &&
+      scale->GetNumberOfComponents() == 3)
+    {
+      by = { tuple[0], tuple[1], tuple[2] };
+    }
+    else if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_MAGNITUDE)
+    {
+      by.fill(vtkMath::Norm(tuple, scale->GetNumberOfComponents()));
+    }
+    if (mapper->GetClamping())
+    {
+      const double* range = mapper->GetRange();
+      const double span = range[1] - range[0] != 0.0 ? range[1] - range[0] : 1.0;
+      for (double& value : by)
+      {
+        value = (std::min(std::max(value, range[0]), range[1]) - range[0]) / span;
+      }
+    }
+  }
+  for (double& value : by)
+  {
+    value *= mapper->GetScaleFactor();
+    value = value == 0.0 ? 1.0e-10 : value;
+  }
+  return by;
+}
+
 /// The glyphs VTK draws for one dataset of a vtkGlyph3DMapper's input, as a vtkGlyph3D filter
 /// (orientation by direction, or none) or a vtkTransform per glyph (rotation angles,
 /// quaternions) builds them.
@@ -753,7 +818,8 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   auto mask = mapper->GetMasking() && maskName
     ? vtkBitArray::SafeDownCast(data->GetAbstractArray(maskName))
     : nullptr;
-  const int sources = mapper->GetNumberOfInputConnections(1);
+  const std::vector<vtkPolyData*> sourceTable = GlyphSources(mapper);
+  const int sources = static_cast<int>(sourceTable.size());
   vtkSmartPointer<vtkDataSet> points = DrawnGlyphPoints(input, mask, orientation);
   // The arrays again, on the points kept.
   auto same = [&points](vtkDataArray* array)
@@ -768,9 +834,11 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
     glyphs->SetInputData(points);
     for (int i = 0; i < sources; ++i)
     {
-      glyphs->SetSourceData(i, mapper->GetSource(i));
+      glyphs->SetSourceData(i, sourceTable[i]);
     }
-    glyphs->SetScaling(scale != nullptr || mapper->GetScaling());
+    // The mapper applies ScaleFactor with or without a scale array; vtkGlyph3D only when
+    // scaling, so it always scales (DataScalingOff without an array).
+    glyphs->SetScaling(true);
     glyphs->SetScaleFactor(mapper->GetScaleFactor());
     glyphs->SetClamping(mapper->GetClamping());
     glyphs->SetRange(mapper->GetRange());
@@ -818,11 +886,7 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   vtkNew<vtkAppendPolyData> append;
   for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id)
   {
-    double scaleBy = mapper->GetScaleFactor();
-    if (scale)
-    {
-      scaleBy *= vtkMath::Norm(scale->GetTuple(id), scale->GetNumberOfComponents());
-    }
+    const std::array<double, 3> scaleBy = GlyphScaleOf(mapper, scale, id);
     const double* o = orientation->GetTuple(id);
     vtkNew<vtkTransform> transform;
     transform->Translate(points->GetPoint(id));
@@ -838,18 +902,19 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
       transform->RotateWXYZ(
         vtkMath::DegreesFromRadians(2.0 * std::atan2(length, o[0])), o[1], o[2], o[3]);
     }
-    if (mapper->GetScaling())
-    {
-      transform->Scale(scaleBy, scaleBy, scaleBy);
-    }
+    transform->Scale(scaleBy[0], scaleBy[1], scaleBy[2]);
     int source = 0;
     if (index)
     {
       source = static_cast<int>(vtkMath::Norm(index->GetTuple(id), index->GetNumberOfComponents()));
       source = std::min(std::max(source, 0), sources - 1);
     }
+    if (source < 0 || !sourceTable[source])
+    {
+      continue;
+    }
     vtkNew<vtkTransformPolyDataFilter> moved;
-    moved->SetInputData(mapper->GetSource(source));
+    moved->SetInputData(sourceTable[source]);
     moved->SetTransform(transform);
     moved->Update();
     append->AddInputData(moved->GetOutput());

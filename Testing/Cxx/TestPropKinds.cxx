@@ -55,6 +55,8 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -356,6 +358,75 @@ void TestGlyphsByRotation()
         transform->RotateZ(angles[2]);
         transform->RotateX(angles[0]);
         transform->RotateY(angles[1]);
+        auto actor = MakeActor(i % 2 ? static_cast<vtkAlgorithm*>(box) : cone, 1, 1, 1);
+        actor->SetUserTransform(transform);
+        r->AddActor(actor);
+      }
+    });
+}
+
+void TestGlyphsByQuaternionTableAndClamping()
+{
+  // Unit quaternions (w, x, y, z), sources from a source table tree picked by an index array,
+  // sizes clamped to a range and mapped onto [0, 1] before the scale factor, as VTK 9.1's
+  // vtkOpenGLGlyph3DMapper does: one plain actor per glyph, built with vtkTransform.
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  vtkNew<vtkDoubleArray> quaternions;
+  quaternions->SetName("quaternion");
+  quaternions->SetNumberOfComponents(4);
+  std::vector<std::pair<double, glm::dvec3>> rotations;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    const double degrees = 25.0 * static_cast<double>(i);
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(1.0, 0.5 * (i % 3), 0.4 * (i % 2) - 0.2));
+    const double half = vtkMath::RadiansFromDegrees(degrees) / 2.0;
+    quaternions->InsertNextTuple4(
+      std::cos(half), std::sin(half) * axis.x, std::sin(half) * axis.y, std::sin(half) * axis.z);
+    rotations.emplace_back(degrees, axis);
+  }
+  points->GetPointData()->AddArray(quaternions);
+  auto cone = Cone();
+  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  cone->Update();
+  box->Update();
+  vtkNew<vtkMultiBlockDataSet> table;
+  table->SetBlock(0, cone->GetOutput());
+  table->SetBlock(1, box->GetOutput());
+  const double range[2] = { 0.4, 1.2 }, factor = 0.9;
+  CompareScenes(
+    "glyph mapper, quaternions, source table, clamping",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetUseSourceTableTree(true);
+      mapper->SetSourceTableTree(table);
+      mapper->SourceIndexingOn();
+      mapper->SetSourceIndexArray("index");
+      mapper->SetOrientationModeToQuaternion();
+      mapper->SetOrientationArray("quaternion");
+      mapper->SetScaleArray("size");
+      mapper->SetScaleModeToScaleByMagnitude();
+      mapper->ClampingOn();
+      mapper->SetRange(range[0], range[1]);
+      mapper->SetScaleFactor(factor);
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkDataArray* sizes = points->GetPointData()->GetArray("size");
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        const double size = std::min(std::max(sizes->GetTuple1(i), range[0]), range[1]);
+        const double scale = factor * (size - range[0]) / (range[1] - range[0]);
+        const auto& rotation = rotations[static_cast<std::size_t>(i)];
+        vtkNew<vtkTransform> transform;
+        transform->Translate(points->GetPoint(i));
+        transform->RotateWXYZ(
+          rotation.first, rotation.second.x, rotation.second.y, rotation.second.z);
+        transform->Scale(scale, scale, scale);
         auto actor = MakeActor(i % 2 ? static_cast<vtkAlgorithm*>(box) : cone, 1, 1, 1);
         actor->SetUserTransform(transform);
         r->AddActor(actor);
@@ -824,6 +895,7 @@ int main()
   TestGlyphsByDirection();
   TestGlyphsByRotation();
   TestGlyphsOfCompositeInput();
+  TestGlyphsByQuaternionTableAndClamping();
   TestMultiBlock();
   TestAssembly();
   TestLODActor();
