@@ -12,6 +12,7 @@
 
 #include "vtkActor.h"
 #include "vtkFloatArray.h"
+#include "vtkFrameBufferObjectBase.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -431,6 +432,14 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     internals.Window = window;
     renderer->GetTiledSizeAndOrigin(
       &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
+    // Inside a pass that draws into a framebuffer of its own (vtkSSAAPass renders into one
+    // larger than the window), that framebuffer's pixels are the ones drawn: size the buffers
+    // to it, as vtkSSAOPass does.
+    if (vtkFrameBufferObjectBase* target = s->GetFrameBuffer())
+    {
+      target->GetLastSize(internals.Size[0], internals.Size[1]);
+      internals.Origin[0] = internals.Origin[1] = 0;
+    }
     // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
     internals.LightsPass->Render(s);
     this->CollectShadowingLights(renderer);
