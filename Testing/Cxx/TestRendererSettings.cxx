@@ -213,6 +213,16 @@ void TestSetting(const Setting& setting, const double viewport[4])
     CheckAgainstTruth(
       setting.Name, CompareWithTruth(shadowed.Window, shadowed.Renderer, shadowed.Pass, 0));
   }
+  else if (!setting.Supersampled)
+  {
+    // The scene's depth stayed in the outer pass's framebuffer: take it from the same scene
+    // drawn without the setting (same camera, same surfaces).
+    View twin(viewport, true);
+    twin.Render();
+    const std::vector<float> depth = WindowDepth(twin.Window, twin.Renderer);
+    CheckAgainstTruth(
+      setting.Name, CompareWithTruth(shadowed.Window, shadowed.Renderer, shadowed.Pass, 0, &depth));
+  }
 }
 } // namespace
 

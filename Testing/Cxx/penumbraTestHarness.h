@@ -278,9 +278,11 @@ struct Comparison
  * Pixels are compared where the rasterized and ray-traced depths agree and no neighbour sits
  * across an object silhouette. A disagreement within one pixel of a truth shadow boundary is
  * rasterization, not an error (sampling and tessellation move edges by up to a pixel).
+ * `zbuffer`, when given, is the rasterized depth (when the window's is not the scene's: a pass
+ * around this one kept it in a framebuffer of its own).
  */
-inline Comparison CompareWithTruth(
-  vtkRenderWindow* window, vtkRenderer* renderer, vtkSoftShadowPass* pass, int lightIndex)
+inline Comparison CompareWithTruth(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkSoftShadowPass* pass, int lightIndex, const std::vector<float>* zbuffer = nullptr)
 {
   Comparison result;
   vtkImageData* image = pass->GetVisibilityImage(lightIndex);
@@ -296,8 +298,9 @@ inline Comparison CompareWithTruth(
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(lightIndex));
   const std::vector<float> actual = ImageValues(image);
-  const std::vector<char> comparable = penumbra::metrics::ComparablePixels(
-    ImageValues(truth->GetDepthImage()), WindowDepth(window, renderer), size[0], size[1]);
+  const std::vector<char> comparable =
+    penumbra::metrics::ComparablePixels(ImageValues(truth->GetDepthImage()),
+      zbuffer ? *zbuffer : WindowDepth(window, renderer), size[0], size[1]);
   for (std::size_t p = 0; p < comparable.size(); ++p)
   {
     if (!comparable[p])
