@@ -828,7 +828,11 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   orientation = same(orientation);
   index = same(index);
 
-  if (!orientation || mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION)
+  // vtkGlyph3D has one Range for clamping and for picking sources; the mapper clamps with it
+  // and picks by the index itself. With both, each glyph gets its own transform.
+  const bool clampsAndPicks = mapper->GetClamping() && scale && index && sources > 1;
+  if ((!orientation || mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION) &&
+    !clampsAndPicks)
   {
     vtkNew<vtkGlyph3D> glyphs;
     glyphs->SetInputData(points);
@@ -887,16 +891,32 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id)
   {
     const std::array<double, 3> scaleBy = GlyphScaleOf(mapper, scale, id);
-    const double* o = orientation->GetTuple(id);
+    const double* o = orientation ? orientation->GetTuple(id) : nullptr;
     vtkNew<vtkTransform> transform;
     transform->Translate(points->GetPoint(id));
-    if (mapper->GetOrientationMode() == vtkGlyph3DMapper::ROTATION)
+    if (o && mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION)
+    {
+      // A half turn about the bisector of x and the direction, as the mapper turns it.
+      if (o[1] == 0.0 && o[2] == 0.0)
+      {
+        if (o[0] < 0.0)
+        {
+          transform->RotateWXYZ(180.0, 0.0, 1.0, 0.0);
+        }
+      }
+      else
+      {
+        const double length = vtkMath::Norm(o);
+        transform->RotateWXYZ(180.0, (o[0] + length) / 2.0, o[1] / 2.0, o[2] / 2.0);
+      }
+    }
+    else if (o && mapper->GetOrientationMode() == vtkGlyph3DMapper::ROTATION)
     {
       transform->RotateZ(o[2]);
       transform->RotateX(o[0]);
       transform->RotateY(o[1]);
     }
-    else
+    else if (o) // a quaternion (w, x, y, z)
     {
       const double length = vtkMath::Norm(o + 1);
       transform->RotateWXYZ(

@@ -316,6 +316,69 @@ void TestGlyphsOfCompositeInput()
     });
 }
 
+void TestGlyphsByDirectionClampingAndIndex()
+{
+  // Direction, sizes clamped to a range, two sources picked by an index: the mapper clamps with
+  // Range and picks by the index value, so the plain scene is one vtkGlyph3D per source, each
+  // over the points that pick it.
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  auto cone = Cone();
+  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  const double range[2] = { 0.4, 1.1 }, factor = 0.9;
+  CompareScenes(
+    "glyph mapper, direction, clamping, index",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetSourceConnection(0, cone->GetOutputPort());
+      mapper->SetSourceConnection(1, box->GetOutputPort());
+      mapper->SetOrientationArray("direction");
+      mapper->SetScaleArray("size");
+      mapper->SetScaleModeToScaleByMagnitude();
+      mapper->ClampingOn();
+      mapper->SetRange(range[0], range[1]);
+      mapper->SetScaleFactor(factor);
+      mapper->SourceIndexingOn();
+      mapper->SetSourceIndexArray("index");
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      for (const int picked : { 0, 1 })
+      {
+        auto subset = vtkSmartPointer<vtkPolyData>::New();
+        vtkNew<vtkPoints> kept;
+        subset->GetPointData()->CopyAllocate(points->GetPointData());
+        for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+        {
+          if (points->GetPointData()->GetArray("index")->GetTuple1(i) == picked)
+          {
+            subset->GetPointData()->CopyData(
+              points->GetPointData(), i, kept->InsertNextPoint(points->GetPoint(i)));
+          }
+        }
+        subset->SetPoints(kept);
+        vtkNew<vtkGlyph3D> glyphs;
+        glyphs->SetInputData(subset);
+        glyphs->SetSourceConnection(picked ? box->GetOutputPort() : cone->GetOutputPort());
+        glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "size");
+        glyphs->SetInputArrayToProcess(
+          1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
+        glyphs->SetScaleModeToScaleByScalar();
+        glyphs->SetVectorModeToUseVector();
+        glyphs->ClampingOn();
+        glyphs->SetRange(range[0], range[1]);
+        glyphs->SetScaleFactor(factor);
+        auto actor = MakeActor(glyphs, 1, 1, 1);
+        actor->GetMapper()->ScalarVisibilityOff();
+        r->AddActor(actor);
+      }
+    });
+}
+
 void TestGlyphsByRotation()
 {
   // Rotation angles, two sources picked by an index array, masked points: one plain actor per
@@ -895,6 +958,7 @@ int main()
   TestGlyphsByDirection();
   TestGlyphsByRotation();
   TestGlyphsOfCompositeInput();
+  TestGlyphsByDirectionClampingAndIndex();
   TestGlyphsByQuaternionTableAndClamping();
   TestMultiBlock();
   TestAssembly();
