@@ -2,6 +2,7 @@
 
 #include "vtkSoftShadowPass.h"
 
+#include "vtkAbstractMapper3D.h"
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkAssemblyNode.h"
@@ -22,6 +23,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkLODProp3D.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
@@ -1068,9 +1070,25 @@ void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
     vtkAssemblyNode* node = path->GetLastNode();
-    if (auto actor = vtkActor::SafeDownCast(node ? node->GetViewProp() : nullptr))
+    vtkProp* leaf = node ? node->GetViewProp() : nullptr;
+    if (auto actor = vtkActor::SafeDownCast(leaf))
     {
       CollectLeaf(actor, node->GetMatrix(), casts, meshes);
+    }
+    else if (auto levels = vtkLODProp3D::SafeDownCast(leaf))
+    {
+      // Its pick level, the one the pass casts from: an actor of its own at its matrix.
+      vtkAbstractMapper3D* mapper = levels->GetLODMapper(levels->GetPickLODID());
+      vtkNew<vtkPropCollection> actors;
+      levels->GetActors(actors);
+      for (int i = 0; i < actors->GetNumberOfItems(); ++i)
+      {
+        auto level = vtkActor::SafeDownCast(actors->GetItemAsObject(i));
+        if (level && level->GetMapper() == mapper)
+        {
+          CollectLeaf(level, levels->GetMatrix(), casts, meshes);
+        }
+      }
     }
   }
 }

@@ -4,6 +4,7 @@
 #include "penumbraMatrices.h"
 #include "vtkSoftShadowPass.h"
 
+#include "vtkAbstractMapper3D.h"
 #include "vtkActor.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
@@ -19,6 +20,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
+#include "vtkLODProp3D.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLMoleculeMapper.h"
@@ -194,11 +196,39 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
   return surfaces;
 }
 
+void SceneWalk::LODLevel(
+  vtkLODProp3D* levels, vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
+  // VTK draws one level, a vtkActor of the prop's own at its matrix, switching as frame times
+  // change. The shadow comes from its pick level (the most detailed unless the user picks one),
+  // so that it does not change with VTK's choice, as a vtkLODActor casts from its full mapper.
+  vtkAbstractMapper3D* mapper = levels->GetLODMapper(levels->GetPickLODID());
+  vtkNew<vtkPropCollection> actors;
+  levels->GetActors(actors);
+  for (int i = 0; i < actors->GetNumberOfItems(); ++i)
+  {
+    auto level = vtkActor::SafeDownCast(actors->GetItemAsObject(i));
+    if (level && level->GetMapper() == mapper)
+    {
+      this->Leaf(level, levels->GetMatrix(), owner, surfaces);
+      return;
+    }
+  }
+  this->Warn(owner, levels,
+    "is a vtkLODProp3D whose pick level is not a surface actor (a volume or an image): it "
+    "casts no shadow");
+}
+
 void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
   std::vector<DrawnSurface>& surfaces)
 {
   if (!leaf->GetVisibility())
   {
+    return;
+  }
+  if (auto levels = vtkLODProp3D::SafeDownCast(leaf))
+  {
+    this->LODLevel(levels, owner, surfaces);
     return;
   }
   auto actor = vtkActor::SafeDownCast(leaf);

@@ -32,6 +32,7 @@ class vtkActor;
 class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
 class vtkGlyph3DMapper;
+class vtkLODProp3D;
 class vtkMapper;
 class vtkOpenGLMoleculeMapper;
 class vtkOpenGLSphereMapper;
@@ -75,6 +76,8 @@ public:
 private:
   void Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
+  /// A vtkLODProp3D: the level it is picked by, at its matrix.
+  void LODLevel(vtkLODProp3D* levels, vtkObject* owner, std::vector<DrawnSurface>& surfaces);
   /// `composite`: drawn by a vtkCompositePolyDataMapper2, which decides per block.
   void Blocks(vtkActor* actor, bool composite, vtkCompositeDataDisplayAttributes* attributes,
     vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,

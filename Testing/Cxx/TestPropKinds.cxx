@@ -31,6 +31,7 @@
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkLODActor.h"
+#include "vtkLODProp3D.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -47,6 +48,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropAssembly.h"
+#include "vtkProperty.h"
 #include "vtkShaderProperty.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
@@ -630,6 +632,43 @@ void TestLODActor()
     });
 }
 
+void TestLODProp3D()
+{
+  // A vtkLODProp3D with a fine and a coarse level, moved by its own matrix: it casts from its
+  // pick level (the finest, level 0), as the same data in a plain actor does.
+  auto fine = SphereSource(0.0, 0.0, 0.0, 0.6, 32, 16);
+  auto coarse = SphereSource(0.0, 0.0, 0.0, 0.6, 8, 4);
+  auto box = BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7);
+  CompareScenes(
+    "vtkLODProp3D, two levels",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkLODProp3D> levels;
+      for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ fine, coarse })
+      {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputConnection(source->GetOutputPort());
+        vtkNew<vtkProperty> property;
+        property->SetAmbient(0.2);
+        property->SetDiffuse(0.8);
+        const int id = levels->AddLOD(mapper, property, 0.0);
+        levels->SetLODLevel(id, source == fine ? 0.0 : 1.0);
+      }
+      levels->SetPosition(-0.9, 1.0, 0.0);
+      r->AddViewProp(levels);
+      r->AddActor(MakeActor(box, 1, 1, 1));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      auto sphere = MakeActor(fine, 1, 1, 1);
+      sphere->SetPosition(-0.9, 1.0, 0.0);
+      r->AddActor(sphere);
+      r->AddActor(MakeActor(box, 1, 1, 1));
+    });
+}
+
 void TestDataSetInput()
 {
   // Not polydata: an unstructured grid of tetrahedra through vtkDataSetMapper, which VTK draws
@@ -964,6 +1003,7 @@ int main()
   TestAssembly();
   TestLODActor();
   TestDataSetInput();
+  TestLODProp3D();
   TestImposterSpheres();
   TestImposterSticks();
   TestMolecule();
