@@ -43,6 +43,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -1071,6 +1072,10 @@ void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
   {
     vtkAssemblyNode* node = path->GetLastNode();
     vtkProp* leaf = node ? node->GetViewProp() : nullptr;
+    if (vtkSkybox::SafeDownCast(leaf))
+    {
+      continue; // at infinity: it occludes nothing
+    }
     if (auto actor = vtkActor::SafeDownCast(leaf))
     {
       CollectLeaf(actor, node->GetMatrix(), casts, meshes);

@@ -33,6 +33,7 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
@@ -232,6 +233,10 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     return;
   }
   auto actor = vtkActor::SafeDownCast(leaf);
+  if (vtkSkybox::SafeDownCast(leaf))
+  {
+    return; // drawn at infinity, behind everything: nothing lies beyond it to shadow
+  }
   if (!actor)
   {
     auto volume = vtkVolume::SafeDownCast(leaf);

@@ -50,8 +50,10 @@
 #include "vtkPropAssembly.h"
 #include "vtkProperty.h"
 #include "vtkShaderProperty.h"
+#include "vtkSkybox.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
+#include "vtkTexture.h"
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
@@ -669,6 +671,54 @@ void TestLODProp3D()
     });
 }
 
+void TestSkybox()
+{
+  // A vtkSkybox is an actor VTK draws at infinity: it must cast nothing (its mapper's input, a
+  // cube round the origin, once cast a phantom shadow) in the pass and in the truth.
+  View withSky, without;
+  for (View* view : { &withSky, &without })
+  {
+    Ground(view->Renderer);
+    view->Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16), 0.9, 0.3, 0.3));
+  }
+  vtkNew<vtkImageData> sky;
+  sky->SetDimensions(4, 4, 1);
+  sky->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::fill_n(static_cast<unsigned char*>(sky->GetScalarPointer()), 48, 160);
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(sky);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(texture);
+  withSky.Renderer->AddActor(skybox);
+  const WarningLog warnings(withSky.Pass);
+  withSky.Render();
+  without.Render();
+  const std::vector<float> a = withSky.Visibility(), b = without.Visibility();
+  int differ = 0, shadowed = 0;
+  for (std::size_t i = 0; i < a.size() && a.size() == b.size(); ++i)
+  {
+    const float va = std::isnan(a[i]) ? 1.0f : a[i], vb = std::isnan(b[i]) ? 1.0f : b[i];
+    differ += std::abs(va - vb) > 0.5f;
+    shadowed += vb < 0.5f;
+  }
+  vtkNew<vtkRayTracedVisibility> truthWith, truthWithout;
+  truthWith->SetRenderer(withSky.Renderer);
+  truthWithout->SetRenderer(without.Renderer);
+  const bool traced = truthWith->Update() && truthWithout->Update();
+  const std::vector<float> ta = traced ? ImageValues(truthWith->GetVisibilityImage(0)) : a,
+                           tb = traced ? ImageValues(truthWithout->GetVisibilityImage(0)) : a;
+  int truthDiffer = 0;
+  for (std::size_t i = 0; i < ta.size() && ta.size() == tb.size(); ++i)
+  {
+    truthDiffer += std::abs(ta[i] - tb[i]) > 0.5f;
+  }
+  std::printf("skybox: %d of %d shadowed px differ, truth %d\n", differ, shadowed, truthDiffer);
+  Check(shadowed > Width * Height / 100 && differ == 0 && a.size() == b.size(),
+    "skybox: the shadows are those of the scene without it");
+  Check(traced && truthDiffer == 0, "skybox: the truth ignores it too");
+  Check(warnings.Messages.empty(), "skybox: no warning");
+}
+
 void TestDataSetInput()
 {
   // Not polydata: an unstructured grid of tetrahedra through vtkDataSetMapper, which VTK draws
@@ -1004,6 +1054,7 @@ int main()
   TestLODActor();
   TestDataSetInput();
   TestLODProp3D();
+  TestSkybox();
   TestImposterSpheres();
   TestImposterSticks();
   TestMolecule();
