@@ -1082,7 +1082,7 @@ void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
     }
     else if (auto levels = vtkLODProp3D::SafeDownCast(leaf))
     {
-      // Its pick level, the one the pass casts from: an actor of its own at its matrix.
+      // The level VTK draws (its pick level once drawn): an actor of its own at its matrix.
       vtkAbstractMapper3D* mapper = levels->GetLODMapper(levels->GetPickLODID());
       vtkNew<vtkPropCollection> actors;
       levels->GetActors(actors);

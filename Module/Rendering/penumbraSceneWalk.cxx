@@ -200,9 +200,8 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
 void SceneWalk::LODLevel(
   vtkLODProp3D* levels, vtkObject* owner, std::vector<DrawnSurface>& surfaces)
 {
-  // VTK draws one level, a vtkActor of the prop's own at its matrix, switching as frame times
-  // change. The shadow comes from its pick level (the most detailed unless the user picks one),
-  // so that it does not change with VTK's choice, as a vtkLODActor casts from its full mapper.
+  // VTK draws one level, a vtkActor of the prop's own at its matrix. Its pick level is that one
+  // once VTK has drawn the prop (before, the most detailed): the shadow is that of what is drawn.
   vtkAbstractMapper3D* mapper = levels->GetLODMapper(levels->GetPickLODID());
   vtkNew<vtkPropCollection> actors;
   levels->GetActors(actors);

@@ -636,39 +636,47 @@ void TestLODActor()
 
 void TestLODProp3D()
 {
-  // A vtkLODProp3D with a fine and a coarse level, moved by its own matrix: it casts from its
-  // pick level (the finest, level 0), as the same data in a plain actor does.
+  // A vtkLODProp3D with a fine and a coarse level, moved by its own matrix: it casts from the
+  // level VTK draws (here the one it is told to select, each in turn), as that level's data in
+  // a plain actor does.
   auto fine = SphereSource(0.0, 0.0, 0.0, 0.6, 32, 16);
-  auto coarse = SphereSource(0.0, 0.0, 0.0, 0.6, 8, 4);
+  auto coarse = SphereSource(0.0, 0.0, 0.0, 0.6, 6, 4);
   auto box = BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7);
-  CompareScenes(
-    "vtkLODProp3D, two levels",
-    [&](vtkRenderer* r)
-    {
-      Ground(r);
-      vtkNew<vtkLODProp3D> levels;
-      for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ fine, coarse })
+  for (vtkAlgorithm* drawn : std::vector<vtkAlgorithm*>{ fine, coarse })
+  {
+    CompareScenes(
+      std::string("vtkLODProp3D drawing its ") + (drawn == fine ? "fine" : "coarse") + " level",
+      [&](vtkRenderer* r)
       {
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputConnection(source->GetOutputPort());
-        vtkNew<vtkProperty> property;
-        property->SetAmbient(0.2);
-        property->SetDiffuse(0.8);
-        const int id = levels->AddLOD(mapper, property, 0.0);
-        levels->SetLODLevel(id, source == fine ? 0.0 : 1.0);
-      }
-      levels->SetPosition(-0.9, 1.0, 0.0);
-      r->AddViewProp(levels);
-      r->AddActor(MakeActor(box, 1, 1, 1));
-    },
-    [&](vtkRenderer* r)
-    {
-      Ground(r);
-      auto sphere = MakeActor(fine, 1, 1, 1);
-      sphere->SetPosition(-0.9, 1.0, 0.0);
-      r->AddActor(sphere);
-      r->AddActor(MakeActor(box, 1, 1, 1));
-    });
+        Ground(r);
+        vtkNew<vtkLODProp3D> levels;
+        for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ fine, coarse })
+        {
+          vtkNew<vtkPolyDataMapper> mapper;
+          mapper->SetInputConnection(source->GetOutputPort());
+          vtkNew<vtkProperty> property;
+          property->SetAmbient(0.2);
+          property->SetDiffuse(0.8);
+          const int id = levels->AddLOD(mapper, property, 0.0);
+          if (source == drawn)
+          {
+            levels->AutomaticLODSelectionOff();
+            levels->SetSelectedLODID(id);
+          }
+        }
+        levels->SetPosition(-0.9, 1.0, 0.0);
+        r->AddViewProp(levels);
+        r->AddActor(MakeActor(box, 1, 1, 1));
+      },
+      [&](vtkRenderer* r)
+      {
+        Ground(r);
+        auto sphere = MakeActor(drawn, 1, 1, 1);
+        sphere->SetPosition(-0.9, 1.0, 0.0);
+        r->AddActor(sphere);
+        r->AddActor(MakeActor(box, 1, 1, 1));
+      });
+  }
 }
 
 void TestSkybox()
