@@ -238,6 +238,32 @@ vtkSmartPointer<vtkConeSource> Cone()
   return cone;
 }
 
+/// The second glyph source of the glyph scenes: a flat box.
+vtkSmartPointer<vtkCubeSource> GlyphBox()
+{
+  return BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+}
+
+/// Adds a vtkGlyph3D's output as a plain actor, uncoloured (vtkGlyph3D colours by scale; the
+/// glyph mapper does not).
+void AddGlyphFilter(vtkRenderer* renderer, vtkGlyph3D* glyphs)
+{
+  auto actor = MakeActor(glyphs, 1, 1, 1);
+  actor->GetMapper()->ScalarVisibilityOff();
+  renderer->AddActor(actor);
+}
+
+/// A glyph mapper over `points` with two sources (index 0 and 1).
+vtkSmartPointer<vtkGlyph3DMapper> TwoSourceGlyphs(
+  vtkPolyData* points, vtkAlgorithm* first, vtkAlgorithm* second)
+{
+  auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
+  mapper->SetInputData(points);
+  mapper->SetSourceConnection(0, first->GetOutputPort());
+  mapper->SetSourceConnection(1, second->GetOutputPort());
+  return mapper;
+}
+
 void TestGlyphsByDirection()
 {
   vtkSmartPointer<vtkPolyData> points = GlyphPoints();
@@ -314,9 +340,7 @@ void TestGlyphsOfCompositeInput()
       glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
       glyphs->SetScaleModeToDataScalingOff();
       glyphs->SetVectorModeToUseVector();
-      auto actor = MakeActor(glyphs, 1, 1, 1);
-      actor->GetMapper()->ScalarVisibilityOff();
-      r->AddActor(actor);
+      AddGlyphFilter(r, glyphs);
     });
 }
 
@@ -327,17 +351,14 @@ void TestGlyphsByDirectionClampingAndIndex()
   // over the points that pick it.
   vtkSmartPointer<vtkPolyData> points = GlyphPoints();
   auto cone = Cone();
-  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  auto box = GlyphBox();
   const double range[2] = { 0.4, 1.1 }, factor = 0.9;
   CompareScenes(
     "glyph mapper, direction, clamping, index",
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3DMapper> mapper;
-      mapper->SetInputData(points);
-      mapper->SetSourceConnection(0, cone->GetOutputPort());
-      mapper->SetSourceConnection(1, box->GetOutputPort());
+      auto mapper = TwoSourceGlyphs(points, cone, box);
       mapper->SetOrientationArray("direction");
       mapper->SetScaleArray("size");
       mapper->SetScaleModeToScaleByMagnitude();
@@ -376,9 +397,7 @@ void TestGlyphsByDirectionClampingAndIndex()
         glyphs->ClampingOn();
         glyphs->SetRange(range[0], range[1]);
         glyphs->SetScaleFactor(factor);
-        auto actor = MakeActor(glyphs, 1, 1, 1);
-        actor->GetMapper()->ScalarVisibilityOff();
-        r->AddActor(actor);
+        AddGlyphFilter(r, glyphs);
       }
     });
 }
@@ -389,16 +408,13 @@ void TestGlyphsByRotation()
   // glyph with the rotation VTK documents (z, then x, then y).
   vtkSmartPointer<vtkPolyData> points = GlyphPoints();
   auto cone = Cone();
-  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  auto box = GlyphBox();
   CompareScenes(
     "glyph mapper, rotation, index, mask",
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3DMapper> mapper;
-      mapper->SetInputData(points);
-      mapper->SetSourceConnection(0, cone->GetOutputPort());
-      mapper->SetSourceConnection(1, box->GetOutputPort());
+      auto mapper = TwoSourceGlyphs(points, cone, box);
       mapper->SetOrientationModeToRotation();
       mapper->SetOrientationArray("angles");
       mapper->SetScaling(false);
@@ -453,7 +469,7 @@ void TestGlyphsByQuaternionTableAndClamping()
   }
   points->GetPointData()->AddArray(quaternions);
   auto cone = Cone();
-  auto box = BoxSource(0.0, 0.0, 0.0, 0.6, 0.25, 0.4);
+  auto box = GlyphBox();
   cone->Update();
   box->Update();
   vtkNew<vtkMultiBlockDataSet> table;
