@@ -604,7 +604,7 @@ void SceneWalk::Molecule(vtkActor* actor, vtkOpenGLMoleculeMapper* mapper, const
 
 void SceneWalk::Warn(vtkObject* owner, vtkProp* prop, const std::string& reason)
 {
-  if (this->Warned.insert({ prop, reason }).second)
+  if (this->Warned.First(prop, reason))
   {
     vtkWarningWithObjectMacro(
       owner, << prop->GetClassName() << " (" << prop << ") " << reason << ".");

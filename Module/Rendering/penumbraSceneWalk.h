@@ -18,14 +18,14 @@
 #ifndef penumbraSceneWalk_h
 #define penumbraSceneWalk_h
 
+#include "penumbraPropWarnings.h"
+
 #include "vtkSmartPointer.h"
 
 #include <glm/glm.hpp>
 
 #include <cstddef>
-#include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 class vtkActor;
@@ -100,7 +100,7 @@ private:
   /// Warns once per prop and reason.
   void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
 
-  std::set<std::pair<vtkProp*, std::string>> Warned;
+  PropWarnings Warned;
   /// The caster of every imposter sphere (penumbra::ImposterSphereMesh), built on first use:
   /// one topology, instanced by the spheres' matrices.
   vtkSmartPointer<vtkPolyData> UnitSphere;

@@ -6,6 +6,7 @@
 #include "penumbraShadowVolumeRenderer.h"
 #include "penumbraTechniqueChooser.h"
 
+#include "penumbraPropWarnings.h"
 #include "penumbraReceiverShader.h"
 #include "penumbraSceneWalk.h"
 #include "penumbraStageTimes.h"
@@ -42,7 +43,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
-#include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
 #include "penumbraCulling.h"
@@ -129,15 +129,6 @@ private:
 } // namespace
 
 //------------------------------------------------------------------------------
-namespace
-{
-struct ShaderEditWarning
-{
-  vtkWeakPointer<vtkProp> Prop;
-  std::string Problem; ///< the mapper's class and what was not found
-};
-} // namespace
-
 class vtkSoftShadowPass::vtkInternals
 {
 public:
@@ -153,8 +144,8 @@ public:
   /// The pass, for the warnings and errors the internals report.
   vtkObject* Owner = nullptr;
   penumbra::ShaderPrograms Programs;
-  /// The shader edits warned about, once per live prop and problem.
-  std::vector<ShaderEditWarning> WarnedShaderEdits;
+  /// The shader edits warned about: once per live prop, mapper class and problem.
+  penumbra::PropWarnings WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
@@ -1032,24 +1023,14 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
 void vtkSoftShadowPass::WarnShaderEdit(
   vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem)
 {
+  const std::string key = std::string(mapper ? mapper->GetClassName() : "") + ": " + problem;
+  if (!this->Internals->WarnedShaderEdits.First(prop, key))
+  {
+    return;
+  }
   std::ostringstream what;
   what << (prop ? prop->GetClassName() : "a prop") << " (" << prop << ", drawn by "
        << (mapper ? mapper->GetClassName() : "a mapper") << ")";
-  // Once per live prop and problem: a deleted prop's records go, so a new prop at its address
-  // is warned about again.
-  auto& warned = this->Internals->WarnedShaderEdits;
-  warned.erase(std::remove_if(
-                 warned.begin(), warned.end(), [](const ShaderEditWarning& w) { return !w.Prop; }),
-    warned.end());
-  const std::string key = std::string(mapper ? mapper->GetClassName() : "") + ": " + problem;
-  for (const ShaderEditWarning& w : warned)
-  {
-    if (w.Prop == prop && w.Problem == key)
-    {
-      return;
-    }
-  }
-  warned.push_back({ prop, key });
   vtkWarningMacro(
     "The fragment shader of " << what.str() << " " << problem << ": it is drawn unshadowed.");
 }
