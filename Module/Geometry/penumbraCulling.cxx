@@ -80,7 +80,6 @@ VolumeDrawPlan PlanVolumeDraw(const glm::dvec3& boxMin, const glm::dvec3& boxMax
 {
   VolumeDrawPlan plan;
   plan.ZFail = VolumeMayReachNearPlane(boxMin, boxMax, light, nearCorners);
-  plan.DarkCap = plan.ZFail;
   plan.LightCap = plan.ZFail || seenThrough;
   return plan;
 }

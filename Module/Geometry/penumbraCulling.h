@@ -32,10 +32,12 @@ VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin
 /// How one caster's shadow volume is drawn for one light sample (McGuire et al.'s choice).
 struct VolumeDrawPlan
 {
-  bool ZFail = false;    ///< count faces behind the point: the volume may reach the near plane
-  bool DarkCap = false;  ///< draw the cap at infinity (z-fail only)
-  bool LightCap = false; ///< draw the cap on the lit faces: z-fail, or a caster points are seen
-                         ///< through (they lie behind that cap, so z-pass must count it)
+  /// Count faces behind the point, caps at infinity included: the volume may reach the near
+  /// plane. Otherwise z-pass counts the sides only.
+  bool ZFail = false;
+  /// Draw the cap on the lit faces: z-fail, or a caster points are seen through (they lie
+  /// behind that cap, so z-pass must count it).
+  bool LightCap = false;
 };
 
 /// The plan for a caster's volume from `light`: z-pass wherever VolumeMayReachNearPlane allows.

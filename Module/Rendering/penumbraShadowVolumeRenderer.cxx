@@ -191,7 +191,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   vtkShaderProgram* program = this->Program;
   const VolumeDrawPlan plan =
     PlanVolumeDraw(caster.WorldMin, caster.WorldMax, sample, frame.NearCorners, caster.SeenThrough);
-  if (plan.LightCap || plan.DarkCap)
+  if (plan.LightCap) // z-fail draws it too, beside the cap at infinity
   {
     volume.EnsureCaps(*caster.Mesh);
   }

@@ -285,10 +285,7 @@ int main()
       const penumbra::VolumeDrawPlan plan =
         penumbra::PlanVolumeDraw(c.Lo, c.Hi, c.Light, c.NearCorners, seenThrough);
       const bool zFail = penumbra::VolumeMayReachNearPlane(c.Lo, c.Hi, c.Light, c.NearCorners);
-      badPlans +=
-        (plan.ZFail != zFail || plan.DarkCap != zFail || plan.LightCap != (zFail || seenThrough))
-        ? 1
-        : 0;
+      badPlans += (plan.ZFail != zFail || plan.LightCap != (zFail || seenThrough)) ? 1 : 0;
     }
 
     // Wedges by their front faces: no point of the near plane inside the penumbra or umbra.
