@@ -4,9 +4,12 @@
 
 #include "vtkAbstractMapper3D.h"
 #include "vtkActor.h"
+#include "vtkAnnotatedCubeActor.h"
 #include "vtkAppendPolyData.h"
+#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkAxesActor.h"
 #include "vtkBitArray.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -1063,10 +1066,26 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
   }
 }
 
-/// Appends every leaf of a top-level prop: itself, or each part of an assembly.
-void CollectProp(vtkProp* prop, std::vector<Mesh>& meshes)
+/// Appends every leaf of a prop: itself, or each part of an assembly. `casts`: the top-level
+/// prop's flag.
+void CollectProp(vtkProp* prop, bool casts, std::vector<Mesh>& meshes)
 {
-  const bool casts = vtkSoftShadowPass::GetCastsShadows(prop);
+  if (auto axes = vtkAxesActor::SafeDownCast(prop))
+  {
+    // Its shafts and tips are actors of its own, at the matrices VTK last drew them with.
+    vtkNew<vtkPropCollection> parts;
+    axes->GetActors(parts);
+    for (int i = 0; i < parts->GetNumberOfItems(); ++i)
+    {
+      CollectProp(static_cast<vtkProp*>(parts->GetItemAsObject(i)), casts, meshes);
+    }
+    return;
+  }
+  if (auto cube = vtkAnnotatedCubeActor::SafeDownCast(prop))
+  {
+    CollectProp(cube->GetAssembly(), casts, meshes); // what VTK draws for it
+    return;
+  }
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
@@ -1112,7 +1131,7 @@ void vtkRayTracedVisibility::vtkInternals::CollectMeshes(vtkRenderer* renderer)
   {
     if (prop->GetVisibility())
     {
-      CollectProp(prop, this->Meshes);
+      CollectProp(prop, vtkSoftShadowPass::GetCastsShadows(prop), this->Meshes);
     }
   }
 }

@@ -6,8 +6,11 @@
 
 #include "vtkAbstractMapper3D.h"
 #include "vtkActor.h"
+#include "vtkAnnotatedCubeActor.h"
+#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkAxesActor.h"
 #include "vtkBitArray.h"
 #include "vtkCellArray.h"
 #include "vtkCompositeDataDisplayAttributes.h"
@@ -172,6 +175,26 @@ bool AddInstances(vtkActor* actor, const DrawnOpacity& drawn, vtkPolyData* shape
 }
 } // namespace
 
+std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
+{
+  if (auto axes = vtkAxesActor::SafeDownCast(prop))
+  {
+    vtkNew<vtkPropCollection> parts;
+    axes->GetActors(parts);
+    std::vector<vtkProp*> drawn;
+    for (int i = 0; i < parts->GetNumberOfItems(); ++i)
+    {
+      drawn.push_back(static_cast<vtkProp*>(parts->GetItemAsObject(i)));
+    }
+    return drawn; // its labels are 2D captions: nothing to cast or receive
+  }
+  if (auto cube = vtkAnnotatedCubeActor::SafeDownCast(prop))
+  {
+    return { cube->GetAssembly() }; // VTK draws the assembly at its own matrix, not the cube's
+  }
+  return { prop };
+}
+
 std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)
 {
   std::vector<DrawnSurface> surfaces;
@@ -184,13 +207,16 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
     {
       continue;
     }
-    prop->InitPathTraversal();
-    while (vtkAssemblyPath* path = prop->GetNextPath())
+    for (vtkProp* drawn : PropsDrawnFor(prop))
     {
-      vtkAssemblyNode* node = path->GetLastNode();
-      if (node && node->GetViewProp())
+      drawn->InitPathTraversal();
+      while (vtkAssemblyPath* path = drawn->GetNextPath())
       {
-        this->Leaf(node->GetViewProp(), node->GetMatrix(), owner, surfaces);
+        vtkAssemblyNode* node = path->GetLastNode();
+        if (node && node->GetViewProp())
+        {
+          this->Leaf(node->GetViewProp(), node->GetMatrix(), owner, surfaces);
+        }
       }
     }
   }

@@ -7,10 +7,10 @@
  * composed matrices, the leaves of composite data with their block visibility and opacity, the
  * instances of a vtkGlyph3DMapper, the spheres of a vtkOpenGLSphereMapper and the sticks of a
  * vtkOpenGLStickMapper (particles; a vtkMoleculeMapper's atoms and bonds), cast as tessellated
- * spheres and cylinders. The walk follows what VTK draws, not what a mapper's input
- * holds: a glyph mapper's input points (a seed plane, an image's bounding box) are never drawn and
- * never cast. What VTK draws but no shadow volume can be built from (point-gaussian splats,
- * volumes, image slices) gets one warning per prop and reason.
+ * spheres and cylinders, and the parts of vtkAxesActor and vtkAnnotatedCubeActor. The walk follows
+ * what VTK draws, not what a mapper's input holds: a glyph mapper's input points (a seed plane, an
+ * image's bounding box) are never drawn and never cast. What VTK draws but no shadow volume can be
+ * built from (point-gaussian splats, volumes, image slices) gets one warning per prop and reason.
  *
  * The ray tracer (vtkRayTracedVisibility) walks the scene its own way, through VTK's filters,
  * so that a mistake here shows against it.
@@ -63,6 +63,13 @@ struct DrawnSurface
   bool SeenThrough = false;
 };
 
+/// The props VTK draws when it draws `prop`: `prop` itself, or, for props that draw through
+/// actors of their own, those: a vtkAxesActor's shafts and tips (each at its own matrix, which
+/// carries the axes' user transform) and a vtkAnnotatedCubeActor's assembly. Both place their
+/// parts only when VTK draws them, so the parts are where VTK last drew them: the pass walks the
+/// casters after its depth pass, in which VTK places them for the frame.
+std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
+
 /// Finds the surfaces a renderer draws, and warns once about what cannot cast.
 class SceneWalk
 {
@@ -70,7 +77,8 @@ public:
   /// The surfaces (opaque, or translucent with their opacity) of every visible prop of `renderer`
   /// (its view props, not the frustum culler's list: a prop outside the view may shadow inside it)
   /// that casts shadows (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives
-  /// an assembly's parts the assembly's property keys). Warnings go through `owner`.
+  /// an assembly's parts the assembly's property keys), through PropsDrawnFor. Warnings go
+  /// through `owner`.
   std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
 
 private:

@@ -599,11 +599,15 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
     // translucent fragments unshadowed: they lie over the LI buffer of what is behind them.
     // Not volumes: vtkVolume keeps vtkProp's HasOpaqueGeometry (true), but VTK's volume
     // shaders have no light loop to scale, and volumes are drawn as VTK draws them.
+    // A vtkAxesActor does not hand its keys to its parts: the keys go on what it draws.
     vtkProp* prop = s->GetPropArray()[i];
     if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop))
     {
-      AddRenderPassKey(prop, this);
-      internals.Receivers.push_back(prop);
+      for (vtkProp* drawn : penumbra::PropsDrawnFor(prop))
+      {
+        AddRenderPassKey(drawn, this);
+        internals.Receivers.push_back(drawn);
+      }
     }
   }
 }
