@@ -10,7 +10,9 @@
 //   least half as many pixels as VTK's with and without it differ (and on at least 0.5%).
 // In the shadow the pass is darker than VTK (85% of its brightness at most, no pixel brighter by
 // more than 12 of 765), and its visibility agrees with the ray-traced truth (CheckAgainstTruth's
-// 0.2%) wherever the window keeps the scene's depth.
+// 0.2%): through the window's depth where it keeps the scene's, else through the same scene's
+// without the setting; under supersampling, its larger image sampled at the viewport's pixel
+// centres.
 #include "penumbraTestHarness.h"
 
 #include "vtkCamera.h"
@@ -124,6 +126,25 @@ void WrapPass(View& view, bool withPass, OuterPass* outer)
   view.Renderer->SetPass(outer);
 }
 
+/// `image` (of any size covering the viewport) sampled at the centres of a `w` x `h` viewport's
+/// pixels, nearest pixel.
+std::vector<float> AtPixelCentres(vtkImageData* image, int w, int h)
+{
+  const int* dims = image->GetDimensions();
+  const std::vector<float> values = ImageValues(image);
+  std::vector<float> sampled(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+  {
+    const int v = std::min(int((y + 0.5) * dims[1] / h), dims[1] - 1);
+    for (int x = 0; x < w; ++x)
+    {
+      const int u = std::min(int((x + 0.5) * dims[0] / w), dims[0] - 1);
+      sampled[std::size_t(y) * w + x] = values[std::size_t(v) * dims[0] + u];
+    }
+  }
+  return sampled;
+}
+
 void TestSetting(const Setting& setting, const double viewport[4])
 {
   View plainOff(viewport, false), plainOn(viewport, false), shadowed(viewport, true);
@@ -142,10 +163,12 @@ void TestSetting(const Setting& setting, const double viewport[4])
     twin.reset(new View(viewport, true));
     twin->Render();
   }
+  vtkImageData* supersampled = nullptr;
   if (setting.Supersampled)
   {
     Check(drawn && drawn->GetDimensions()[0] > w && drawn->GetDimensions()[1] > h,
       setting.Name + ": the pass drew at the supersampled framebuffer's size");
+    supersampled = drawn;
     drawn = twin->Pass->GetVisibilityImage(0);
   }
   auto values = drawn ? vtkFloatArray::SafeDownCast(drawn->GetPointData()->GetScalars()) : nullptr;
@@ -221,11 +244,19 @@ void TestSetting(const Setting& setting, const double viewport[4])
     CheckAgainstTruth(
       setting.Name, CompareWithTruth(shadowed.Window, shadowed.Renderer, shadowed.Pass, 0));
   }
-  else if (!setting.Supersampled)
+  else if (!supersampled)
   {
     const std::vector<float> depth = WindowDepth(twin->Window, twin->Renderer);
     CheckAgainstTruth(
       setting.Name, CompareWithTruth(shadowed.Window, shadowed.Renderer, shadowed.Pass, 0, &depth));
+  }
+  else
+  {
+    // The truth traces one ray through each viewport pixel's centre: the supersampled image's
+    // pixel nearest to it sees the same point, give or take a fraction of a viewport pixel.
+    CheckAgainstTruth(setting.Name,
+      CompareValuesWithTruth(shadowed.Renderer, AtPixelCentres(supersampled, w, h), 0,
+        WindowDepth(twin->Window, twin->Renderer)));
   }
 }
 } // namespace

@@ -281,26 +281,26 @@ struct Comparison
  * `zbuffer`, when given, is the rasterized depth (when the window's is not the scene's: a pass
  * around this one kept it in a framebuffer of its own).
  */
-inline Comparison CompareWithTruth(vtkRenderWindow* window, vtkRenderer* renderer,
-  vtkSoftShadowPass* pass, int lightIndex, const std::vector<float>* zbuffer = nullptr)
+/// Compares `actual`, a visibility image of the viewport's size, with the truth's for light
+/// `lightIndex`, where `zbuffer` (the viewport's depth) shows the truth's surfaces.
+inline Comparison CompareValuesWithTruth(vtkRenderer* renderer, const std::vector<float>& actual,
+  int lightIndex, const std::vector<float>& zbuffer)
 {
   Comparison result;
-  vtkImageData* image = pass->GetVisibilityImage(lightIndex);
   vtkNew<vtkRayTracedVisibility> truth;
   truth->SetRenderer(renderer);
   truth->SetSamplesPerLight(1);
-  if (!image || !truth->Update() || !truth->GetVisibilityImage(lightIndex))
+  int size[2], origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  if (!truth->Update() || !truth->GetVisibilityImage(lightIndex) ||
+    actual.size() != std::size_t(size[0]) * size[1])
   {
     Check(false, "visibility images available for light " + std::to_string(lightIndex));
     return result;
   }
-  int size[2], origin[2];
-  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(lightIndex));
-  const std::vector<float> actual = ImageValues(image);
-  const std::vector<char> comparable =
-    penumbra::metrics::ComparablePixels(ImageValues(truth->GetDepthImage()),
-      zbuffer ? *zbuffer : WindowDepth(window, renderer), size[0], size[1]);
+  const std::vector<char> comparable = penumbra::metrics::ComparablePixels(
+    ImageValues(truth->GetDepthImage()), zbuffer, size[0], size[1]);
   for (std::size_t p = 0; p < comparable.size(); ++p)
   {
     if (!comparable[p])
@@ -317,6 +317,21 @@ inline Comparison CompareWithTruth(vtkRenderWindow* window, vtkRenderer* rendere
     }
   }
   return result;
+}
+
+/// The pass's visibility image for light `lightIndex` against the truth, where the window's
+/// depth (or `zbuffer`, where the window does not keep the scene's) shows the truth's surfaces.
+inline Comparison CompareWithTruth(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkSoftShadowPass* pass, int lightIndex, const std::vector<float>* zbuffer = nullptr)
+{
+  vtkImageData* image = pass->GetVisibilityImage(lightIndex);
+  if (!image)
+  {
+    Check(false, "visibility images available for light " + std::to_string(lightIndex));
+    return Comparison();
+  }
+  return CompareValuesWithTruth(
+    renderer, ImageValues(image), lightIndex, zbuffer ? *zbuffer : WindowDepth(window, renderer));
 }
 
 /// Checks a comparison against the stated tolerance: at most 0.2% of the compared pixels wrong
