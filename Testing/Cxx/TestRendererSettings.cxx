@@ -1,5 +1,6 @@
-// The renderer's own settings survive the pass: depth peeling, FXAA, SSAO, tone mapping around
-// the pass, and a viewport that is not at the window's origin.
+// The renderer's own settings survive the pass: depth peeling (dual, and single-layer in the
+// LegacyDepthPeeling entry), FXAA, SSAO, tone mapping and supersampling around the pass, and a
+// viewport that is not at the window's origin.
 //
 // For each setting the same scene (ground, sphere, box, two overlapping translucent spheres) is
 // rendered by VTK alone with the setting off and on, and with the pass and the setting on, at
@@ -24,6 +25,7 @@
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cstdlib>
 #include <functional>
 #include <memory>
 
@@ -303,13 +305,19 @@ int main()
   }
   {
     // VTK 9.1 peels with vtkDualDepthPeelingPass where the driver allows it (llvmpipe does)
-    // and vtkDepthPeelingPass elsewhere; there is no switch, so say which one ran above.
+    // and with the single-layer vtkDepthPeelingPass elsewhere or where the environment sets
+    // VTK_USE_LEGACY_DEPTH_PEELING (the RendererSettings.LegacyDepthPeeling entry): say which
+    // one ran above, and check that it is the one asked for.
     View probe(full, true);
     probe.Render();
     auto renderer = vtkOpenGLRenderer::SafeDownCast(probe.Renderer);
-    std::printf("depth peeling above: VTK's %s\n",
-      renderer && renderer->IsDualDepthPeelingSupported() ? "vtkDualDepthPeelingPass"
-                                                          : "vtkDepthPeelingPass");
+    const bool dual = renderer && renderer->IsDualDepthPeelingSupported();
+    std::printf(
+      "depth peeling above: VTK's %s\n", dual ? "vtkDualDepthPeelingPass" : "vtkDepthPeelingPass");
+    if (std::getenv("VTK_USE_LEGACY_DEPTH_PEELING"))
+    {
+      Check(!dual, "VTK_USE_LEGACY_DEPTH_PEELING: the single-layer depth peeler ran");
+    }
   }
   // A viewport away from the window's origin: the LI buffer is read at the viewport's pixels,
   // not the window's, also inside depth peeling's own framebuffers. (Not SSAO: VTK 9.1's own
