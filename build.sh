@@ -39,10 +39,22 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
 }
 
+# A tree configured before keeps its configuration (a developer's Debug tree stays Debug).
 configure_and_build() {
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release \
-    -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+  if [ -f "$BUILD_DIR/CMakeCache.txt" ]; then
+    cmake -S "$ROOT" -B "$BUILD_DIR" >/dev/null
+  else
+    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release \
+      -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+  fi
   cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+# Whether installing into $1 needs root: its nearest existing folder is not writable.
+needs_root() {
+  local dir=$1
+  while [ ! -d "$dir" ]; do dir=$(dirname "$dir"); done
+  [ ! -w "$dir" ]
 }
 
 # libFuzzer on Penumbra::Geometry for $1 seconds, in its own Clang build tree; the seed corpus
@@ -90,10 +102,12 @@ case "$cmd" in
   install)
     # Libraries, headers, the CMake package and the Python package under PREFIX (/usr/local),
     # where Debian's python3 and find_package(Penumbra) find them.
+    # The InstalledPackage test runs this into a prefix of its own.
     install_missing; configure_and_build
+    prefix=${PREFIX:-/usr/local}
     sudo=""
-    [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    $sudo cmake --install "$BUILD_DIR" --prefix "${PREFIX:-/usr/local}" ;;
+    needs_root "$prefix" && [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    $sudo cmake --install "$BUILD_DIR" --prefix "$prefix" ;;
   fuzz)
     run_fuzzer "${2:-600}" ;;
   load)
