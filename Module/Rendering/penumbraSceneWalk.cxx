@@ -207,6 +207,7 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
     {
       continue;
     }
+    const std::size_t first = surfaces.size();
     for (vtkProp* drawn : PropsDrawnFor(prop))
     {
       drawn->InitPathTraversal();
@@ -218,6 +219,10 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
           this->Leaf(node->GetViewProp(), node->GetMatrix(), owner, surfaces);
         }
       }
+    }
+    for (std::size_t i = first; i < surfaces.size(); ++i)
+    {
+      surfaces[i].ViewProp = prop;
     }
   }
   return surfaces;

@@ -61,6 +61,8 @@ struct DrawnSurface
   /// VTK draws it in the translucent pass, so it is not in the depth pass and points behind it
   /// are seen through it (opacity 1 too, for colours with alpha or a texture).
   bool SeenThrough = false;
+  /// The renderer's prop it belongs to: Actor, or the assembly or vtkAxesActor Actor is part of.
+  vtkProp* ViewProp = nullptr;
 };
 
 /// The props VTK draws when it draws `prop`: `prop` itself, or, for props that draw through

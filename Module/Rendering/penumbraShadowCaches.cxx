@@ -41,7 +41,7 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataObject* data)
 
 } // namespace
 
-bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkObject* owner)
+bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner)
 {
   this->Used = true;
   if (this->Data == data && this->BuiltAt >= data->GetMTime() && this->Generation > 0)
@@ -73,8 +73,12 @@ bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkObject* owner)
   // (points and lines only, or every triangle dropped) in the same sentence.
   const std::string problems = this->Topology.Report.Describe();
   std::ostringstream caster;
-  caster << "Shadow caster " << (prop ? prop->GetClassName() : "prop") << " (" << prop << "), its "
-         << data->GetClassName() << " (" << data << ")";
+  caster << "Shadow caster " << (prop ? prop->GetClassName() : "prop") << " (" << prop << "), ";
+  if (viewProp && viewProp != prop)
+  {
+    caster << "part of " << viewProp->GetClassName() << " (" << viewProp << "), ";
+  }
+  caster << "its " << data->GetClassName() << " (" << data << ")";
   if (this->Topology.Empty() && !this->WarnedEmpty)
   {
     vtkWarningWithObjectMacro(owner, << caster.str()
@@ -415,14 +419,15 @@ void CountingWedgeCache::BuildVertices(const MeshCache& mesh)
   this->Uploaded = false;
 }
 
-MeshCache* ShadowCaches::FindMesh(vtkDataObject* data, vtkProp* prop, vtkObject* owner)
+MeshCache* ShadowCaches::FindMesh(
+  vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner)
 {
   std::unique_ptr<MeshCache>& mesh = this->Meshes[data];
   if (!mesh || mesh->Data != data)
   {
     mesh.reset(new MeshCache);
   }
-  mesh->Update(data, prop, owner);
+  mesh->Update(data, prop, viewProp, owner);
   return mesh.get();
 }
 

@@ -60,8 +60,9 @@ struct MeshCache
 
   /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`,
   /// once per data object and kind (problems, no triangles), naming `prop`, the first prop
-  /// found drawing it.
-  bool Update(vtkDataObject* data, vtkProp* prop, vtkObject* owner);
+  /// found drawing it, and `viewProp`, the renderer's prop it is part of where that is another
+  /// (an assembly, a vtkAxesActor).
+  bool Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner);
   /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
   /// binds the VAO for `program`.
   void Bind(vtkShaderProgram* program);
@@ -235,7 +236,7 @@ struct ShadowCaches
   std::map<std::pair<vtkActor*, std::size_t>, std::unique_ptr<CasterCache>> Casters;
 
   /// Finds or creates the mesh of `data` and brings it up to date.
-  MeshCache* FindMesh(vtkDataObject* data, vtkProp* prop, vtkObject* owner);
+  MeshCache* FindMesh(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner);
   CasterCache* FindCaster(vtkActor* actor, std::size_t part);
   /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
   void BeginFrame();

@@ -724,7 +724,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   internals.UpdateReceiverBox();
   for (const penumbra::DrawnSurface& surface : internals.SceneWalk.Casters(s->GetRenderer(), this))
   {
-    penumbra::MeshCache* mesh = internals.Caches.FindMesh(surface.Data, surface.Actor, this);
+    penumbra::MeshCache* mesh =
+      internals.Caches.FindMesh(surface.Data, surface.Actor, surface.ViewProp, this);
     if (mesh->Topology.Empty())
     {
       continue;
