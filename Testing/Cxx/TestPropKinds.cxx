@@ -667,6 +667,35 @@ void LetVTKPlace(vtkRenderer* renderer, vtkProp* prop)
   renderer->RemoveViewProp(prop);
 }
 
+/// Compares the prop `makeProp` makes, on the ground under a ball that shadows it, with the same
+/// scene built from its parts: `copyParts(renderer, prop)` adds them as plain actors once VTK
+/// has drawn the prop and so placed them.
+template <typename MakeProp, typename CopyParts>
+void CompareWithPlacedParts(
+  const std::string& name, vtkAlgorithm* ball, const MakeProp& makeProp, const CopyParts& copyParts)
+{
+  auto groundAndBall = [&](vtkRenderer* r)
+  {
+    Ground(r);
+    r->AddActor(MakeActor(ball, 0.9, 0.3, 0.3));
+  };
+  CompareScenes(
+    name,
+    [&](vtkRenderer* r)
+    {
+      groundAndBall(r);
+      r->AddViewProp(makeProp());
+    },
+    [&](vtkRenderer* r)
+    {
+      groundAndBall(r);
+      auto prop = makeProp();
+      LetVTKPlace(r, prop);
+      copyParts(r, prop.Get());
+    },
+    0.002, SameMappers);
+}
+
 void TestAxesActor()
 {
   // A vtkAxesActor with cylinder shafts, moved by a user transform: VTK draws its shafts and tips
@@ -688,20 +717,9 @@ void TestAxesActor()
     axes->AxisLabelsOff(); // 2D captions: they neither cast nor receive, and would only differ
     return axes;
   };
-  CompareScenes(
-    "vtkAxesActor (cylinder shafts, user transform)",
-    [&](vtkRenderer* r)
+  CompareWithPlacedParts("vtkAxesActor (cylinder shafts, user transform)", ball, makeAxes,
+    [](vtkRenderer* r, vtkAxesActor* axes)
     {
-      Ground(r);
-      r->AddActor(MakeActor(ball, 0.9, 0.3, 0.3));
-      r->AddViewProp(makeAxes());
-    },
-    [&](vtkRenderer* r)
-    {
-      Ground(r);
-      r->AddActor(MakeActor(ball, 0.9, 0.3, 0.3));
-      auto axes = makeAxes();
-      LetVTKPlace(r, axes);
       vtkNew<vtkPropCollection> parts;
       axes->GetActors(parts);
       for (int i = 0; i < parts->GetNumberOfItems(); ++i)
@@ -709,8 +727,7 @@ void TestAxesActor()
         auto part = vtkActor::SafeDownCast(parts->GetItemAsObject(i));
         AddPlainCopy(r, part, part->GetMatrix());
       }
-    },
-    0.002, SameMappers);
+    });
 }
 
 void TestAnnotatedCube()
@@ -729,20 +746,9 @@ void TestAnnotatedCube()
     cube->GetAssembly()->SetScale(1.1);
     return cube;
   };
-  CompareScenes(
-    "vtkAnnotatedCubeActor",
-    [&](vtkRenderer* r)
+  CompareWithPlacedParts("vtkAnnotatedCubeActor", ball, makeCube,
+    [](vtkRenderer* r, vtkAnnotatedCubeActor* cube)
     {
-      Ground(r);
-      r->AddActor(MakeActor(ball, 0.9, 0.3, 0.3));
-      r->AddViewProp(makeCube());
-    },
-    [&](vtkRenderer* r)
-    {
-      Ground(r);
-      r->AddActor(MakeActor(ball, 0.9, 0.3, 0.3));
-      auto cube = makeCube();
-      LetVTKPlace(r, cube);
       vtkAssembly* assembly = cube->GetAssembly();
       vtkProp3DCollection* parts = assembly->GetParts();
       for (int i = 0; i < parts->GetNumberOfItems(); ++i)
@@ -752,8 +758,7 @@ void TestAnnotatedCube()
         vtkMatrix4x4::Multiply4x4(assembly->GetMatrix(), part->GetMatrix(), composed);
         AddPlainCopy(r, part, composed);
       }
-    },
-    0.002, SameMappers);
+    });
 }
 
 //------------------------------------------------------------------------------
