@@ -165,6 +165,48 @@ glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax
   return tightFar > tightNear ? glm::dvec2(tightNear, tightFar) : current;
 }
 
+glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin, const glm::dvec3& casterMax,
+  const glm::dvec4& light, const Box& scene, const std::array<glm::dvec3, 4>& nearCorners)
+{
+  if (!scene.Valid)
+  {
+    return glm::dvec4(0.0);
+  }
+  // The plane faces along the sweep from the light through the caster's centre. Seen from a point
+  // light the caster's bounding sphere spans at most 53 degrees from that axis here (cos >= 0.6),
+  // so no swept point lies more than 1/0.6 times its distance to the plane away.
+  const glm::dvec3 centre = 0.5 * (casterMin + casterMax);
+  glm::dvec3 normal = -glm::normalize(glm::dvec3(light));
+  if (light.w != 0.0)
+  {
+    const glm::dvec3 away = centre - glm::dvec3(light);
+    const double distance = glm::length(away);
+    const double radius = 0.5 * glm::length(casterMax - casterMin);
+    if (!(distance > 1.25 * radius) || !std::isfinite(distance))
+    {
+      return glm::dvec4(0.0);
+    }
+    normal = away / distance;
+  }
+  double offset = -std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    offset = std::max(offset, glm::dot(normal, BoxCorner(scene.Min, scene.Max, corner)));
+    offset = std::max(offset, glm::dot(normal, BoxCorner(casterMin, casterMax, corner)));
+  }
+  for (const glm::dvec3& corner : nearCorners)
+  {
+    offset = std::max(offset, glm::dot(normal, corner));
+  }
+  // A margin, so that float rounding in the vertex shader cannot pull a cut end into the scene.
+  offset += 1e-3 * (scene.Diagonal() + glm::length(casterMax - casterMin));
+  if (!std::isfinite(offset) || !std::isfinite(normal.x + normal.y + normal.z))
+  {
+    return glm::dvec4(0.0);
+  }
+  return glm::dvec4(normal, -offset);
+}
+
 PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax,
   const glm::dvec4& light, const Box& scene, const glm::dmat4& worldToClip, int width, int height)
 {

@@ -99,16 +99,14 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
 
   // Side of edge a->b (walked counter-clockwise as seen from the light): outward-facing quad
   // (b, a, a_inf, b_inf). Towards a directional light every point sweeps to the same point at
-  // infinity, so the quad is the triangle (b, a, inf) and there is no dark cap.
+  // infinity, so there is no dark cap and the quad's second triangle has no area there; it is
+  // kept for z-pass volumes that stop on a plane short of infinity (VolumeEndPlane).
   for (const SilhouetteEdge& e : volume.Silhouette)
   {
     for (std::uint32_t k = 0; k < e.Multiplicity; ++k)
     {
       AppendTriangle(volume.Sides, e.To, e.From, e.From + n);
-      if (!directional)
-      {
-        AppendTriangle(volume.Sides, e.To, e.From + n, e.To + n);
-      }
+      AppendTriangle(volume.Sides, e.To, e.From + n, e.To + n);
     }
   }
 

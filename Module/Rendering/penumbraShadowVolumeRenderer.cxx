@@ -210,7 +210,10 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   if (!plan.ZFail)
   {
     // z-pass: count volume faces in front of the visible surface; caps are not needed but for
-    // a translucent caster's light cap.
+    // a translucent caster's light cap, and the volume may stop beyond the scene.
+    const glm::vec4 endPlane(glm::transpose(caster.ObjectToWorld) *
+      VolumeEndPlane(caster.WorldMin, caster.WorldMax, sample, frame.SceneBox, frame.NearCorners));
+    program->SetUniform4f("endPlaneMC", glm::value_ptr(endPlane));
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
@@ -231,6 +234,8 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
     ostate->vtkglDepthFunc(countInColour ? GL_GEQUAL : GL_LESS);
     program->SetUniformf("frontFaceValue", weight); // leaving it behind the point does
+    const glm::vec4 toInfinity(0.0f);
+    program->SetUniform4f("endPlaneMC", glm::value_ptr(toInfinity));
     vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);

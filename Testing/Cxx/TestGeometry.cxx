@@ -6,8 +6,13 @@
 // to the light crosses: every triangle occludes whatever its orientation, and for closed,
 // consistently oriented meshes the front faces alone count. This covers sides, caps, the dark-cap
 // fan, multiplicities and mirrored matrices at once.
+//
+// A z-pass volume cut short on VolumeEndPlane must count like the whole one: the signed
+// crossings of its sides with segments from the near rectangle to points of the scene box are
+// compared for both.
 #include "penumbraCasterTopology.h"
 #include "penumbraCheck.h"
+#include "penumbraCulling.h"
 #include "penumbraShadowVolume.h"
 
 #include "vtkCellArray.h"
@@ -568,6 +573,121 @@ void FuzzRandomMeshes(std::mt19937& rng)
 
 } // namespace
 
+/// Signed crossings of the segment q -> p with the volume's sides, the swept copies placed by
+/// `swept`; INT_MIN when the segment grazes an edge.
+int SideCrossings(const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec3& q,
+  const glm::dvec3& p, const std::function<glm::dvec3(std::uint32_t)>& swept)
+{
+  const std::size_t n = topo.Points.size();
+  auto point = [&](std::uint32_t i) { return i < n ? topo.Points[i] : swept(i); };
+  int crossings = 0;
+  bool nearEdge = false;
+  for (std::size_t i = 0; i < volume.Sides.size(); i += 3)
+  {
+    const glm::dvec3 a = point(volume.Sides[i]), b = point(volume.Sides[i + 1]),
+                     c = point(volume.Sides[i + 2]);
+    const double t = RayTriangle(q, p - q, a, b, c, nearEdge);
+    if (t >= 0.0 && t <= 1.0)
+    {
+      crossings += glm::dot(glm::cross(b - a, c - a), p - q) > 0 ? 1 : -1;
+    }
+  }
+  return nearEdge ? std::numeric_limits<int>::min() : crossings;
+}
+
+/// VolumeEndPlane: the volume cut on it counts like the whole one along every segment from the
+/// near rectangle to a point of the scene, for closed, open and one-sided casters, positional
+/// and directional lights, and random scenes and eyes.
+void TestVolumeEndPlane(std::mt19937& rng)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(12);
+  vtkNew<vtkPlaneSource> sheet;
+  sheet->SetResolution(4, 3);
+  vtkNew<vtkParametricMobius> mobius;
+  const std::pair<const char*, CasterTopology> casters[] = { { "sphere", FromSource(sphere) },
+    { "open sheet", FromSource(sheet) }, { "Moebius strip", Parametric(mobius, 16) } };
+  std::uniform_real_distribution<double> unit(0.0, 1.0), signed1(-1.0, 1.0);
+  int cut = 0, uncut = 0, compared = 0, counted = 0, differ = 0, tried = 0;
+  for (const auto& [name, topo] : casters)
+  {
+    const glm::dvec3 lo = topo.BoundsMin, hi = topo.BoundsMax;
+    const double size = glm::length(hi - lo);
+    for (const glm::dvec4& light : Lights(topo))
+    {
+      const ShadowVolume volume = ShadowVolume::Build(topo, light, false, false);
+      for (int trial = 0; trial < 40; ++trial)
+      {
+        Box scene;
+        scene.Extend(lo - size * glm::dvec3(2.0 * unit(rng), 2.0 * unit(rng), 2.0 * unit(rng)),
+          hi + size * glm::dvec3(2.0 * unit(rng), 2.0 * unit(rng), 2.0 * unit(rng)));
+        const glm::dvec3 eye = 0.5 * (scene.Min + scene.Max) +
+          3.0 * size * glm::dvec3(signed1(rng), signed1(rng), signed1(rng));
+        const glm::dvec3 across = 0.05 * size * glm::dvec3(1.0, 0.0, 0.0),
+                         up = 0.05 * size * glm::dvec3(0.0, 1.0, 0.0);
+        const std::array<glm::dvec3, 4> nearCorners = { eye - across - up, eye + across - up,
+          eye + across + up, eye - across + up };
+        const glm::dvec4 plane = VolumeEndPlane(lo, hi, light, scene, nearCorners);
+        if (plane == glm::dvec4(0.0))
+        {
+          ++uncut;
+          continue;
+        }
+        ++cut;
+        const std::size_t n = topo.Points.size();
+        const double far = 1e4 * (1.0 + size);
+        auto infinite = [&](std::uint32_t i) { return VolumePoint(topo, i, light, far); };
+        auto truncated = [&](std::uint32_t i)
+        {
+          const glm::dvec3 v = topo.Points[i - n];
+          const glm::dvec3 away = light.w != 0.0 ? v - glm::dvec3(light) : -glm::dvec3(light);
+          const double reach =
+            -glm::dot(plane, glm::dvec4(v, 1.0)) / glm::dot(glm::dvec3(plane), away);
+          return v + reach * away;
+        };
+        for (int k = 0; k < 30; ++k)
+        {
+          const glm::dvec3 p =
+            scene.Min + (scene.Max - scene.Min) * glm::dvec3(unit(rng), unit(rng), unit(rng));
+          const double s = unit(rng), t = unit(rng);
+          const glm::dvec3 q = (1 - s) * (1 - t) * nearCorners[0] + s * (1 - t) * nearCorners[1] +
+            s * t * nearCorners[2] + (1 - s) * t * nearCorners[3];
+          ++tried;
+          const int whole = SideCrossings(topo, volume, q, p, infinite);
+          const int short_ = SideCrossings(topo, volume, q, p, truncated);
+          if (whole == std::numeric_limits<int>::min() || short_ == std::numeric_limits<int>::min())
+          {
+            continue;
+          }
+          ++compared;
+          counted += whole != 0;
+          if (whole != short_ && differ++ < 3)
+          {
+            std::printf("  %s: segment (%g,%g,%g) -> (%g,%g,%g): %d crossings, %d when cut\n", name,
+              q.x, q.y, q.z, p.x, p.y, p.z, whole, short_);
+          }
+        }
+      }
+    }
+  }
+  std::printf("     end plane: %d volumes cut, %d not; %d segments compared (%d crossing the "
+              "volume), %d differ\n",
+    cut, uncut, compared, counted, differ);
+  Check(cut > 200 && compared > tried / 2 && counted > compared / 50,
+    "volumes are cut, and the compared segments often cross them");
+  Check(differ == 0, "a volume cut on its end plane counts like the whole one");
+  Box unit_box;
+  unit_box.Extend(glm::dvec3(-1.0), glm::dvec3(1.0));
+  const std::array<glm::dvec3, 4> corners = { glm::dvec3(5, 0, 0), glm::dvec3(5, 1, 0),
+    glm::dvec3(5, 1, 1), glm::dvec3(5, 0, 1) };
+  Check(VolumeEndPlane(glm::dvec3(-0.5), glm::dvec3(0.5), { 0.6, 0.0, 0.0, 1.0 }, unit_box,
+          corners) == glm::dvec4(0.0) &&
+      VolumeEndPlane(glm::dvec3(-0.5), glm::dvec3(0.5), { 0, 5, 0, 1 }, Box(), corners) ==
+        glm::dvec4(0.0),
+    "no end plane for a light next to its caster, or without a scene box");
+}
+
 int main()
 {
   std::mt19937 rng(12345);
@@ -580,5 +700,6 @@ int main()
   TestDegenerateInput();
   TestBuilderReuse();
   FuzzRandomMeshes(rng);
+  TestVolumeEndPlane(rng);
   return penumbra_test::Finish();
 }

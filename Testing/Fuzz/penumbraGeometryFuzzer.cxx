@@ -332,9 +332,9 @@ void CheckVolume(
   for (const SilhouetteEdge& e : volume.Silhouette)
   {
     Require(e.From != e.To && e.Multiplicity > 0, "silhouette edges are proper edges");
-    sideTriangles += e.Multiplicity * (light.w == 0.0 ? 1 : 2);
+    sideTriangles += 2 * e.Multiplicity;
   }
-  Require(volume.Sides.size() == 3 * sideTriangles, "sides: one quad (or triangle) per edge use");
+  Require(volume.Sides.size() == 3 * sideTriangles, "sides: one quad per edge use");
   Require(volume.CastingTriangles <= topo.Triangles.size(), "casting triangles counted once");
   if (withCaps)
   {

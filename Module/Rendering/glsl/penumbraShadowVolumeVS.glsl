@@ -1,12 +1,16 @@
 //VTK::System::Dec
 // Shadow volume of one caster for one light. Each caster point is uploaded twice: w = 1 as
-// itself, w = 0 for its copy swept to infinity away from the light, so the volume reaches
-// infinity exactly (homogeneous w = 0) and the mesh is uploaded once per data change.
+// itself, w = 0 for its copy swept away from the light, which reaches infinity exactly
+// (homogeneous w = 0) or stops on the end plane; the mesh is uploaded once per data change.
 in vec4 vertexMC;
 
 uniform mat4 MCDCMatrix;
 // Object space, relative to the caster's origin: (position, 1) or (direction to light, 0).
 uniform vec4 lightMC;
+// z-pass only: (n, -d) of a plane beyond every visible point (penumbra::VolumeEndPlane), object
+// space; the swept copies stop on it, which spares the fill of the volume beyond the scene.
+// (0, 0, 0, 0): they go to infinity.
+uniform vec4 endPlaneMC;
 // Pushes the light cap away from the eye (NDC depth units); see ShadowVolumeRenderer::DrawVolume.
 uniform float capDepthBias;
 
@@ -19,6 +23,15 @@ void main()
   }
   else
   {
-    gl_Position = MCDCMatrix * vec4(vertexMC.xyz * lightMC.w - lightMC.xyz, 0.0);
+    vec3 away = vertexMC.xyz * lightMC.w - lightMC.xyz;
+    if (endPlaneMC == vec4(0.0))
+    {
+      gl_Position = MCDCMatrix * vec4(away, 0.0);
+    }
+    else
+    {
+      float reach = -dot(endPlaneMC, vec4(vertexMC.xyz, 1.0)) / dot(endPlaneMC.xyz, away);
+      gl_Position = MCDCMatrix * vec4(vertexMC.xyz + reach * away, 1.0);
+    }
   }
 }
