@@ -172,39 +172,72 @@ glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin, const glm::dvec3& casterM
   {
     return glm::dvec4(0.0);
   }
-  // The plane faces along the sweep from the light through the caster's centre. Seen from a point
-  // light the caster's bounding sphere spans at most 53 degrees from that axis here (cos >= 0.6),
-  // so no swept point lies more than 1/0.6 times its distance to the plane away.
+  // Every swept direction lies within `spread` radians of `axis`: the sweep through the caster's
+  // centre, and for a point light the cone around it that holds the caster's bounding sphere.
   const glm::dvec3 centre = 0.5 * (casterMin + casterMax);
-  glm::dvec3 normal = -glm::normalize(glm::dvec3(light));
+  glm::dvec3 axis = -glm::normalize(glm::dvec3(light));
+  double spread = 0.0;
   if (light.w != 0.0)
   {
     const glm::dvec3 away = centre - glm::dvec3(light);
     const double distance = glm::length(away);
     const double radius = 0.5 * glm::length(casterMax - casterMin);
-    if (!(distance > 1.25 * radius) || !std::isfinite(distance))
+    if (!(distance > radius) || !std::isfinite(distance))
     {
       return glm::dvec4(0.0);
     }
-    normal = away / distance;
+    axis = away / distance;
+    spread = std::asin(radius / distance);
   }
-  double offset = -std::numeric_limits<double>::infinity();
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    offset = std::max(offset, glm::dot(normal, BoxCorner(scene.Min, scene.Max, corner)));
-    offset = std::max(offset, glm::dot(normal, BoxCorner(casterMin, casterMax, corner)));
-  }
-  for (const glm::dvec3& corner : nearCorners)
-  {
-    offset = std::max(offset, glm::dot(normal, corner));
-  }
-  // A margin, so that float rounding in the vertex shader cannot pull a cut end into the scene.
-  offset += 1e-3 * (scene.Diagonal() + glm::length(casterMax - casterMin));
-  if (!std::isfinite(offset) || !std::isfinite(normal.x + normal.y + normal.z))
+  if (!std::isfinite(axis.x + axis.y + axis.z))
   {
     return glm::dvec4(0.0);
   }
-  return glm::dvec4(normal, -offset);
+  // A margin, so that float rounding in the vertex shader cannot pull a cut end into the scene.
+  const double margin = 1e-3 * (scene.Diagonal() + glm::length(casterMax - casterMin));
+  auto offsetAlong = [&](const glm::dvec3& normal)
+  {
+    double offset = -std::numeric_limits<double>::infinity();
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      offset = std::max(offset, glm::dot(normal, BoxCorner(scene.Min, scene.Max, corner)));
+      offset = std::max(offset, glm::dot(normal, BoxCorner(casterMin, casterMax, corner)));
+    }
+    for (const glm::dvec3& corner : nearCorners)
+    {
+      offset = std::max(offset, glm::dot(normal, corner));
+    }
+    return offset + margin;
+  };
+  // Candidates: the axis, and the scene box's faces, one of which often holds the receivers (a
+  // ground under a tilted light). A face qualifies where every swept direction meets it at least
+  // 11.5 degrees from edge-on (cos >= 0.2), so that no swept point goes more than five times its
+  // distance to the plane. The plane kept is the one the sweep through the centre meets first.
+  glm::dvec4 best(0.0);
+  double bestReach = std::numeric_limits<double>::infinity();
+  auto consider = [&](const glm::dvec3& normal)
+  {
+    const double tilt = std::acos(std::clamp(glm::dot(normal, axis), -1.0, 1.0));
+    if (tilt + spread > std::acos(0.2))
+    {
+      return;
+    }
+    const double offset = offsetAlong(normal);
+    const double reach = (offset - glm::dot(normal, centre)) / glm::dot(normal, axis);
+    if (std::isfinite(offset) && reach < bestReach)
+    {
+      bestReach = reach;
+      best = glm::dvec4(normal, -offset);
+    }
+  };
+  consider(axis);
+  for (int face = 0; face < 6; ++face)
+  {
+    glm::dvec3 normal(0.0);
+    normal[face / 2] = face % 2 ? 1.0 : -1.0;
+    consider(normal);
+  }
+  return best;
 }
 
 PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax,

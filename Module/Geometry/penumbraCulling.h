@@ -110,13 +110,14 @@ VTKPENUMBRAGEOMETRY_EXPORT PixelRect ShadowScissor(const glm::dvec3& casterMin,
  * Where a z-pass shadow volume may stop instead of at infinity (after Lloyd et al.'s CC shadow
  * volumes): a world plane (n, -d), n.x = d, that every point of `scene`, of the caster's box and
  * of the near rectangle lies in front of (n.x < d), and that every direction the volume sweeps in
- * from the caster away from `light` (position, 1) or (direction towards it, 0) crosses (n.dir >
- * 0). The volume cut by it counts the same at every visible point: z-pass counts the crossings
+ * from the caster away from `light` (position, 1) or (direction towards it, 0) crosses (n.dir >=
+ * 0.2). The volume cut by it counts the same at every visible point: z-pass counts the crossings
  * on the segment from the near plane to the point, which lies in front of the plane, where the
  * cut volume's sides are the whole volume's. Cutting each swept point to a plane of its own would
- * not do: the cut sides' far edges could then pass through the scene. (0, 0, 0, 0) when there is
- * no such plane worth having: `scene` invalid or a point light near or inside the caster's box,
- * where the swept directions spread too far (the volume then goes to infinity).
+ * not do: the cut sides' far edges could then pass through the scene. Of the planes normal to the
+ * sweep through the caster's centre or to a face of `scene`, the one nearest the caster along
+ * that sweep. (0, 0, 0, 0) when none qualifies (the volume then goes to infinity): `scene`
+ * invalid, or a point light so near the caster's box that its swept directions spread too far.
  */
 VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin,
   const glm::dvec3& casterMax, const glm::dvec4& light, const Box& scene,
