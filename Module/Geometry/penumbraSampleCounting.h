@@ -144,13 +144,14 @@ struct CountingCost
  * wedges, cut to the receivers and to the edges' silhouette sectors) should take less time than
  * averaging as many hard shadows (one volume pass each). Both give the same image, so a wrong
  * guess costs time, never accuracy. Fitted to the benchmark on llvmpipe at 1024x768
- * (Documentation/results.md, 16 rows: four scenes, two radii, 16 and 64 samples): the ratio
+ * (Documentation/wedges.md, "Cost": 16 rows, four scenes, two radii, 16 and 64 samples, after
+ * z-pass volumes stopped beyond the scene): the ratio
  * grows with the potential silhouette P against the centre silhouette S, and with the light's
  * angular radius rho (the penumbra, and how many edges cross the light seen from a pixel), and
  * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
  * a wedge reaches):
  *
- *   counting / averaging = 0.36 (P / S)^0.73 (rho / 0.016)^0.65 (16 / N)^0.69,
+ *   counting / averaging = 0.81 (P / S)^0.72 (rho / 0.016)^0.65 (16 / N)^0.66,
  *
  * P and S summed over the casters, rho averaged over them weighted by S.
  */
