@@ -3,6 +3,7 @@
 // penumbraFuzzInput.h; the invariants are listed in Documentation/fuzzing.md. A violated
 // invariant prints what broke and aborts, so libFuzzer (or the smoke driver) reports the input.
 #include "penumbraCasterTopology.h"
+#include "penumbraCulling.h"
 #include "penumbraFuzzInput.h"
 #include "penumbraLightSamples.h"
 #include "penumbraSampleCounting.h"
@@ -16,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -437,6 +439,73 @@ void CheckCounting(const CasterTopology& topo, const glm::dvec4& light, double r
 
 } // namespace
 
+/// A caster point's sweep away from the light crosses the end plane at least 11.5 degrees from
+/// edge-on, beyond the point and at a finite place.
+void CheckSweepCrossesEndPlane(
+  const glm::dvec3& v, const glm::dvec4& light, const glm::dvec4& plane)
+{
+  const glm::dvec3 away = light.w != 0.0 ? v - glm::dvec3(light) : -glm::dvec3(light);
+  const double crossing = glm::dot(glm::dvec3(plane), away);
+  Require(crossing >= (0.2 - 1e-9) * glm::length(away), "every sweep crosses the end plane");
+  const double reach = -glm::dot(plane, glm::dvec4(v, 1.0)) / crossing;
+  // Not before the point, but for rounding at the scale of its coordinates.
+  const double slack = 1e-9 * (glm::length(v) + std::abs(plane.w));
+  Require(std::isfinite(reach) && reach * glm::length(away) >= -slack,
+    "swept points land beyond the caster");
+}
+
+/// VolumeEndPlane: none, or a finite plane that the scene box, the caster's box and the near
+/// corners lie in front of, and that the sweep of every point of a triangle crosses.
+void CheckEndPlane(
+  const CasterTopology& topo, const glm::dvec4& light, const std::vector<glm::dvec3>& receivers)
+{
+  if (topo.Points.empty())
+  {
+    return;
+  }
+  Box scene;
+  scene.Extend(topo.BoundsMin, topo.BoundsMax);
+  for (const glm::dvec3& p : receivers)
+  {
+    if (std::isfinite(p.x + p.y + p.z))
+    {
+      scene.Extend(p, p);
+    }
+  }
+  const glm::dvec3 size = scene.Max - scene.Min + glm::dvec3(1.0);
+  const std::array<glm::dvec3, 4> nearCorners = { scene.Max + size, scene.Max + 2.0 * size,
+    scene.Min - size, scene.Min - glm::dvec3(size.x, 0.0, 0.0) };
+  const glm::dvec4 plane =
+    VolumeEndPlane(topo.BoundsMin, topo.BoundsMax, light, scene, nearCorners);
+  if (plane == glm::dvec4(0.0))
+  {
+    return;
+  }
+  const glm::dvec3 normal(plane);
+  Require(std::isfinite(plane.x + plane.y + plane.z + plane.w) &&
+      std::abs(glm::length(normal) - 1.0) < 1e-9,
+    "end plane finite, unit normal");
+  auto inFront = [&](const glm::dvec3& p)
+  { return glm::dot(plane, glm::dvec4(p, 1.0)) < 1e-9 * (1.0 + std::abs(plane.w)); };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 c((corner & 1) ? scene.Max.x : scene.Min.x,
+      (corner & 2) ? scene.Max.y : scene.Min.y, (corner & 4) ? scene.Max.z : scene.Min.z);
+    Require(inFront(c), "the scene lies in front of the end plane");
+  }
+  for (const glm::dvec3& c : nearCorners)
+  {
+    Require(inFront(c), "the near rectangle lies in front of the end plane");
+  }
+  for (const glm::uvec3& triangle : topo.Triangles)
+  {
+    for (int corner = 0; corner < 3; ++corner)
+    {
+      CheckSweepCrossesEndPlane(topo.Points[triangle[corner]], light, plane);
+    }
+  }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   ByteReader in(data, size);
@@ -510,6 +579,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     CheckWedgeAndOcclusion(a, b, local, radius, points);
   }
+  CheckEndPlane(topo, local, points);
 
   // Light samples: the light math the averaged hard shadows share.
   const int sampleCount = in.U8() % 17;
