@@ -9,45 +9,14 @@ MAE of averaging the same samples, and both near the truth. The same scenes in p
 checked alongside, so that a failure says which projection broke."""
 import numpy as np
 import penumbra
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow)
+from penumbra_testing import (actor_of, check, compare_hard_shadows, finish, ground_and_sphere, image,
+                              offscreen_window)
+from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
-
-
-def actor_of(source, color):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(source.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(*color)
-    return actor
-
-
-def image(vtk_image, h, w):
-    return vtk_to_numpy(vtk_image.GetPointData().GetScalars()).reshape(h, w)
-
-
 renderer = vtkRenderer()
-plane = vtkPlaneSource()
-plane.SetOrigin(-4, 0, -4)
-plane.SetPoint1(4, 0, -4)
-plane.SetPoint2(-4, 0, 4)
-sphere = vtkSphereSource()
-sphere.SetCenter(-0.8, 1.0, 0)
-sphere.SetRadius(0.7)
-sphere.SetThetaResolution(48)
-sphere.SetPhiResolution(24)
+plane, sphere = ground_and_sphere()
 box = vtkCubeSource()
 box.SetCenter(1.2, 0.8, 0.5)
 box.SetXLength(0.8)
@@ -60,11 +29,7 @@ light.SetLightTypeToSceneLight()
 light.SetConeAngle(180)
 light.SetFocalPoint(0, 0, 0)
 renderer.AddLight(light)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(400, 300)
-window.AddRenderer(renderer)
+window = offscreen_window(renderer, 400, 300)
 shadows = penumbra.vtkSoftShadowPass()
 renderer.SetPass(shadows)
 truth = penumbra.vtkRayTracedVisibility()
@@ -92,18 +57,8 @@ for parallel in (True, False):
             window.Render()
             truth.SetSamplesPerLight(1)
             truth.Update()
-            ours = image(shadows.GetVisibilityImage(0), h, w)
-            true = image(truth.GetVisibilityImage(0), h, w)
-            depth = image(truth.GetDepthImage(), h, w)
-            zbuffer = vtkFloatArray()
-            window.GetZbufferData(0, 0, w - 1, h - 1, zbuffer)
-            zbuffer = vtk_to_numpy(zbuffer).reshape(h, w)
-            same = ((depth < 1) & (np.abs(depth - zbuffer) < 1e-3))[1:-1, 1:-1]
-            near = [np.roll(np.roll(true, dy, 0), dx, 1) for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
-            explained = np.any([np.abs(n - ours) <= 0.5 for n in near], axis=0)[1:-1, 1:-1]
-            compared = same.sum()
-            wrong = (same & ~explained).sum()
-            shadowed = (same & (true[1:-1, 1:-1] < 0.5)).sum()
+            ours = image(shadows.GetVisibilityImage(0), w, h)
+            compared, shadowed, wrong = compare_hard_shadows(window, ours, truth)
             label = "%s, %s light, eye %s" % (projection, name, eye)
             print("     %s: %d px compared, %d in shadow, %d wrong, %d z-fail volumes"
                   % (label, compared, shadowed, wrong, shadows.GetNumberOfZFailVolumes()))
@@ -120,14 +75,14 @@ for parallel in (True, False):
     shadows.SetLightSamples(16)
     truth.SetSamplesPerLight(64)
     truth.Update()
-    true = image(truth.GetVisibilityImage(0), h, w)
-    surface = image(truth.GetDepthImage(), h, w) < 1
+    true = image(truth.GetVisibilityImage(0), w, h)
+    surface = image(truth.GetDepthImage(), w, h) < 1
     results = {}
     for method, choose in (("counted", shadows.SetMethodToSoftShadowVolumes),
                            ("averaged", shadows.SetMethodToAveragedHardShadows)):
         choose()
         window.Render()
-        results[method] = image(shadows.GetVisibilityImage(0), h, w).copy()
+        results[method] = image(shadows.GetVisibilityImage(0), w, h).copy()
     # The error where any of the three sees shadow: the penumbrae and umbrae, not the lit ground.
     shade = surface & ((true < 0.999) | (results["counted"] < 0.999) | (results["averaged"] < 0.999))
     errors = {m: np.abs(v - true)[shade].mean() for m, v in results.items()}
@@ -137,5 +92,4 @@ for parallel in (True, False):
           errors["counted"] < errors["averaged"] + 0.01,
           projection + ": counted soft shadows as near the truth as averaged ones")
 
-if failures:
-    raise SystemExit("%d check(s) failed" % len(failures))
+finish()

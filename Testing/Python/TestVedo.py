@@ -4,22 +4,14 @@ light's size is an angle (angular_radius, degrees).
 
 Tolerance: hard shadows (CheckAgainstTruth's 0.2% of compared pixels wrong away from shadow
 boundaries), and a soft light whose visibility MAE against the truth is below 0.03."""
-import sys
 import warnings
 
 import numpy as np
 import penumbra
 import vedo
+from penumbra_testing import check, finish
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
 
 
 vedo.settings.default_backend = "vtk"
@@ -131,4 +123,4 @@ check(light.GetPositional() and penumbra.vtkSoftShadowPass.GetLightRadius(light)
       penumbra.vtkSoftShadowPass.LightCastsShadows(light), "add_light: a positional scene light that casts")
 renderer.RemoveLight(light)
 plotter.close()
-sys.exit(1 if failures else 0)
+finish()
