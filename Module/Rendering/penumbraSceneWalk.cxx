@@ -17,6 +17,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
@@ -25,6 +26,7 @@
 #include "vtkImageSlice.h"
 #include "vtkLODProp3D.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLMoleculeMapper.h"
 #include "vtkOpenGLSphereMapper.h"
@@ -193,6 +195,77 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
     return { cube->GetAssembly() }; // VTK draws the assembly at its own matrix, not the cube's
   }
   return { prop };
+}
+
+namespace
+{
+/// The largest magnitude of component `component` of `array`, or `fallback` without an array.
+double LargestComponent(vtkDataArray* array, int component, double fallback)
+{
+  if (!array || component >= array->GetNumberOfComponents() || array->GetNumberOfTuples() == 0)
+  {
+    return fallback;
+  }
+  double range[2];
+  array->GetRange(range, component);
+  return std::max(std::abs(range[0]), std::abs(range[1]));
+}
+
+/// ImposterReach of one actor's mapper, in the mapper's (object) units.
+double MapperImposterReach(vtkMapper* mapper)
+{
+  auto input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!input)
+  {
+    return 0.0;
+  }
+  vtkPointData* points = input->GetPointData();
+  auto named = [&](const char* name) { return name ? points->GetArray(name) : nullptr; };
+  if (auto spheres = vtkOpenGLSphereMapper::SafeDownCast(mapper))
+  {
+    return LargestComponent(named(spheres->*SphereArrays::Scale), 0, spheres->GetRadius());
+  }
+  if (auto sticks = vtkOpenGLStickMapper::SafeDownCast(mapper))
+  {
+    // Half the length (first size component times the orientation's norm) and the radius.
+    vtkDataArray* sizes = named(sticks->*StickArrays::Scale);
+    vtkDataArray* axes = named(sticks->*StickArrays::Orientation);
+    const double axis = axes ? axes->GetMaxNorm() : 1.0;
+    return 0.5 * LargestComponent(sizes, 0, 0.0) * axis + LargestComponent(sizes, 1, 0.0);
+  }
+  return 0.0;
+}
+} // namespace
+
+double ImposterReach(vtkProp* prop)
+{
+  double reach = 0.0;
+  vtkAssemblyPath* path;
+  for (prop->InitPathTraversal(); (path = prop->GetNextPath());)
+  {
+    auto actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+    const double local = actor ? MapperImposterReach(actor->GetMapper()) : 0.0;
+    if (local == 0.0)
+    {
+      continue;
+    }
+    // The largest stretch of the path's matrix (a lone actor's own): its widest column's norm.
+    vtkMatrix4x4* matrix = path->GetLastNode()->GetMatrix();
+    matrix = matrix ? matrix : actor->GetMatrix();
+    double stretch = 1.0;
+    if (matrix)
+    {
+      stretch = 0.0;
+      for (int column = 0; column < 3; ++column)
+      {
+        stretch = std::max(stretch,
+          std::hypot(matrix->GetElement(0, column), matrix->GetElement(1, column),
+            matrix->GetElement(2, column)));
+      }
+    }
+    reach = std::max(reach, std::isfinite(local) ? local * stretch : HUGE_VAL);
+  }
+  return reach;
 }
 
 std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)

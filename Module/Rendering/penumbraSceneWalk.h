@@ -72,6 +72,12 @@ struct DrawnSurface
 /// casters after its depth pass, in which VTK places them for the frame.
 std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
 
+/// How far (world units) what VTK draws for `prop` may reach beyond prop->GetBounds(): VTK's
+/// imposter mappers (vtkOpenGLSphereMapper, vtkOpenGLStickMapper), alone or as parts of an
+/// assembly, report the bounds of their centres only, without the spheres' radii or the sticks'
+/// half lengths. 0 for anything else; infinite when a radius or size is not finite.
+double ImposterReach(vtkProp* prop);
+
 /// Finds the surfaces a renderer draws, and warns once about what cannot cast.
 class SceneWalk
 {

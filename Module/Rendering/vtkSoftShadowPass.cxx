@@ -630,12 +630,15 @@ PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
   {
     return PropExtent::None;
   }
-  if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+  // Imposter spheres and sticks reach beyond the bounds VTK gives for them.
+  const double reach = penumbra::ImposterReach(prop);
+  if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }) ||
+    !std::isfinite(reach))
   {
     return PropExtent::Unknown;
   }
-  box.Extend(
-    glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
+  box.Extend(glm::dvec3(bounds[0], bounds[2], bounds[4]) - reach,
+    glm::dvec3(bounds[1], bounds[3], bounds[5]) + reach);
   return PropExtent::Finite;
 }
 } // namespace
