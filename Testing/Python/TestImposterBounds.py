@@ -7,12 +7,11 @@ stand-ins that cast differ from the true spheres by design, limitations.md) are 
 the rest at most 0.2% may be wrong beyond a one-pixel shift. Measured 0 in all four views; with
 the spheres' radii left out of the scene box (a throw-away change), 1988, 3570, 1375 and 150."""
 import numpy as np
-import penumbra
 from penumbra_testing import (actor_of, check, compare_hard_shadows, finish, ground_and_sphere, image,
-                              offscreen_window)
+                              light_pass_and_truth)
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper
 
 RADIUS = 0.6
@@ -35,16 +34,7 @@ mapper.SetRadius(RADIUS)
 spheres = vtkActor()
 spheres.SetMapper(mapper)
 renderer.AddActor(spheres)
-light = vtkLight()
-light.SetLightTypeToSceneLight()
-light.SetConeAngle(180)
-light.SetFocalPoint(0, 0, 0)
-renderer.AddLight(light)
-window = offscreen_window(renderer, 400, 300)
-shadows = penumbra.vtkSoftShadowPass()
-renderer.SetPass(shadows)
-truth = penumbra.vtkRayTracedVisibility()
-truth.SetRenderer(renderer)
+light, window, shadows, truth = light_pass_and_truth(renderer, 400, 300)
 truth.SetSamplesPerLight(1)
 camera = renderer.GetActiveCamera()
 w, h = window.GetSize()

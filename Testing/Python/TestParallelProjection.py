@@ -10,9 +10,9 @@ checked alongside, so that a failure says which projection broke."""
 import numpy as np
 import penumbra
 from penumbra_testing import (actor_of, check, compare_hard_shadows, finish, ground_and_sphere, image,
-                              offscreen_window)
+                              light_pass_and_truth)
 from vtkmodules.vtkFiltersSources import vtkCubeSource
-from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 renderer = vtkRenderer()
@@ -24,16 +24,7 @@ box.SetYLength(1.6)
 box.SetZLength(0.6)
 for source, color in ((plane, (0.85, 0.85, 0.8)), (sphere, (0.9, 0.3, 0.3)), (box, (0.3, 0.6, 0.9))):
     renderer.AddActor(actor_of(source, color))
-light = vtkLight()
-light.SetLightTypeToSceneLight()
-light.SetConeAngle(180)
-light.SetFocalPoint(0, 0, 0)
-renderer.AddLight(light)
-window = offscreen_window(renderer, 400, 300)
-shadows = penumbra.vtkSoftShadowPass()
-renderer.SetPass(shadows)
-truth = penumbra.vtkRayTracedVisibility()
-truth.SetRenderer(renderer)
+light, window, shadows, truth = light_pass_and_truth(renderer, 400, 300)
 camera = renderer.GetActiveCamera()
 w, h = window.GetSize()
 

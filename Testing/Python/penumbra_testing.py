@@ -3,10 +3,11 @@ ray-traced truth that ignores one-pixel boundary shifts."""
 import sys
 
 import numpy as np
+import penumbra
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderWindow
 
 failures = []
 
@@ -57,6 +58,23 @@ def offscreen_window(renderer, width, height):
     window.SetSize(width, height)
     window.AddRenderer(renderer)
     return window
+
+
+def light_pass_and_truth(renderer, width, height):
+    """(light, window, pass, truth) for `renderer`: a scene light shining all round, aimed at the
+    origin (place it), an off-screen window, a vtkSoftShadowPass set on the renderer and the ray
+    tracer reading it."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetConeAngle(180)
+    light.SetFocalPoint(0, 0, 0)
+    renderer.AddLight(light)
+    window = offscreen_window(renderer, width, height)
+    shadows = penumbra.vtkSoftShadowPass()
+    renderer.SetPass(shadows)
+    truth = penumbra.vtkRayTracedVisibility()
+    truth.SetRenderer(renderer)
+    return light, window, shadows, truth
 
 
 def image(vtk_image, width, height):
