@@ -489,9 +489,8 @@ void CheckEndPlane(
   { return glm::dot(plane, glm::dvec4(p, 1.0)) < 1e-9 * (1.0 + std::abs(plane.w)); };
   for (int corner = 0; corner < 8; ++corner)
   {
-    const glm::dvec3 c((corner & 1) ? scene.Max.x : scene.Min.x,
-      (corner & 2) ? scene.Max.y : scene.Min.y, (corner & 4) ? scene.Max.z : scene.Min.z);
-    Require(inFront(c), "the scene lies in front of the end plane");
+    Require(
+      inFront(BoxCorner(scene.Min, scene.Max, corner)), "the scene lies in front of the end plane");
   }
   for (const glm::dvec3& c : nearCorners)
   {
