@@ -249,20 +249,21 @@ double ImposterReach(vtkProp* prop)
     {
       continue;
     }
-    // The largest stretch of the path's matrix (a lone actor's own): its widest column's norm.
+    // How far the path's matrix (a lone actor's own) stretches a length: the largest singular
+    // value of its linear part, shear included.
     vtkMatrix4x4* matrix = path->GetLastNode()->GetMatrix();
     matrix = matrix ? matrix : actor->GetMatrix();
-    double stretch = 1.0;
-    if (matrix)
+    double linear[3][3], u[3][3], singular[3], vt[3][3];
+    for (int row = 0; row < 3; ++row)
     {
-      stretch = 0.0;
       for (int column = 0; column < 3; ++column)
       {
-        stretch = std::max(stretch,
-          std::hypot(matrix->GetElement(0, column), matrix->GetElement(1, column),
-            matrix->GetElement(2, column)));
+        linear[row][column] = matrix->GetElement(row, column);
       }
     }
+    vtkMath::SingularValueDecomposition3x3(linear, u, singular, vt);
+    const double stretch =
+      std::max({ std::abs(singular[0]), std::abs(singular[1]), std::abs(singular[2]) });
     reach = std::max(reach, std::isfinite(local) ? local * stretch : HUGE_VAL);
   }
   return reach;
