@@ -571,8 +571,6 @@ void FuzzRandomMeshes(std::mt19937& rng)
   Check(reusedSame == meshes, "fuzz: a reused builder gives what a fresh build gives");
 }
 
-} // namespace
-
 /// Signed crossings of the segment q -> p with the volume's sides, the swept copies placed by
 /// `swept`; INT_MIN when the segment grazes an edge.
 int SideCrossings(const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec3& q,
@@ -687,6 +685,8 @@ void TestVolumeEndPlane(std::mt19937& rng)
         glm::dvec4(0.0),
     "no end plane for a light next to its caster, or without a scene box");
 }
+
+} // namespace
 
 int main()
 {
