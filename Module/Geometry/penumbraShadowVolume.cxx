@@ -1,6 +1,8 @@
 #include "penumbraShadowVolume.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <numeric>
 
 namespace penumbra
 {
@@ -23,6 +25,40 @@ void AppendTriangle(
   out.push_back(a);
   out.push_back(b);
   out.push_back(c);
+}
+
+/// Appends, through `append`, the triangles of every silhouette edge: first one copy of each,
+/// in runs of equal multiplicity (recorded in `runs`), then the further copies.
+template <typename AppendEdge>
+void AppendByMultiplicity(const std::vector<SilhouetteEdge>& silhouette,
+  std::vector<std::uint32_t>& out, std::vector<TriangleRun>& runs, AppendEdge append)
+{
+  std::vector<std::uint32_t> order(silhouette.size());
+  std::iota(order.begin(), order.end(), 0u);
+  const auto byMultiplicity = [&](std::uint32_t a, std::uint32_t b)
+  { return silhouette[a].Multiplicity < silhouette[b].Multiplicity; };
+  if (!std::is_sorted(order.begin(), order.end(), byMultiplicity)) // mostly one multiplicity
+  {
+    std::stable_sort(order.begin(), order.end(), byMultiplicity);
+  }
+  for (std::uint32_t i : order)
+  {
+    const SilhouetteEdge& e = silhouette[i];
+    if (runs.empty() || runs.back().Multiplicity != e.Multiplicity)
+    {
+      runs.push_back({ e.Multiplicity, out.size(), 0 });
+    }
+    const std::size_t before = out.size();
+    append(e, out);
+    runs.back().Count += out.size() - before;
+  }
+  for (const SilhouetteEdge& e : silhouette)
+  {
+    for (std::uint32_t k = 1; k < e.Multiplicity; ++k)
+    {
+      append(e, out);
+    }
+  }
 }
 
 } // namespace
@@ -101,14 +137,12 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
   // (b, a, a_inf, b_inf). Towards a directional light every point sweeps to the same point at
   // infinity, so there is no dark cap and the quad's second triangle has no area there; it is
   // kept for z-pass volumes that stop on a plane short of infinity (VolumeEndPlane).
-  for (const SilhouetteEdge& e : volume.Silhouette)
-  {
-    for (std::uint32_t k = 0; k < e.Multiplicity; ++k)
+  AppendByMultiplicity(volume.Silhouette, volume.Sides, volume.SideRuns,
+    [n](const SilhouetteEdge& e, std::vector<std::uint32_t>& out)
     {
-      AppendTriangle(volume.Sides, e.To, e.From, e.From + n);
-      AppendTriangle(volume.Sides, e.To, e.From + n, e.To + n);
-    }
-  }
+      AppendTriangle(out, e.To, e.From, e.From + n);
+      AppendTriangle(out, e.To, e.From + n, e.To + n);
+    });
 
   // A light inside a closed mesh sees no silhouette at all: the caps alone bound its volume.
   if (!directional && !volume.LightCap.empty())
@@ -117,17 +151,14 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
     {
       const std::uint32_t centre =
         volume.Silhouette.empty() ? 0 : volume.Silhouette.front().From + n;
-      for (const SilhouetteEdge& e : volume.Silhouette)
-      {
-        if (e.From + n == centre || e.To + n == centre)
+      AppendByMultiplicity(volume.Silhouette, volume.DarkCap, volume.DarkCapRuns,
+        [n, centre](const SilhouetteEdge& e, std::vector<std::uint32_t>& out)
         {
-          continue; // degenerate fan triangle
-        }
-        for (std::uint32_t k = 0; k < e.Multiplicity; ++k)
-        {
-          AppendTriangle(volume.DarkCap, centre, e.To + n, e.From + n);
-        }
-      }
+          if (e.From + n != centre && e.To + n != centre) // else a degenerate fan triangle
+          {
+            AppendTriangle(out, centre, e.To + n, e.From + n);
+          }
+        });
     }
     else
     {
@@ -136,6 +167,7 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
         AppendTriangle(volume.DarkCap, volume.LightCap[i] + n, volume.LightCap[i + 2] + n,
           volume.LightCap[i + 1] + n);
       }
+      volume.DarkCapRuns.push_back({ 1, 0, volume.DarkCap.size() });
     }
   }
   return volume;

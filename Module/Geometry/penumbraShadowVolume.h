@@ -12,6 +12,12 @@
  * shadow nothing that the front faces do not, so only front faces count (weight 1/0 instead of
  * +1/-1) and m_e is +-1.
  *
+ * Sides and DarkCap hold each triangle of an edge |m_e| times, as the stencil counts them (one
+ * per crossing). They begin with one copy of every edge's triangles, grouped by multiplicity
+ * (SideRuns, DarkCapRuns): a count that can add m_e at once (additive blending into a float
+ * target) draws those runs, each weighted by its multiplicity, and fills every side once. On an
+ * open mesh, where the general rule gives most silhouette edges m_e = 2, that halves the fill.
+ *
  * Vertex indices refer to a buffer of 2N vertices: i < N is caster point i, N + i the same point
  * swept to infinity away from the light (w = 0 in the vertex shader).
  */
@@ -41,15 +47,28 @@ enum class CountingRule
   EveryTriangle
 };
 
+/// Indices [First, First + Count) of Sides or DarkCap whose triangles stand for Multiplicity
+/// copies each.
+struct TriangleRun
+{
+  std::uint32_t Multiplicity;
+  std::size_t First;
+  std::size_t Count;
+};
+
 struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
 {
   std::vector<SilhouetteEdge> Silhouette;
   /// Triangles of the swept silhouette (indices into the 2N buffer): enough for z-pass.
   std::vector<std::uint32_t> Sides;
+  /// The first copies in Sides, by multiplicity (ascending); the rest of Sides repeats them.
+  std::vector<TriangleRun> SideRuns;
   /// The casting triangles wound to face the light: the light cap, z-fail only.
   std::vector<std::uint32_t> LightCap;
   /// The far end of the volume at infinity (empty for directional lights): z-fail only.
   std::vector<std::uint32_t> DarkCap;
+  /// The first copies in DarkCap, by multiplicity, as SideRuns.
+  std::vector<TriangleRun> DarkCapRuns;
   /// Triangles that cast (for statistics and tests).
   std::size_t CastingTriangles = 0;
 

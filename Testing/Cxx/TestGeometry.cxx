@@ -92,10 +92,29 @@ glm::dvec3 VolumePoint(
   return p + far * away / glm::length(away);
 }
 
+/// Triangles [First, First + Count) of a volume's index list, each counted Multiplicity times.
+struct CountedList
+{
+  const std::vector<std::uint32_t>* Indices;
+  std::vector<TriangleRun> Runs;
+};
+
+/// What Winding counts: every copy once (as the stencil), or only the runs of first copies, each
+/// weighted by its multiplicity (as counting in colour draws them).
+std::vector<CountedList> VolumeLists(const ShadowVolume& volume, bool weighted)
+{
+  const auto whole = [](const std::vector<std::uint32_t>& list) {
+    return std::vector<TriangleRun>{ { 1, 0, list.size() } };
+  };
+  return { { &volume.Sides, weighted ? volume.SideRuns : whole(volume.Sides) },
+    { &volume.LightCap, whole(volume.LightCap) },
+    { &volume.DarkCap, weighted ? volume.DarkCapRuns : whole(volume.DarkCap) } };
+}
+
 /// Winding number of the closed volume (sides + dark cap + light cap) at q, or INT_MIN when
-/// every tried ray grazed an edge.
+/// every tried ray grazed an edge; `weighted` counts the multiplicity runs instead of every copy.
 int Winding(const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec4& light,
-  const glm::dvec3& q, std::mt19937& rng)
+  const glm::dvec3& q, std::mt19937& rng, bool weighted = false)
 {
   const double far = 1e4 * (1.0 + glm::length(topo.BoundsMax - topo.BoundsMin));
   std::normal_distribution<double> normal;
@@ -104,17 +123,22 @@ int Winding(const CasterTopology& topo, const ShadowVolume& volume, const glm::d
     const glm::dvec3 dir = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
     int winding = 0;
     bool nearEdge = false;
-    for (const auto* list : { &volume.Sides, &volume.LightCap, &volume.DarkCap })
+    for (const CountedList& list : VolumeLists(volume, weighted))
     {
-      for (std::size_t i = 0; i < list->size(); i += 3)
+      const std::vector<std::uint32_t>& indices = *list.Indices;
+      for (const TriangleRun& run : list.Runs)
       {
-        const glm::dvec3 a = VolumePoint(topo, (*list)[i], light, far);
-        const glm::dvec3 b = VolumePoint(topo, (*list)[i + 1], light, far);
-        const glm::dvec3 c = VolumePoint(topo, (*list)[i + 2], light, far);
-        if (RayTriangle(q, dir, a, b, c, nearEdge) >= 0.0)
+        for (std::size_t i = run.First; i < run.First + run.Count; i += 3)
         {
-          // Outward (counter-clockwise) normal along the ray: the ray leaves the volume.
-          winding += glm::dot(glm::cross(b - a, c - a), dir) > 0 ? 1 : -1;
+          const glm::dvec3 a = VolumePoint(topo, indices[i], light, far);
+          const glm::dvec3 b = VolumePoint(topo, indices[i + 1], light, far);
+          const glm::dvec3 c = VolumePoint(topo, indices[i + 2], light, far);
+          if (RayTriangle(q, dir, a, b, c, nearEdge) >= 0.0)
+          {
+            // Outward (counter-clockwise) normal along the ray: the ray leaves the volume.
+            const int multiplicity = static_cast<int>(run.Multiplicity);
+            winding += glm::dot(glm::cross(b - a, c - a), dir) > 0 ? multiplicity : -multiplicity;
+          }
         }
       }
     }
@@ -169,17 +193,40 @@ bool AnyOccluder(
   return false;
 }
 
-/// Compares winding and occluder counts at random points around the caster.
+/// The multiplicity runs of a volume's sides and dark cap: ascending, within the list, and with
+/// every further copy after them, so that runs times multiplicity account for the whole list.
+void CheckRuns(const std::string& name, const ShadowVolume& volume)
+{
+  for (const CountedList& list : VolumeLists(volume, true))
+  {
+    std::size_t next = 0, copies = 0;
+    std::uint32_t previous = 0;
+    bool ordered = true;
+    for (const TriangleRun& run : list.Runs)
+    {
+      ordered = ordered && run.First == next && run.Count % 3 == 0 && run.Multiplicity > previous;
+      next = run.First + run.Count;
+      previous = run.Multiplicity;
+      copies += run.Count * run.Multiplicity;
+    }
+    Check(ordered && copies == list.Indices->size(),
+      name + ": multiplicity runs lead the list and account for every copy");
+  }
+}
+
+/// Compares winding and occluder counts at random points around the caster, and the winding
+/// counted over the multiplicity runs with the one over every copy.
 void CheckVolume(const std::string& name, const CasterTopology& topo, const glm::dvec4& light,
   std::mt19937& rng, int samples = 300,
   CountingRule rule = CountingRule::FrontFacesWhereTheySuffice)
 {
   const ShadowVolume volume = ShadowVolume::Build(topo, light, false, true, rule);
   Check(volume.SilhouetteIsBalanced(topo.Points.size()), name + ": silhouette balanced");
+  CheckRuns(name, volume);
   const glm::dvec3 lo = topo.BoundsMin, hi = topo.BoundsMax;
   const glm::dvec3 size = hi - lo + glm::dvec3(1e-3);
   std::uniform_real_distribution<double> unit(-0.5, 1.5);
-  int compared = 0, mismatches = 0;
+  int compared = 0, mismatches = 0, weightedCompared = 0, weightedMismatches = 0;
   for (int i = 0; i < samples; ++i)
   {
     // Points around and behind the caster, where its shadow lies.
@@ -215,7 +262,16 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
           winding, expected);
       }
     }
+    const int weighted = Winding(topo, volume, light, q, rng, true);
+    if (weighted != std::numeric_limits<int>::min())
+    {
+      ++weightedCompared;
+      weightedMismatches += weighted != winding ? 1 : 0;
+    }
   }
+  Check(weightedCompared > compared / 2 && weightedMismatches == 0,
+    name + ": multiplicity runs weighted wind as every copy does (" +
+      std::to_string(weightedMismatches) + " of " + std::to_string(weightedCompared) + " differ)");
   Check(compared > samples / 2, name + ": enough robust samples");
   Check(mismatches == 0,
     name + ": volume winding equals occluder count (" + std::to_string(mismatches) + " of " +
