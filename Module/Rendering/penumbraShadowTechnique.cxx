@@ -25,6 +25,11 @@ bool ShadowLight::CountsCentreInColour() const
   return this->Technique && this->Technique->CountsCentreInColour();
 }
 
+bool ShadowLight::CountsVolumesInColour() const
+{
+  return this->Technique && this->Technique->CountsInColour(*this);
+}
+
 std::pair<vtkLight*, int> ShadowLight::VolumeKey(std::size_t k) const
 {
   return { this->Light, this->CountsCentreInColour() ? CentreVolume : static_cast<int>(k) };

@@ -74,6 +74,8 @@ struct ShadowLight
 
   /// Wedges and counting count the centre's volumes in colour, not in the stencil.
   bool CountsCentreInColour() const;
+  /// Whether the opaque casters' volumes are counted in colour (ShadowTechnique::CountsInColour).
+  bool CountsVolumesInColour() const;
   /// Cache key of sample k's volume. The light's centre has a key of its own, so that the
   /// centre silhouette (wedges, counting) and averaged samples never evict each other.
   std::pair<vtkLight*, int> VolumeKey(std::size_t k) const;
@@ -158,6 +160,11 @@ public:
   /// Whether the pass counts the centre's volume into the layer in colour (+-1 per crossing)
   /// instead of each sample's in the stencil.
   virtual bool CountsCentreInColour() const { return false; }
+  /// Whether the light's opaque casters' volumes are counted in colour, with additive blending
+  /// into a float target, rather than in the stencil. Colour weights each side by its
+  /// multiplicity and so draws it once (penumbra::ShadowVolume), where the stencil draws it
+  /// |m| times: the general counting rule gives an open mesh's silhouette edges m = 2.
+  virtual bool CountsInColour(const ShadowLight&) const { return this->CountsCentreInColour(); }
   /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
   virtual bool ReadsDepthCopy() const { return true; }
   /// Whether translucent casters shadow by their opacity (otherwise they are left out).

@@ -33,6 +33,33 @@ PixelRect VolumeScissor(
     frame.Size[0], frame.Size[1]);
 }
 
+/**
+ * Draws a volume's sides or dark cap, which start at index `offset` of the bound index buffer
+ * and hold `count` indices. The stencil adds 1 a crossing, so it draws every copy; counting in
+ * colour draws each run of first copies once, its crossings weighted by their multiplicity.
+ * Returns the triangles drawn.
+ */
+std::size_t DrawCounted(vtkShaderProgram* program, float frontFaceValue, bool countInColour,
+  const std::vector<TriangleRun>& runs, std::size_t offset, std::size_t count)
+{
+  if (!countInColour)
+  {
+    program->SetUniformf("frontFaceValue", frontFaceValue);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>(offset * sizeof(std::uint32_t)));
+    return count / 3;
+  }
+  std::size_t drawn = 0;
+  for (const TriangleRun& run : runs)
+  {
+    program->SetUniformf("frontFaceValue", frontFaceValue * static_cast<float>(run.Multiplicity));
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(run.Count), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>((offset + run.First) * sizeof(std::uint32_t)));
+    drawn += run.Count;
+  }
+  return drawn / 3;
+}
+
 } // namespace
 
 vtkIdType ShadowVolumeRenderer::UpdateOpaque(const ShadowLight& light, CasterCache& caster)
@@ -82,7 +109,7 @@ void ShadowVolumeRenderer::DrawOpaqueSample(
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
   ScopedDrawState saved(ostate);
-  const bool countInColour = light.CountsCentreInColour();
+  const bool countInColour = light.CountsVolumesInColour();
   ostate->vtkglStencilMask(0xFF);
   ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
   ostate->vtkglDisable(GL_DEPTH_CLAMP); // z-fail turns it on for itself
@@ -217,11 +244,12 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
-    program->SetUniformf("frontFaceValue", -weight); // entering a volume takes the light away
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides), GL_UNSIGNED_INT, nullptr);
-    this->Triangles += static_cast<vtkIdType>(sides / 3);
+    // Entering a volume takes the light away.
+    this->Triangles += static_cast<vtkIdType>(
+      DrawCounted(program, -weight, countInColour, volume.Volume.SideRuns, 0, sides));
     if (plan.LightCap)
     {
+      program->SetUniformf("frontFaceValue", -weight);
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
       this->Triangles += static_cast<vtkIdType>(lightCap / 3);
     }
@@ -233,12 +261,15 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
     ostate->vtkglDepthFunc(countInColour ? GL_GEQUAL : GL_LESS);
-    program->SetUniformf("frontFaceValue", weight); // leaving it behind the point does
     const glm::vec4 toInfinity(0.0f);
     program->SetUniform4f("endPlaneMC", glm::value_ptr(toInfinity));
     vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sides + darkCap), GL_UNSIGNED_INT, nullptr);
+    // Leaving a volume behind the point takes the light away.
+    this->Triangles += static_cast<vtkIdType>(
+      DrawCounted(program, weight, countInColour, volume.Volume.SideRuns, 0, sides) +
+      DrawCounted(program, weight, countInColour, volume.Volume.DarkCapRuns, sides, darkCap));
+    program->SetUniformf("frontFaceValue", weight);
     // The light cap lies on the caster's own surface: pushed away from the eye, a visible point
     // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
     // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
@@ -248,7 +279,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     program->SetUniformf("capDepthBias", caster.SeenThrough ? 0.0f : CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
     program->SetUniformf("capDepthBias", 0.0f);
-    this->Triangles += static_cast<vtkIdType>((sides + darkCap + lightCap) / 3);
+    this->Triangles += static_cast<vtkIdType>(lightCap / 3);
     ++this->ZFailVolumes;
   }
   volume.Indices->Release();
