@@ -12,8 +12,20 @@
 namespace penumbra
 {
 
+bool HardShadowTechnique::CountsInColour(const ShadowLight& light) const
+{
+  // Averaged samples each need their own count before the share is taken (a count of 2 must
+  // not take two shares), and translucent casters multiply where the count is 0: both keep the
+  // stencil.
+  return light.Samples.size() == 1 && !light.ShadowedByTranslucentCasters;
+}
+
 void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k)
 {
+  if (this->CountsInColour(light))
+  {
+    return;
+  }
   vtkOpenGLState* ostate = frame.Window->GetState();
   ScopedDrawState saved(ostate);
   const float share = 1.0f / static_cast<float>(light.Samples.size());
