@@ -173,6 +173,16 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
   return volume;
 }
 
+std::size_t ShadowVolume::RepeatedSideIndices() const
+{
+  std::size_t firstCopies = 0;
+  for (const TriangleRun& run : this->SideRuns)
+  {
+    firstCopies += run.Count;
+  }
+  return this->Sides.size() - firstCopies;
+}
+
 bool ShadowVolume::SilhouetteIsBalanced(std::size_t pointCount) const
 {
   std::vector<long long> degree(pointCount, 0);

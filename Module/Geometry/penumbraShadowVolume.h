@@ -92,6 +92,9 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
   static double LightSide(
     const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec4& light);
 
+  /// The side indices beyond the first copies (SideRuns): what a weighted count spares.
+  std::size_t RepeatedSideIndices() const;
+
   /// True when every vertex has as many silhouette edges leaving as entering (closed loops).
   bool SilhouetteIsBalanced(std::size_t pointCount) const;
 };

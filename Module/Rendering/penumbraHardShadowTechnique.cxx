@@ -7,6 +7,7 @@
 #include "vtk_glew.h"
 
 #include "penumbraResolveVS.h"
+#include "penumbraSampleCountResolveFS.h"
 #include "penumbraTransmissionResolveFS.h"
 
 namespace penumbra
@@ -14,21 +15,65 @@ namespace penumbra
 
 bool HardShadowTechnique::CountsInColour(const ShadowLight& light) const
 {
-  // Averaged samples each need their own count before the share is taken (a count of 2 must
-  // not take two shares), and translucent casters multiply where the count is 0: both keep the
-  // stencil.
-  return light.Samples.size() == 1 && !light.ShadowedByTranslucentCasters;
+  // Translucent casters multiply where the opaque count is 0: that test keeps the stencil.
+  return !light.ShadowedByTranslucentCasters &&
+    (light.Samples.size() == 1 || this->AveragedInColour.count(light.Light));
+}
+
+void HardShadowTechnique::PrepareLight(
+  const ShadowLight& light, const std::vector<CasterCache*>& casters)
+{
+  std::size_t sides = 0, repeated = 0;
+  for (CasterCache* caster : casters)
+  {
+    if (!caster->Translucent() && !caster->Culled.count(light.Light))
+    {
+      const ShadowVolume& volume = caster->Volumes[light.VolumeKey(0)].Volume;
+      sides += volume.Sides.size();
+      repeated += volume.RepeatedSideIndices();
+    }
+  }
+  if (sides > 0 &&
+    static_cast<double>(repeated) >= AveragedColourShare * static_cast<double>(sides))
+  {
+    this->AveragedInColour.insert(light.Light);
+  }
+  else
+  {
+    this->AveragedInColour.erase(light.Light);
+  }
+}
+
+void HardShadowTechnique::AttachSampleCount(ShadowFrame& frame)
+{
+  frame.AttachClearedFloatTarget(this->SampleCount);
+}
+
+void HardShadowTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& light)
+{
+  if (this->CountsInColour(light) && light.Samples.size() > 1)
+  {
+    this->AttachSampleCount(frame);
+  }
 }
 
 void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k)
 {
+  const float share = 1.0f / static_cast<float>(light.Samples.size());
   if (this->CountsInColour(light))
   {
+    if (light.Samples.size() > 1)
+    {
+      this->ResolveSampleCount(frame, light, share);
+      if (k + 1 < light.Samples.size())
+      {
+        this->AttachSampleCount(frame);
+      }
+    }
     return;
   }
   vtkOpenGLState* ostate = frame.Window->GetState();
   ScopedDrawState saved(ostate);
-  const float share = 1.0f / static_cast<float>(light.Samples.size());
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xFF);
@@ -62,13 +107,38 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   this->LogTransmission->Deactivate();
 }
 
+void HardShadowTechnique::ResolveSampleCount(
+  ShadowFrame& frame, const ShadowLight& light, float share)
+{
+  frame.AttachColour(frame.Layers(), light.Layer);
+  vtkShaderProgram* program = frame.Programs->Ready(frame.Window, penumbraResolveVS,
+    penumbraSampleCountResolveFS, "sample count resolve", "averaged shadows are not written");
+  if (!program)
+  {
+    return;
+  }
+  // At every geometry pixel (the far-plane triangle passes GL_GREATER exactly there).
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ScopedDrawState saved(ostate);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  this->SampleCount->Activate();
+  program->SetUniformi("sampleCount", this->SampleCount->GetTextureUnit());
+  program->SetUniformf("sampleShare", share);
+  frame.FullScreen->Draw(program, this->SampleCountVAO);
+  this->SampleCount->Deactivate();
+}
+
 std::size_t HardShadowTechnique::GraphicsMemoryBytes() const
 {
-  return TextureBytes(this->LogTransmission);
+  return TextureBytes(this->SampleCount) + TextureBytes(this->LogTransmission);
 }
 
 void HardShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->SampleCount->ReleaseGraphicsResources(window);
+  this->SampleCountVAO.ReleaseGraphicsResources();
   this->LogTransmission->ReleaseGraphicsResources(window);
   this->TransmissionVAO.ReleaseGraphicsResources();
 }
