@@ -12,6 +12,20 @@
 
 namespace penumbra
 {
+namespace
+{
+/// Draws a resolve over the viewport that reads `texture` through `sampler` and takes one
+/// sample's `share` of the light.
+void DrawSampleResolve(ShadowFrame& frame, vtkShaderProgram* program, vtkTextureObject* texture,
+  const char* sampler, float share, FullScreenTriangle::VAO& vao)
+{
+  texture->Activate();
+  program->SetUniformi(sampler, texture->GetTextureUnit());
+  program->SetUniformf("sampleShare", share);
+  frame.FullScreen->Draw(program, vao);
+  texture->Deactivate();
+}
+} // namespace
 
 bool HardShadowTechnique::CountsInColour(const ShadowLight& light) const
 {
@@ -100,11 +114,8 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilFunc(GL_EQUAL, 0, 0xFF);
   ostate->vtkglEnable(GL_BLEND);
-  this->LogTransmission->Activate();
-  program->SetUniformi("logTransmission", this->LogTransmission->GetTextureUnit());
-  program->SetUniformf("sampleShare", share);
-  frame.FullScreen->Draw(program, this->TransmissionVAO);
-  this->LogTransmission->Deactivate();
+  DrawSampleResolve(
+    frame, program, this->LogTransmission, "logTransmission", share, this->TransmissionVAO);
 }
 
 void HardShadowTechnique::ResolveSampleCount(
@@ -123,11 +134,7 @@ void HardShadowTechnique::ResolveSampleCount(
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglDepthFunc(GL_GREATER);
-  this->SampleCount->Activate();
-  program->SetUniformi("sampleCount", this->SampleCount->GetTextureUnit());
-  program->SetUniformf("sampleShare", share);
-  frame.FullScreen->Draw(program, this->SampleCountVAO);
-  this->SampleCount->Deactivate();
+  DrawSampleResolve(frame, program, this->SampleCount, "sampleCount", share, this->SampleCountVAO);
 }
 
 std::size_t HardShadowTechnique::GraphicsMemoryBytes() const
