@@ -254,9 +254,9 @@ public:
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
   /// and stencil, depth copy, one light-intensity layer per light, for soft shadow volumes the
-  /// centre count and one byte per pixel and light sample, and the translucent casters'
-  /// transmission targets once one was drawn) and the casters' vertex, index and wedge
-  /// buffers.
+  /// centre count and one byte per pixel and light sample, the averaged samples' count target
+  /// once open casters were averaged, and the translucent casters' transmission targets once
+  /// one was drawn) and the casters' vertex, index and wedge buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
   /// The stages of a frame, for GetStageCPUMilliseconds and GetStageGPUMilliseconds.
