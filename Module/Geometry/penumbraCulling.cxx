@@ -181,7 +181,10 @@ glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin, const glm::dvec3& casterM
   {
     const glm::dvec3 away = centre - glm::dvec3(light);
     const double distance = glm::length(away);
-    const double radius = 0.5 * glm::length(casterMax - casterMin);
+    // The farthest corner from the centre as computed, not half the diagonal: where the box is
+    // a few units in the last place wide (coordinates of 1e18), the centre rounds onto a face
+    // and half the diagonal would leave the far corners outside the sphere.
+    const double radius = glm::length(glm::max(casterMax - centre, centre - casterMin));
     if (!(distance > radius) || !std::isfinite(distance))
     {
       return glm::dvec4(0.0);
