@@ -27,11 +27,8 @@ void AppendTriangle(
   out.push_back(c);
 }
 
-/// Appends, through `append`, the triangles of every silhouette edge: first one copy of each,
-/// in runs of equal multiplicity (recorded in `runs`), then the further copies.
-template <typename AppendEdge>
-void AppendByMultiplicity(const std::vector<SilhouetteEdge>& silhouette,
-  std::vector<std::uint32_t>& out, std::vector<TriangleRun>& runs, AppendEdge append)
+/// The silhouette's edges in ascending multiplicity, in their order within each multiplicity.
+std::vector<std::uint32_t> MultiplicityOrder(const std::vector<SilhouetteEdge>& silhouette)
 {
   std::vector<std::uint32_t> order(silhouette.size());
   std::iota(order.begin(), order.end(), 0u);
@@ -41,6 +38,17 @@ void AppendByMultiplicity(const std::vector<SilhouetteEdge>& silhouette,
   {
     std::stable_sort(order.begin(), order.end(), byMultiplicity);
   }
+  return order;
+}
+
+/// Appends, through `append`, the triangles of every silhouette edge: first one copy of each,
+/// in `order` (MultiplicityOrder), in runs of equal multiplicity recorded in `runs`, then the
+/// further copies.
+template <typename AppendEdge>
+void AppendByMultiplicity(const std::vector<SilhouetteEdge>& silhouette,
+  const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& out,
+  std::vector<TriangleRun>& runs, AppendEdge append)
+{
   for (std::uint32_t i : order)
   {
     const SilhouetteEdge& e = silhouette[i];
@@ -59,6 +67,24 @@ void AppendByMultiplicity(const std::vector<SilhouetteEdge>& silhouette,
       append(e, out);
     }
   }
+}
+
+/// RunsCoverEveryCopy for one list.
+bool RunsCover(const std::vector<TriangleRun>& runs, std::size_t size)
+{
+  std::size_t next = 0, copies = 0;
+  std::uint32_t previous = 0;
+  for (const TriangleRun& run : runs)
+  {
+    if (run.First != next || run.Count % 3 != 0 || run.Multiplicity <= previous)
+    {
+      return false;
+    }
+    next = run.First + run.Count;
+    previous = run.Multiplicity;
+    copies += run.Count * run.Multiplicity;
+  }
+  return copies == size;
 }
 
 } // namespace
@@ -137,7 +163,8 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
   // (b, a, a_inf, b_inf). Towards a directional light every point sweeps to the same point at
   // infinity, so there is no dark cap and the quad's second triangle has no area there; it is
   // kept for z-pass volumes that stop on a plane short of infinity (VolumeEndPlane).
-  AppendByMultiplicity(volume.Silhouette, volume.Sides, volume.SideRuns,
+  const std::vector<std::uint32_t> order = MultiplicityOrder(volume.Silhouette);
+  AppendByMultiplicity(volume.Silhouette, order, volume.Sides, volume.SideRuns,
     [n](const SilhouetteEdge& e, std::vector<std::uint32_t>& out)
     {
       AppendTriangle(out, e.To, e.From, e.From + n);
@@ -151,7 +178,7 @@ ShadowVolume ShadowVolume::Build(const CasterTopology& topo, const glm::dvec4& l
     {
       const std::uint32_t centre =
         volume.Silhouette.empty() ? 0 : volume.Silhouette.front().From + n;
-      AppendByMultiplicity(volume.Silhouette, volume.DarkCap, volume.DarkCapRuns,
+      AppendByMultiplicity(volume.Silhouette, order, volume.DarkCap, volume.DarkCapRuns,
         [n, centre](const SilhouetteEdge& e, std::vector<std::uint32_t>& out)
         {
           if (e.From + n != centre && e.To + n != centre) // else a degenerate fan triangle
@@ -181,6 +208,12 @@ std::size_t ShadowVolume::RepeatedSideIndices() const
     firstCopies += run.Count;
   }
   return this->Sides.size() - firstCopies;
+}
+
+bool ShadowVolume::RunsCoverEveryCopy() const
+{
+  return RunsCover(this->SideRuns, this->Sides.size()) &&
+    RunsCover(this->DarkCapRuns, this->DarkCap.size());
 }
 
 bool ShadowVolume::SilhouetteIsBalanced(std::size_t pointCount) const

@@ -95,6 +95,10 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ShadowVolume
   /// The side indices beyond the first copies (SideRuns): what a weighted count spares.
   std::size_t RepeatedSideIndices() const;
 
+  /// True when SideRuns and DarkCapRuns lead their lists in ascending multiplicity and, times
+  /// their multiplicity, account for every copy in them.
+  bool RunsCoverEveryCopy() const;
+
   /// True when every vertex has as many silhouette edges leaving as entering (closed loops).
   bool SilhouetteIsBalanced(std::size_t pointCount) const;
 };

@@ -40,11 +40,15 @@ void HardShadowTechnique::PrepareLight(
   std::size_t sides = 0, repeated = 0;
   for (CasterCache* caster : casters)
   {
-    if (!caster->Translucent() && !caster->Culled.count(light.Light))
+    if (caster->Translucent() || caster->Culled.count(light.Light))
     {
-      const ShadowVolume& volume = caster->Volumes[light.VolumeKey(0)].Volume;
-      sides += volume.Sides.size();
-      repeated += volume.RepeatedSideIndices();
+      continue;
+    }
+    const auto cached = caster->Volumes.find(light.VolumeKey(0));
+    if (cached != caster->Volumes.end())
+    {
+      sides += cached->second.Volume.Sides.size();
+      repeated += cached->second.Volume.RepeatedSideIndices();
     }
   }
   if (sides > 0 &&

@@ -10,8 +10,8 @@
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
-
 #include "vtkTextureObject.h" // for vtkNew<vtkTextureObject>
+
 #include <set>
 
 namespace penumbra

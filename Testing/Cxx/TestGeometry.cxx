@@ -193,27 +193,6 @@ bool AnyOccluder(
   return false;
 }
 
-/// The multiplicity runs of a volume's sides and dark cap: ascending, within the list, and with
-/// every further copy after them, so that runs times multiplicity account for the whole list.
-void CheckRuns(const std::string& name, const ShadowVolume& volume)
-{
-  for (const CountedList& list : VolumeLists(volume, true))
-  {
-    std::size_t next = 0, copies = 0;
-    std::uint32_t previous = 0;
-    bool ordered = true;
-    for (const TriangleRun& run : list.Runs)
-    {
-      ordered = ordered && run.First == next && run.Count % 3 == 0 && run.Multiplicity > previous;
-      next = run.First + run.Count;
-      previous = run.Multiplicity;
-      copies += run.Count * run.Multiplicity;
-    }
-    Check(ordered && copies == list.Indices->size(),
-      name + ": multiplicity runs lead the list and account for every copy");
-  }
-}
-
 /// Compares winding and occluder counts at random points around the caster, and the winding
 /// counted over the multiplicity runs with the one over every copy.
 void CheckVolume(const std::string& name, const CasterTopology& topo, const glm::dvec4& light,
@@ -222,7 +201,8 @@ void CheckVolume(const std::string& name, const CasterTopology& topo, const glm:
 {
   const ShadowVolume volume = ShadowVolume::Build(topo, light, false, true, rule);
   Check(volume.SilhouetteIsBalanced(topo.Points.size()), name + ": silhouette balanced");
-  CheckRuns(name, volume);
+  Check(volume.RunsCoverEveryCopy(),
+    name + ": multiplicity runs lead the lists and account for every copy");
   const glm::dvec3 lo = topo.BoundsMin, hi = topo.BoundsMax;
   const glm::dvec3 size = hi - lo + glm::dvec3(1e-3);
   std::uniform_real_distribution<double> unit(-0.5, 1.5);

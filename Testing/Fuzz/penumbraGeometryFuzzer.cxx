@@ -322,21 +322,6 @@ void CheckIndices(
   }
 }
 
-/// A list's multiplicity runs lead it, ascending, and times their multiplicity cover all of it.
-void CheckRuns(const std::vector<TriangleRun>& runs, std::size_t size, const char* what)
-{
-  std::size_t next = 0, copies = 0;
-  std::uint32_t previous = 0;
-  for (const TriangleRun& run : runs)
-  {
-    Require(run.First == next && run.Count % 3 == 0 && run.Multiplicity > previous, what);
-    next = run.First + run.Count;
-    previous = run.Multiplicity;
-    copies += run.Count * run.Multiplicity;
-  }
-  Require(copies == size, what);
-}
-
 void CheckVolume(
   const CasterTopology& topo, const ShadowVolume& volume, const glm::dvec4& light, bool withCaps)
 {
@@ -352,8 +337,7 @@ void CheckVolume(
     sideTriangles += 2 * e.Multiplicity;
   }
   Require(volume.Sides.size() == 3 * sideTriangles, "sides: one quad per edge use");
-  CheckRuns(volume.SideRuns, volume.Sides.size(), "side runs account for every copy");
-  CheckRuns(volume.DarkCapRuns, volume.DarkCap.size(), "dark cap runs account for every copy");
+  Require(volume.RunsCoverEveryCopy(), "multiplicity runs account for every copy");
   Require(volume.CastingTriangles <= topo.Triangles.size(), "casting triangles counted once");
   if (withCaps)
   {
