@@ -80,13 +80,15 @@ void HardShadowTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight& l
   const float share = 1.0f / static_cast<float>(light.Samples.size());
   if (this->CountsInColour(light))
   {
-    if (light.Samples.size() > 1)
+    if (light.Samples.size() == 1)
     {
-      this->ResolveSampleCount(frame, light, share);
-      if (k + 1 < light.Samples.size())
-      {
-        this->AttachSampleCount(frame);
-      }
+      frame.LightBackground(); // the count went straight into the layer
+      return;
+    }
+    this->ResolveSampleCount(frame, light, share);
+    if (k + 1 < light.Samples.size())
+    {
+      this->AttachSampleCount(frame);
     }
     return;
   }

@@ -22,7 +22,8 @@ namespace penumbra
 /// Opaque casters count in colour, with additive blending, so that each side of a volume is
 /// filled once, weighted by its multiplicity (penumbra::ShadowVolume). One sample counts
 /// straight into the light's layer, which then holds 1 - count and is clamped to [0, 1] wherever
-/// it is read (a count cannot be negative), so no resolve is drawn. Averaged samples count in
+/// it is read (a count cannot be negative); its resolve only puts the background back to 1, where
+/// volumes crossed it (ShadowFrame::LightBackground). Averaged samples count in
 /// colour where repeated sides make up at least AveragedColourShare of the light's sides (open
 /// meshes), each into a count target cleared for it, from which a resolve takes the sample's
 /// 1/N of the light where the count is not 0; elsewhere the clears and texture reads would cost
@@ -48,9 +49,9 @@ public:
   /// Attaches a cleared count target when several samples count in colour.
   void BeginVolumes(ShadowFrame& frame, const ShadowLight& light) override;
   /// Every geometry pixel with a non-zero count is in sample k's shadow: 1/N of the light goes
-  /// (one sample counted in colour has written its layer already). Where the stencil count is 0,
-  /// 1/N of the light times one minus the transmission of the translucent casters' volumes of
-  /// sample k, drawn then, goes.
+  /// (one sample counted in colour has written its layer already, but for the background). Where
+  /// the stencil count is 0, 1/N of the light times one minus the transmission of the translucent
+  /// casters' volumes of sample k, drawn then, goes.
   void ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k) override;
   /// The count target, once several samples counted in colour, and the log-transmission target,
   /// once a translucent caster was drawn: 4 bytes per pixel each.

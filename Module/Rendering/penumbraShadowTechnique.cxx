@@ -97,6 +97,15 @@ void ShadowFrame::DrawResolve(float lightIntensity)
   this->FullScreen->Draw(program, *this->ResolveVAO);
 }
 
+void ShadowFrame::LightBackground()
+{
+  vtkOpenGLState* ostate = this->Window->GetState();
+  ScopedDrawState saved(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  this->DrawResolve(1.0f);
+}
+
 void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& caster,
   WedgeBuffer& buffer, const std::vector<VertexAttribute>& attributes, const ShadowLight& light)
 {

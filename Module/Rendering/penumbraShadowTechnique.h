@@ -145,6 +145,9 @@ struct ShadowFrame
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.
   void DrawResolve(float lightIntensity);
+  /// Writes 1 into the bound layer where no surface is (the depth buffer at the far plane):
+  /// volumes counted straight into the layer also cross the background, which must stay lit.
+  void LightBackground();
   /// Draws one caster's wedge buffer (either kind), if it has any, with the program bound: front
   /// or back faces as the eye and near plane allow, in wedge coordinates. It sets the culled face
   /// and the depth function: its callers hold a ScopedDrawState, not it, as it runs per caster.

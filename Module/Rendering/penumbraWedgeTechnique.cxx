@@ -27,11 +27,7 @@ vtkIdType WedgeTechnique::UpdateCaster(
 
 void WedgeTechnique::ResolveSample(ShadowFrame& frame, const ShadowLight&, std::size_t)
 {
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  ScopedDrawState saved(ostate);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
-  frame.DrawResolve(1.0f);
+  frame.LightBackground();
 }
 
 void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)

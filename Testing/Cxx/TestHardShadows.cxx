@@ -1,7 +1,7 @@
 // Hard shadows of vtkSoftShadowPass against an independent ray tracer (vtkRayTracedVisibility,
 // Embree): the classic scene, the camera inside a shadow, z-fail for visible casters, open,
-// non-manifold and non-orientable meshes, a light inside a closed caster. Tolerance: see
-// penumbraTestHarness.h.
+// non-manifold and non-orientable meshes, a light inside a closed caster, a shadow running off
+// the ground over the background. Tolerance: see penumbraTestHarness.h.
 #include "penumbraTestHarness.h"
 
 #include "vtkNew.h"
@@ -122,6 +122,32 @@ void TestLightInsideClosedCaster()
   CheckAgainstTruth("light inside a closed caster", c, 0.9);
 }
 
+void TestBackgroundStaysLit()
+{
+  // A small ground under a sphere lit from low at the side: the sphere's volume runs off the
+  // ground across the background, where the visibility image must read 1 (hard shadows add
+  // their count straight into the light's layer).
+  Scene scene;
+  scene.Ground(1.5);
+  scene.Sphere(0, 1, 0, 0.6);
+  scene.Light->SetPosition(-6, 2.5, 1);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  CheckAgainstTruth("a shadow running off the ground", scene.Render());
+  const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
+  const std::vector<float> depth = WindowDepth(scene.Window, scene.Renderer);
+  std::size_t background = 0, dark = 0;
+  for (std::size_t p = 0; p < depth.size() && p < visibility.size(); ++p)
+  {
+    if (depth[p] >= 1.0f)
+    {
+      ++background;
+      dark += visibility[p] != 1.0f ? 1 : 0;
+    }
+  }
+  std::printf("    background pixels: %zu, not 1 in the visibility image: %zu\n", background, dark);
+  Check(background > 0 && dark == 0, "the background stays lit in the visibility image");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -132,6 +158,7 @@ int main(int argc, char* argv[])
     { "VisibleCastersOnZFail", TestVisibleCastersOnZFail },
     { "AwkwardMeshes", TestAwkwardMeshes },
     { "LightInsideClosedCaster", TestLightInsideClosedCaster },
+    { "BackgroundStaysLit", TestBackgroundStaysLit },
   };
   return RunFeatures(argc, argv, features);
 }
