@@ -99,35 +99,49 @@ std::vector<std::uint32_t> WeldPoints(
   return map;
 }
 
-/// Appends the triangles of one polygon, ear-cut when it has more than three corners.
-void TriangulatePolygon(vtkPolyData* input, vtkIdType npts, const vtkIdType* ids,
+/// Whether the corners at `local` positions t, t + 1, t + 2 form a triangle of the fan from
+/// corner 0 (0, k, k + 1), the triangles VTK's mapper draws a polygon as.
+bool IsFanTriangle(vtkIdList* local, vtkIdType t)
+{
+  vtkIdType corners[3] = { local->GetId(t), local->GetId(t + 1), local->GetId(t + 2) };
+  std::sort(corners, corners + 3);
+  return corners[0] == 0 && corners[2] == corners[1] + 1;
+}
+
+/// Appends the triangles of one polygon, ear-cut when it has more than three corners. Returns
+/// whether they are the fan VTK draws it as (a convex polygon's, often): only then is the
+/// depth of the cut the depth VTK draws.
+bool TriangulatePolygon(vtkPolyData* input, vtkIdType npts, const vtkIdType* ids,
   vtkPolygon* polygon, vtkIdList* local, std::vector<glm::uvec3>& triangles)
 {
   if (npts < 3)
   {
-    return;
+    return true;
   }
   if (npts == 3)
   {
     triangles.emplace_back(ids[0], ids[1], ids[2]);
-    return;
+    return true;
   }
   polygon->Initialize(static_cast<int>(npts), ids, input->GetPoints());
   local->Reset();
   if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
   {
+    bool fan = true;
     for (vtkIdType t = 0; t + 2 < local->GetNumberOfIds(); t += 3)
     {
       triangles.emplace_back(
         ids[local->GetId(t)], ids[local->GetId(t + 1)], ids[local->GetId(t + 2)]);
+      fan = fan && IsFanTriangle(local, t);
     }
-    return;
+    return fan;
   }
   // Ear cutting gives up on degenerate polygons: a fan still covers what they cover.
   for (vtkIdType k = 1; k + 1 < npts; ++k)
   {
     triangles.emplace_back(ids[0], ids[k], ids[k + 1]);
   }
+  return true;
 }
 
 void AppendStrip(vtkIdType npts, const vtkIdType* ids, std::vector<glm::uvec3>& triangles)
@@ -693,7 +707,10 @@ void TriangulateCells(
       cells->GetCurrentCell(npts, ids);
       if (validIds(npts, ids))
       {
-        TriangulatePolygon(input, npts, ids, polygon, local, triangles);
+        if (!TriangulatePolygon(input, npts, ids, polygon, local, triangles))
+        {
+          ++report.PolygonsCutUnlikeVTK;
+        }
       }
     }
   }

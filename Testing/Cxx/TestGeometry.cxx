@@ -467,6 +467,41 @@ void TestDegenerateInput()
   Check(none.Sides.empty() && none.LightCap.empty(), "empty caster casts nothing");
 }
 
+/// The triangles of one arrowhead quad whose reflex corner is `reflex` (0 to 3).
+CasterTopology ArrowheadQuad(vtkIdType reflex)
+{
+  // Counter-clockwise (0, 0), (2, 1), (0, 2), then the reflex corner (0.5, 1): only the diagonal
+  // from the reflex corner stays inside.
+  const double corners[4][3] = { { 0, 0, 0 }, { 2, 1, 0 }, { 0, 2, 0 }, { 0.5, 1, 0 } };
+  vtkNew<vtkPoints> pts;
+  vtkIdType ids[4];
+  for (vtkIdType k = 0; k < 4; ++k)
+  {
+    ids[k] = pts->InsertNextPoint(corners[(k + 7 - reflex) % 4]);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(pts);
+  data->SetPolys(polys);
+  return CasterTopology::Build(data);
+}
+
+void TestPolygonsCutAsVTKDraws()
+{
+  // VTK's mapper draws a polygon as the fan from its first corner; the pass takes a caster's
+  // depth from its mesh only where the ear cut gave those same triangles.
+  const CasterTopology fan = ArrowheadQuad(0);
+  Check(fan.Triangles.size() == 2 && fan.Report.PolygonsCutUnlikeVTK == 0,
+    "a polygon whose only inside diagonal starts at its first corner is cut as VTK's fan");
+  const CasterTopology other = ArrowheadQuad(1);
+  Check(other.Triangles.size() == 2 && other.Report.PolygonsCutUnlikeVTK == 1,
+    "a polygon cut along another diagonal than the fan's is counted");
+  Check(other.Report.Describe().empty(), "a cut unlike VTK's is not a mesh problem");
+  vtkNew<vtkSphereSource> triangles;
+  Check(FromSource(triangles).Report.PolygonsCutUnlikeVTK == 0, "triangles are VTK's own");
+}
+
 /// Whether two builds gave the same topology, field by field.
 bool SameTopology(const CasterTopology& a, const CasterTopology& b)
 {
@@ -734,6 +769,7 @@ int main()
   TestNonOrientable(rng);
   TestMirrored(rng);
   TestDegenerateInput();
+  TestPolygonsCutAsVTKDraws();
   TestBuilderReuse();
   FuzzRandomMeshes(rng);
   TestVolumeEndPlane(rng);
