@@ -154,7 +154,9 @@ void Usage(const char* program)
     "                        plateaus, planar_filter_16, planar_filter_64 (default all of\n"
     "                        these);\n"
     "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
-    "                        shadow maps without the benchmark's square-bake fix\n"
+    "                        shadow maps without the benchmark's square-bake fix;\n"
+    "                        hard_volumes_vtkdepth, averaged_16_vtkdepth: with VTK drawing\n"
+    "                        every prop's depth (DepthFromCasterMeshes off)\n"
     "  --radii r1,r2,...     light radii in world units (default 0.2,1); the scenes are ~10\n"
     "                        units across, the light ~12 units from their centre\n"
     "  --truth-samples N     shadow rays per pixel of the ray-traced truth (default 256)\n"
@@ -689,6 +691,22 @@ std::vector<MethodSpec> AllMethods()
   {
     methods.push_back({ "shadowmap_" + std::to_string(resolution) + "_vtkaspect",
       [resolution]() { return MakeShadowMap(resolution, false); }, false });
+  }
+  // Hard and averaged shadows with VTK drawing every prop's depth (DepthFromCasterMeshes off),
+  // the pass's depth before 2026-12-04 (only with --methods).
+  for (int samples : { 1, 16 })
+  {
+    methods.push_back({ samples == 1 ? "hard_volumes_vtkdepth" : "averaged_16_vtkdepth",
+      [samples]()
+      {
+        MethodInstance instance =
+          MakeSoftShadow(samples == 1 ? vtkSoftShadowPass::METHOD_HARD_VOLUMES
+                                      : vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS,
+            samples);
+        vtkSoftShadowPass::SafeDownCast(instance.Pass)->DepthFromCasterMeshesOff();
+        return instance;
+      },
+      false });
   }
   // Penumbra wedges: the hard shadow of the light's centre plus one wedge per silhouette edge.
   methods.push_back(

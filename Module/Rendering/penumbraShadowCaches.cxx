@@ -52,6 +52,7 @@ bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vt
   this->BuiltAt = data->GetMTime();
   ++this->Generation;
   this->Uploaded = false;
+  this->TrianglesUploaded = false;
 
   vtkSmartPointer<vtkPolyData> surface = SurfaceOf(data);
   if (this->Generation > 1 && !this->Builder)
@@ -122,10 +123,25 @@ void MeshCache::Bind(vtkShaderProgram* program)
   BindVertexArray(this->VAO, program, this->VAOProgram, this->Vertices, { { "vertexMC", 0, 4 } });
 }
 
+void MeshCache::BindTriangles()
+{
+  if (!this->TrianglesUploaded)
+  {
+    const std::vector<glm::uvec3>& triangles = this->Topology.Triangles;
+    static_assert(sizeof(glm::uvec3) == 3 * sizeof(std::uint32_t), "packed triangles");
+    this->TriangleIndices->Upload(reinterpret_cast<const std::uint32_t*>(triangles.data()),
+      3 * triangles.size(), vtkOpenGLBufferObject::ElementArrayBuffer);
+    this->TrianglesUploaded = true;
+  }
+  this->TriangleIndices->Bind();
+}
+
 void MeshCache::ReleaseGraphicsResources()
 {
   this->Vertices->ReleaseGraphicsResources();
   this->VAO->ReleaseGraphicsResources();
+  this->TriangleIndices->ReleaseGraphicsResources();
+  this->TrianglesUploaded = false;
   this->Uploaded = false;
   this->VAOProgram = nullptr;
 }
@@ -530,6 +546,10 @@ std::size_t ShadowCaches::GraphicsBufferBytes() const
   {
     // Two float4 copies of every point (see MeshCache::Bind).
     bytes += mesh.second->Uploaded ? mesh.second->Topology.Points.size() * 8 * sizeof(float) : 0;
+    // Three indices a triangle, for the depth drawn from the mesh.
+    bytes += mesh.second->TrianglesUploaded
+      ? mesh.second->Topology.Triangles.size() * 3 * sizeof(std::uint32_t)
+      : 0;
   }
   for (const auto& caster : this->Casters)
   {

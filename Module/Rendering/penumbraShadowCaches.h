@@ -54,6 +54,9 @@ struct MeshCache
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;
   bool Uploaded = false;
+  /// Every triangle, for its depth (penumbra::CasterDepth); uploaded on first use.
+  vtkNew<vtkOpenGLBufferObject> TriangleIndices;
+  bool TrianglesUploaded = false;
   bool Used = false;
   bool WarnedProblems = false; ///< a mesh problem was reported once for this data object
   bool WarnedEmpty = false;
@@ -66,6 +69,8 @@ struct MeshCache
   /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
   /// binds the VAO for `program`.
   void Bind(vtkShaderProgram* program);
+  /// Uploads the index buffer of every triangle if needed and binds it; after Bind.
+  void BindTriangles();
   void ReleaseGraphicsResources();
 };
 
@@ -128,6 +133,9 @@ struct WedgeBuffer : WedgeGeometry
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;
   bool Uploaded = false;
+  /// Every triangle, for its depth (penumbra::CasterDepth); uploaded on first use.
+  vtkNew<vtkOpenGLBufferObject> TriangleIndices;
+  bool TrianglesUploaded = false;
   bool Used = false;
 
   /// The light in wedge coordinates, as the wedge shaders want it.

@@ -1,5 +1,6 @@
 #include "vtkSoftShadowPass.h"
 
+#include "penumbraCasterDepth.h"
 #include "penumbraLightIntensityBuffer.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
@@ -181,6 +182,9 @@ public:
   penumbra::FullScreenTriangle::VAO ResolveVAO;
 
   vtkNew<vtkOpaquePass> DepthPass;
+  penumbra::CasterDepth CasterDepth;
+  /// The props whose depth RenderCasterDepth draws from their caster meshes this frame.
+  std::vector<vtkProp*> DepthFromMeshes;
   vtkNew<vtkLightsPass> LightsPass;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   std::vector<vtkSmartPointer<vtkImageData>> VisibilityImages;
@@ -265,6 +269,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightSamples: " << this->LightSamples << "\n";
   os << indent << "CollectStageTimes: " << this->CollectStageTimes << "\n";
   os << indent << "UseTightDepthRange: " << this->UseTightDepthRange << "\n";
+  os << indent << "DepthFromCasterMeshes: " << this->DepthFromCasterMeshes << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
   os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
@@ -283,6 +288,8 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfFullViewportWedges: " << this->NumberOfFullViewportWedges << "\n";
   os << indent << "NumberOfCulledShadows: " << this->NumberOfCulledShadows << "\n";
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
+  os << indent << "NumberOfPropsWithDepthFromMeshes: " << this->NumberOfPropsWithDepthFromMeshes
+     << "\n";
   os << indent << "GraphicsMemoryBytes: " << this->GraphicsMemoryBytes << "\n";
 }
 
@@ -410,6 +417,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfPlateauTriangles = 0;
   this->NumberOfCountedLights = 0;
   this->NumberOfAveragedLights = 0;
+  this->NumberOfPropsWithDepthFromMeshes = 0;
 
   using Stage = penumbra::StageTimes::Stage;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
@@ -464,6 +472,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     {
       penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
       this->UpdateCasters(s);
+    }
+    if (!internals.DepthFromMeshes.empty())
+    {
+      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+      internals.LI.GetLayers()->Activate();
+      this->RenderCasterDepth(s);
+      internals.LI.GetLayers()->Deactivate();
     }
     // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
     // plateaus without a receiver plane fall back to hard shadows.
@@ -692,30 +707,93 @@ void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
   internals.VisibilityImages.clear();
 }
 
+namespace
+{
+/// Binds the LI framebuffer for the depth pass: no colour output at all (the LI texture is
+/// bound for sampling while it draws), the viewport's size, depth test and writes on. The
+/// bindings and state are restored when it goes out of scope.
+class ScopedDepthDrawing
+{
+public:
+  ScopedDepthDrawing(
+    vtkOpenGLState* state, penumbra::LightIntensityBuffer& buffer, const int size[2])
+    : Bindings(state)
+    , Saved(state)
+  {
+    buffer.BindLayer(0);
+    state->vtkglDrawBuffer(GL_NONE);
+    state->vtkglViewport(0, 0, size[0], size[1]);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+  }
+  ScopedDepthDrawing(const ScopedDepthDrawing&) = delete;
+  ScopedDepthDrawing& operator=(const ScopedDepthDrawing&) = delete;
+
+private:
+  struct PushedBindings
+  {
+    explicit PushedBindings(vtkOpenGLState* state)
+      : State(state)
+    {
+      state->PushFramebufferBindings();
+    }
+    ~PushedBindings() { this->State->PopFramebufferBindings(); }
+    vtkOpenGLState* State;
+  };
+  PushedBindings Bindings;
+  penumbra::ScopedDrawState Saved; // stencil write mask and clear depth included
+};
+} // namespace
+
 void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = internals.Window->GetState();
-  ostate->PushFramebufferBindings();
-  internals.LI.BindLayer(0);
-  // No colour output at all: the LI texture is bound for sampling while this pass draws.
-  ostate->vtkglDrawBuffer(GL_NONE);
-
-  penumbra::ScopedDrawState saved(ostate); // stencil write mask and clear depth included
-  ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
-  ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthMask(GL_TRUE);
+  ScopedDepthDrawing drawing(ostate, internals.LI, internals.Size);
   ostate->vtkglStencilMask(0xFF);
   ostate->vtkglClearDepth(1.0);
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
+  internals.DepthFromMeshes.clear();
+  std::vector<vtkProp*> drawnByVTK;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    const bool fromMesh = this->DepthFromCasterMeshes && GetCastsShadows(prop) &&
+      penumbra::CasterDepth::DrawnAsItsTriangles(prop);
+    (fromMesh ? internals.DepthFromMeshes : drawnByVTK).push_back(prop);
+  }
+  this->RenderDepthWithVTK(s, drawnByVTK);
+}
+
+void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLState* ostate = internals.Window->GetState();
+  ScopedDepthDrawing drawing(ostate, internals.LI, internals.Size);
+  ostate->vtkglDepthFunc(GL_LEQUAL); // VTK's
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglDisable(GL_STENCIL_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  std::vector<vtkProp*> left =
+    internals.CasterDepth.Draw(internals.MakeFrame(), internals.DepthFromMeshes);
+  this->NumberOfPropsWithDepthFromMeshes =
+    static_cast<vtkIdType>(internals.DepthFromMeshes.size() - left.size());
+  this->RenderDepthWithVTK(s, left);
+}
+
+void vtkSoftShadowPass::RenderDepthWithVTK(const vtkRenderState* s, std::vector<vtkProp*>& props)
+{
+  if (props.empty())
+  {
+    return;
+  }
+  vtkInternals& internals = *this->Internals;
   vtkRenderState depthState(s->GetRenderer());
-  depthState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(internals.LI.GetFramebuffer());
   internals.DepthPass->Render(&depthState);
-
-  ostate->PopFramebufferBindings();
 }
 
 //------------------------------------------------------------------------------

@@ -52,6 +52,7 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkImageData;
 class vtkInformationDoubleKey;
@@ -304,6 +305,21 @@ public:
   vtkBooleanMacro(UseTightDepthRange, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether the pass draws the depth it counts shadows against from its casters' cached meshes,
+   * for the props VTK draws as nothing but their polydata's triangles (a plain actor with a
+   * polydata mapper, a surface with no edges, clipping planes or custom shaders; see
+   * penumbraCasterDepth.h): one position-only draw each instead of VTK's full shaders. The
+   * depth is the same; on by default. Off, VTK draws every prop's depth.
+   */
+  vtkSetMacro(DepthFromCasterMeshes, bool);
+  vtkGetMacro(DepthFromCasterMeshes, bool);
+  vtkBooleanMacro(DepthFromCasterMeshes, bool);
+  ///@}
+  /// Props whose depth the last frame drew from their caster meshes (DepthFromCasterMeshes).
+  vtkGetMacro(NumberOfPropsWithDepthFromMeshes, vtkIdType);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -333,6 +349,8 @@ protected:
   bool UseReceiverPlane = false;
   bool CollectStageTimes = false;
   bool UseTightDepthRange = true;
+  bool DepthFromCasterMeshes = true;
+  vtkIdType NumberOfPropsWithDepthFromMeshes = 0;
   vtkIdType NumberOfPlateauTriangles = 0;
   int NumberOfCountedLights = 0;
   int NumberOfAveragedLights = 0;
@@ -357,7 +375,12 @@ private:
   void AddReceiverKeys(const vtkRenderState* s);
   void RemoveReceiverKeys();
   void PrepareFramebuffer(vtkOpenGLRenderWindow* window);
+  /// Clears the depth and draws, through VTK, that of the props not left to RenderCasterDepth.
   void RenderDepth(const vtkRenderState* s);
+  /// After UpdateCasters: the depth of the props left to it, from their caster meshes.
+  void RenderCasterDepth(const vtkRenderState* s);
+  /// Draws `props`' depth through VTK's opaque pass into the LI framebuffer.
+  void RenderDepthWithVTK(const vtkRenderState* s, std::vector<vtkProp*>& props);
   void UpdateCasters(const vtkRenderState* s);
   void RenderLightIntensity(vtkOpenGLRenderWindow* window);
 

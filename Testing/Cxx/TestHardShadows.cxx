@@ -9,6 +9,11 @@
 #include "vtkParametricKlein.h"
 #include "vtkParametricMobius.h"
 #include "vtkPlaneSource.h"
+#include "vtkProperty.h"
+#include "vtkTransform.h"
+
+#include <algorithm>
+#include <cmath>
 
 using namespace penumbra_test;
 
@@ -148,6 +153,57 @@ void TestBackgroundStaysLit()
   Check(background > 0 && dark == 0, "the background stays lit in the visibility image");
 }
 
+/// Pixels where two visibility images differ by more than `by`.
+std::size_t PixelsDiffering(const std::vector<float>& a, const std::vector<float>& b, float by)
+{
+  std::size_t differing = std::max(a.size(), b.size()) - std::min(a.size(), b.size());
+  for (std::size_t p = 0; p < a.size() && p < b.size(); ++p)
+  {
+    differing += std::abs(a[p] - b[p]) > by ? 1 : 0;
+  }
+  return differing;
+}
+
+void TestDepthFromCasterMeshes()
+{
+  // Spheres (triangles, plain actors: their depth comes from their caster meshes), one placed by
+  // a position, orientation, scale and user matrix; the ground and a box (quads, which VTK's fan
+  // cuts along the other diagonal), a sphere with its edges shown and one that casts no shadow
+  // (VTK draws those four). The depth, and so the shadows, must be the same as VTK's.
+  Scene scene(320, 240);
+  scene.Ground();
+  scene.Sphere(-1.2, 0.9, 0.4, 0.6);
+  vtkActor* placed = scene.Sphere(0, 0, 0, 0.5, 24);
+  placed->SetPosition(0.4, 1.6, -0.6);
+  placed->SetOrientation(20, 35, 10);
+  placed->SetScale(1.4, 0.8, 1.0);
+  vtkNew<vtkTransform> user;
+  user->Translate(0.2, 0.0, 0.3);
+  user->RotateY(15);
+  placed->SetUserTransform(user);
+  scene.Box(1.4, 0.5, 0.6, 0.7, 1.0, 0.7);
+  scene.Sphere(-0.3, 0.4, 1.6, 0.4)->GetProperty()->EdgeVisibilityOn();
+  vtkSoftShadowPass::SetCastsShadows(scene.Sphere(1.0, 0.3, -1.4, 0.3), false);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+
+  CheckAgainstTruth("depth from the caster meshes", scene.Render());
+  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 2,
+    "the two plain spheres' depth comes from their meshes, the other props' from VTK");
+  const std::vector<float> fromMeshes = ImageValues(scene.Pass->GetVisibilityImage(0));
+
+  scene.Pass->DepthFromCasterMeshesOff();
+  CheckAgainstTruth("depth drawn by VTK", scene.Render());
+  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 0, "off: VTK draws every depth");
+  const std::vector<float> fromVTK = ImageValues(scene.Pass->GetVisibilityImage(0));
+
+  // The same triangles through another vertex shader: at most a pixel's rounding on a terminator.
+  const std::size_t differing = PixelsDiffering(fromMeshes, fromVTK, 0.5f);
+  std::printf("    pixels whose visibility differs by more than 0.5: %zu of %zu\n", differing,
+    fromVTK.size());
+  Check(!fromVTK.empty() && differing <= fromVTK.size() / 1000,
+    "the casters' depth from their meshes shadows as VTK's depth does (at most 0.1% of pixels)");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -159,6 +215,7 @@ int main(int argc, char* argv[])
     { "AwkwardMeshes", TestAwkwardMeshes },
     { "LightInsideClosedCaster", TestLightInsideClosedCaster },
     { "BackgroundStaysLit", TestBackgroundStaysLit },
+    { "DepthFromCasterMeshes", TestDepthFromCasterMeshes },
   };
   return RunFeatures(argc, argv, features);
 }

@@ -1,0 +1,138 @@
+#include "penumbraCasterDepth.h"
+
+#include "penumbraShadowCaches.h"
+#include "penumbraShadowTechnique.h"
+
+#include "penumbraCasterDepthFS.h"
+#include "penumbraCasterDepthVS.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+#include <unordered_map>
+
+namespace penumbra
+{
+namespace
+{
+bool IsExactly(vtkObject* object, const char* className)
+{
+  return object && std::strcmp(object->GetClassName(), className) == 0;
+}
+
+/// No polygon offset or z-shift moves the mapper's triangles (vtkOpenGLPolyDataMapper's
+/// GetCoincidentParameters, for triangles).
+bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)
+{
+  const int resolve = mapper->GetResolveCoincidentTopology();
+  if (resolve == VTK_RESOLVE_SHIFT_ZBUFFER)
+  {
+    return false;
+  }
+  if (resolve == VTK_RESOLVE_POLYGON_OFFSET || property->GetEdgeVisibility())
+  {
+    double factor = 0.0, units = 0.0;
+    mapper->GetCoincidentTopologyPolygonOffsetParameters(factor, units);
+    return factor == 0.0 && units == 0.0;
+  }
+  return true;
+}
+
+bool HasCustomShaders(vtkActor* actor)
+{
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  return shaders &&
+    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
+      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0);
+}
+} // namespace
+
+bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
+{
+  auto actor = vtkActor::SafeDownCast(prop);
+  if (!IsExactly(actor, "vtkOpenGLActor") ||
+    !IsExactly(actor->GetMapper(), "vtkOpenGLPolyDataMapper"))
+  {
+    return false;
+  }
+  auto mapper = static_cast<vtkPolyDataMapper*>(actor->GetMapper());
+  vtkProperty* property = actor->GetProperty();
+  if (!actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry() ||
+    property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
+    property->GetVertexVisibility() || property->GetBackfaceCulling() ||
+    property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
+    !DrawsTrianglesWithoutOffset(mapper, property) || HasCustomShaders(actor))
+  {
+    return false;
+  }
+  vtkPolyData* data = mapper->GetInput();
+  return data && data->GetNumberOfVerts() == 0 && data->GetNumberOfLines() == 0 &&
+    !data->GetCellGhostArray();
+}
+
+std::vector<vtkProp*> CasterDepth::Draw(
+  const ShadowFrame& frame, const std::vector<vtkProp*>& props)
+{
+  std::vector<vtkProp*> left;
+  std::unordered_map<vtkProp*, CasterCache*> casters;
+  for (CasterCache* caster : *frame.Casters)
+  {
+    // A plain actor's one surface; anything else is not ours to draw.
+    const bool usable = !caster->Translucent() && !caster->SeenThrough &&
+      caster->Mesh->Topology.Report.PolygonsCutUnlikeVTK == 0;
+    auto inserted =
+      casters.emplace(static_cast<vtkProp*>(caster->Actor.GetPointer()), usable ? caster : nullptr);
+    if (!inserted.second)
+    {
+      inserted.first->second = nullptr;
+    }
+  }
+  std::vector<CasterCache*> drawn;
+  for (vtkProp* prop : props)
+  {
+    auto found = casters.find(prop);
+    if (found == casters.end() || !found->second)
+    {
+      left.push_back(prop);
+    }
+    else
+    {
+      drawn.push_back(found->second);
+    }
+  }
+  if (drawn.empty())
+  {
+    return left;
+  }
+  this->Program = frame.Programs->Ready(frame.Window, penumbraCasterDepthVS, penumbraCasterDepthFS,
+    "caster-depth", "VTK draws the casters' depth");
+  if (!this->Program)
+  {
+    return props;
+  }
+  for (CasterCache* caster : drawn)
+  {
+    const glm::mat4 objectToClip(frame.WorldToClip * caster->ObjectToWorld);
+    this->Program->SetUniformMatrix4x4(
+      "MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
+    caster->Mesh->Bind(this->Program);
+    caster->Mesh->BindTriangles();
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * caster->Mesh->Topology.Triangles.size()),
+      GL_UNSIGNED_INT, nullptr);
+    caster->Mesh->TriangleIndices->Release();
+    caster->Mesh->VAO->Release();
+  }
+  return left;
+}
+
+} // namespace penumbra

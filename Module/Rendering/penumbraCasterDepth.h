@@ -1,0 +1,51 @@
+/**
+ * @file    penumbraCasterDepth.h
+ * @brief   The pass's depth of opaque casters, drawn from their cached meshes where that is the
+ *          depth VTK would draw.
+ *
+ * Shadows are counted against the depth of everything VTK draws opaque, so the pass draws that
+ * depth before anything else. Drawn by VTK, each prop runs its full shaders (normals, colours,
+ * the light loop) and VTK's per-prop set-up, although only the depth is kept. A prop that VTK
+ * draws as nothing but its polydata's triangles has the same triangles in its caster's cached
+ * mesh (penumbra::CasterTopology: welded, degenerate ones dropped, polygons cut as VTK's fan
+ * cuts them): drawn from there, its depth needs a position-only shader and one draw call.
+ * Everything else (other mappers, clipping planes, edges, lines and points, custom shaders,
+ * polygon offsets, a concave polygon) is left to VTK's opaque pass.
+ */
+#ifndef penumbraCasterDepth_h
+#define penumbraCasterDepth_h
+
+#include "vtkType.h"
+
+#include <vector>
+
+class vtkProp;
+class vtkShaderProgram;
+
+namespace penumbra
+{
+
+struct ShadowFrame;
+
+class CasterDepth
+{
+public:
+  /// Whether VTK's opaque pass draws `prop` as the triangles of its mapper's vtkPolyData and
+  /// nothing else: a vtkOpenGLActor (not a subclass: LOD actors and followers draw otherwise)
+  /// with a vtkOpenGLPolyDataMapper, opaque, a surface without edges, vertices or culled faces,
+  /// no clipping plane, no polygon offset or z-shift, no custom shader code, and data with no
+  /// vertex or line cells and no ghost cells. Read before VTK draws the frame's other props.
+  static bool DrawnAsItsTriangles(vtkProp* prop);
+
+  /// Draws into the bound depth buffer the depth of each of `props` (all DrawnAsItsTriangles)
+  /// whose caster among frame.Casters is opaque and cut as VTK draws it, with the caller's
+  /// depth state. Returns the others (a prop that casts no shadow, say), for VTK to draw.
+  std::vector<vtkProp*> Draw(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
+
+private:
+  vtkShaderProgram* Program = nullptr;
+};
+
+} // namespace penumbra
+
+#endif
