@@ -1,0 +1,88 @@
+"""Many small actors: the pass's depth drawn from the casters' meshes against VTK drawing it.
+
+    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
+        /usr/bin/python3 Benchmarks/many_actors_depth.py [--actors N] [--rounds R]
+
+N spheres of 264 triangles share one polydata (each its own vtkActor, as an application placing
+objects would make them) over a ground plane, one point light, hard shadows, 1024x768. Each round
+times the unshadowed frame, then the pass with DepthFromCasterMeshes on and off, and prints the
+medians and the depth stage of one timed frame (CollectStageTimes) for each.
+"""
+import argparse
+import math
+import statistics
+import time
+
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+
+import penumbra
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--actors", type=int, default=1000)
+    parser.add_argument("--rounds", type=int, default=2)
+    parser.add_argument("--frames", type=int, default=8)
+    args = parser.parse_args()
+
+    renderer = vtkRenderer()
+    ground = vtkPlaneSource()
+    ground.SetOrigin(-20, -20, 0), ground.SetPoint1(20, -20, 0), ground.SetPoint2(-20, 20, 0)
+    ground_mapper = vtkPolyDataMapper()
+    ground_mapper.SetInputConnection(ground.GetOutputPort())
+    ground_actor = vtkActor()
+    ground_actor.SetMapper(ground_mapper)
+    renderer.AddActor(ground_actor)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(12), sphere.SetPhiResolution(12), sphere.SetRadius(0.4)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    for i in range(args.actors):
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.SetPosition((i % 32) - 16, (i // 32) - 16, 1 + 0.3 * math.sin(i))
+        renderer.AddActor(actor)
+    penumbra.add_light(renderer, (3, 3, 25))
+    window = vtkRenderWindow()
+    window.SetSize(1024, 768)
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, -30, 25)
+    camera.SetFocalPoint(0, 0, 0)
+    renderer.ResetCameraClippingRange()
+    shadows = penumbra.vtkSoftShadowPass()
+    shadows.SetMethodToHardVolumes()
+
+    def run(with_pass, depth_from_meshes=True):
+        renderer.SetPass(shadows if with_pass else None)
+        shadows.SetDepthFromCasterMeshes(depth_from_meshes)
+        times = []
+        for _ in range(args.frames + 2):
+            start = time.perf_counter()
+            window.Render()
+            window.WaitForCompletion()
+            times.append(time.perf_counter() - start)
+        median = statistics.median(times[2:]) * 1000.0
+        if not with_pass:
+            return median, None, 0
+        shadows.CollectStageTimesOn()
+        window.Render()
+        shadows.CollectStageTimesOff()
+        return (median, shadows.GetStageCPUMilliseconds(shadows.STAGE_DEPTH),
+                shadows.GetNumberOfPropsWithDepthFromMeshes())
+
+    print(f"{args.actors} sphere actors over a ground, hard shadows, 1024x768")
+    for round_index in range(args.rounds):
+        plain, _, _ = run(False)
+        meshes, meshes_depth, count = run(True, True)
+        vtk, vtk_depth, _ = run(True, False)
+        print(f"  round {round_index + 1}: none {plain:.1f} ms; depth from meshes {meshes:.1f} ms"
+              f" ({meshes / plain:.2f}x, depth stage {meshes_depth:.1f} ms, {count} props);"
+              f" VTK's depth {vtk:.1f} ms ({vtk / plain:.2f}x, depth stage {vtk_depth:.1f} ms)")
+
+
+if __name__ == "__main__":
+    main()
