@@ -12,9 +12,11 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <type_traits>
@@ -30,6 +32,78 @@ constexpr std::uint32_t InvalidIndex = ~std::uint32_t(0);
 bool IsFinite(const glm::dvec3& p)
 {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+/// Runs body(chunk, begin, end) over [0, count) cut into ChunkCount(count) consecutive ranges,
+/// in parallel (vtkSMPTools). The ranges do not depend on the threads, so per-chunk results
+/// combined in chunk order give the same answer as one loop would.
+std::size_t ChunkCount(std::size_t count)
+{
+  // Below a few thousand elements a chunk costs more to hand out than to run.
+  return std::max<std::size_t>(1, std::min<std::size_t>(64, count / 16384));
+}
+
+template <typename Body>
+void ForEachChunk(std::size_t count, const Body& body)
+{
+  const std::size_t chunks = ChunkCount(count);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        const std::size_t chunk = static_cast<std::size_t>(c);
+        body(chunk, count * chunk / chunks, count * (chunk + 1) / chunks);
+      }
+    });
+}
+
+/// An axis-aligned box being grown, and the points it left out.
+struct Extent
+{
+  glm::dvec3 Lo{ std::numeric_limits<double>::max() };
+  glm::dvec3 Hi{ -std::numeric_limits<double>::max() };
+  std::size_t NonFinite = 0;
+
+  void Add(const glm::dvec3& p)
+  {
+    if (IsFinite(p))
+    {
+      this->Lo = glm::min(this->Lo, p);
+      this->Hi = glm::max(this->Hi, p);
+    }
+    else
+    {
+      ++this->NonFinite;
+    }
+  }
+  void Add(const Extent& other)
+  {
+    this->Lo = glm::min(this->Lo, other.Lo);
+    this->Hi = glm::max(this->Hi, other.Hi);
+    this->NonFinite += other.NonFinite;
+  }
+};
+
+/// The extent of get(i) over [0, count), in parallel.
+template <typename Get>
+Extent ExtentOf(std::size_t count, const Get& get)
+{
+  std::vector<Extent> parts(ChunkCount(count));
+  ForEachChunk(count,
+    [&](std::size_t chunk, std::size_t begin, std::size_t end)
+    {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        get(i, parts[chunk]);
+      }
+    });
+  Extent all;
+  for (const Extent& part : parts)
+  {
+    all.Add(part);
+  }
+  return all;
 }
 
 /// Welds points closer than `tolerance` (grid hashing, each point checked against its 27 cells).
@@ -173,35 +247,73 @@ bool IsDegenerate(const std::vector<glm::dvec3>& points, const glm::uvec3& tri)
     !(glm::dot(n, n) > 1e-28 * scale * scale);
 }
 
+/// What AddTriangles does with one triangle.
+enum class TriangleFate : std::uint8_t
+{
+  Kept,
+  InvalidIndex,
+  NonFinite,
+  Degenerate
+};
+
 /// Appends the triangles of `triangles` whose points `map` sends to three distinct finite
-/// points of topo.Points, counting the others in `report`.
+/// points of topo.Points, counting the others in `report`. Two parallel passes over chunks: each
+/// triangle's fate into `fates`, then the kept ones written at their chunk's offset, in order.
 template <typename Triangles>
 void AddTriangles(const Triangles& triangles, const std::vector<std::uint32_t>& map,
-  CasterTopology& topo, TopologyReport& report)
+  TriangleFate* fates, CasterTopology& topo, TopologyReport& report)
 {
-  topo.Triangles.reserve(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  auto mapped = [&](std::size_t t, glm::uvec3& w)
   {
     const glm::uvec3 tri = triangles[t];
     // Out-of-range indices (malformed input) are dropped and reported apart from NaN points.
     if (tri.x >= map.size() || tri.y >= map.size() || tri.z >= map.size())
     {
-      ++report.InvalidIndexTriangles;
-      continue;
+      return TriangleFate::InvalidIndex;
     }
-    if (map[tri.x] == InvalidIndex || map[tri.y] == InvalidIndex || map[tri.z] == InvalidIndex)
+    w = glm::uvec3(map[tri.x], map[tri.y], map[tri.z]);
+    if (w.x == InvalidIndex || w.y == InvalidIndex || w.z == InvalidIndex)
     {
-      ++report.NonFiniteTriangles;
-      continue;
+      return TriangleFate::NonFinite;
     }
-    const glm::uvec3 w(map[tri.x], map[tri.y], map[tri.z]);
-    if (IsDegenerate(topo.Points, w))
+    return IsDegenerate(topo.Points, w) ? TriangleFate::Degenerate : TriangleFate::Kept;
+  };
+  const std::size_t chunks = ChunkCount(triangles.size());
+  std::vector<std::array<std::size_t, 4>> counts(chunks);
+  ForEachChunk(triangles.size(),
+    [&](std::size_t chunk, std::size_t begin, std::size_t end)
     {
-      ++report.DegenerateTriangles;
-      continue;
-    }
-    topo.Triangles.push_back(w);
+      std::array<std::size_t, 4> count = { 0, 0, 0, 0 };
+      glm::uvec3 w;
+      for (std::size_t t = begin; t < end; ++t)
+      {
+        fates[t] = mapped(t, w);
+        ++count[static_cast<int>(fates[t])];
+      }
+      counts[chunk] = count;
+    });
+  std::vector<std::size_t> offsets(chunks + 1, 0);
+  for (std::size_t c = 0; c < chunks; ++c)
+  {
+    offsets[c + 1] = offsets[c] + counts[c][static_cast<int>(TriangleFate::Kept)];
+    report.InvalidIndexTriangles += counts[c][static_cast<int>(TriangleFate::InvalidIndex)];
+    report.NonFiniteTriangles += counts[c][static_cast<int>(TriangleFate::NonFinite)];
+    report.DegenerateTriangles += counts[c][static_cast<int>(TriangleFate::Degenerate)];
   }
+  topo.Triangles.resize(offsets[chunks]);
+  ForEachChunk(triangles.size(),
+    [&](std::size_t chunk, std::size_t begin, std::size_t end)
+    {
+      glm::uvec3* out = topo.Triangles.data() + offsets[chunk];
+      for (std::size_t t = begin; t < end; ++t)
+      {
+        if (fates[t] == TriangleFate::Kept)
+        {
+          const glm::uvec3 tri = triangles[t];
+          *out++ = glm::uvec3(map[tri.x], map[tri.y], map[tri.z]);
+        }
+      }
+    });
 }
 
 /// Sends topo's triangles through `map` (welded points) in place, dropping those that become
@@ -418,8 +530,9 @@ struct TopologyScratch
   std::vector<glm::uvec3> InputTriangles;
   std::vector<std::uint32_t> PointMap;
   std::vector<std::uint32_t> GroupStart; ///< per point: its first half-edge
-  ScratchArray<std::uint32_t> GroupFill;
+  ScratchArray<std::uint32_t> GroupFill; ///< per part of the triangles and point (GroupHalfEdges)
   ScratchArray<std::uint32_t> EdgeStart; ///< per point: its first edge
+  ScratchArray<TriangleFate> TriangleFates; ///< per input triangle: AddTriangles' verdict
 };
 
 namespace
@@ -427,33 +540,74 @@ namespace
 
 /// Groups topo's half-edges by their smaller end into topo.Uses, as keys, with a counting sort:
 /// linear, and stable, so each group stays in triangle order (a comparison sort of all of them
-/// cost most of a rebuild).
+/// cost most of a rebuild). The triangles are cut into a few consecutive parts, each counted
+/// and scattered in parallel into its own share of every group: part p's keys of a group follow
+/// parts 0 .. p - 1's, so the order is the triangles' whatever the parts.
 void GroupHalfEdges(TopologyScratch& scratch, CasterTopology& topo)
 {
-  std::vector<std::uint32_t>& start = scratch.GroupStart;
-  start.assign(topo.Points.size() + 1, 0);
-  for (const glm::uvec3& tri : topo.Triangles)
-  {
-    ++start[std::min(tri.x, tri.y) + 1];
-    ++start[std::min(tri.y, tri.z) + 1];
-    ++start[std::min(tri.z, tri.x) + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::uint32_t* fill = scratch.GroupFill.Get(topo.Points.size());
-  std::copy(start.begin(), start.end() - 1, fill);
-  topo.Uses.resize(3 * topo.Triangles.size());
-  for (std::uint32_t t = 0; t < topo.Triangles.size(); ++t)
+  const std::size_t pointCount = topo.Points.size(), triangleCount = topo.Triangles.size();
+  // A histogram a part: a few parts only, or their memory would outgrow the mesh's.
+  const std::size_t parts = std::min<std::size_t>({ ChunkCount(triangleCount), 4,
+    static_cast<std::size_t>(std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads())) });
+  auto partBegin = [&](std::size_t part) { return triangleCount * part / parts; };
+  auto lowEnd = [&](std::uint32_t t, int k)
   {
     const glm::uvec3& tri = topo.Triangles[t];
-    for (int k = 0; k < 3; ++k)
+    return std::min(tri[k], tri[(k + 1) % 3]);
+  };
+  // counts[part * pointCount + a]: part's half-edges whose smaller end is a; then, in place,
+  // where part's next key of group a goes.
+  std::uint32_t* counts = scratch.GroupFill.Get(parts * pointCount);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(parts), 1,
+    [&](vtkIdType first, vtkIdType last)
     {
-      const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
-      const bool reversed = to < from;
-      const std::uint32_t low = reversed ? to : from, high = reversed ? from : to;
-      StoreKey(topo.Uses[fill[low]++],
-        std::uint64_t(high) << 32 | std::uint64_t(t) << 1 | std::uint64_t(reversed));
+      for (std::size_t part = first; part < static_cast<std::size_t>(last); ++part)
+      {
+        std::uint32_t* count = counts + part * pointCount;
+        std::fill(count, count + pointCount, 0u);
+        for (std::uint32_t t = partBegin(part); t < partBegin(part + 1); ++t)
+        {
+          ++count[lowEnd(t, 0)];
+          ++count[lowEnd(t, 1)];
+          ++count[lowEnd(t, 2)];
+        }
+      }
+    });
+  std::vector<std::uint32_t>& start = scratch.GroupStart;
+  start.resize(pointCount + 1);
+  start[0] = 0;
+  for (std::size_t a = 0; a < pointCount; ++a)
+  {
+    std::uint32_t next = start[a];
+    for (std::size_t part = 0; part < parts; ++part)
+    {
+      const std::uint32_t count = counts[part * pointCount + a];
+      counts[part * pointCount + a] = next;
+      next += count;
     }
+    start[a + 1] = next;
   }
+  topo.Uses.resize(3 * triangleCount);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(parts), 1,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (std::size_t part = first; part < static_cast<std::size_t>(last); ++part)
+      {
+        std::uint32_t* fill = counts + part * pointCount;
+        for (std::uint32_t t = partBegin(part); t < partBegin(part + 1); ++t)
+        {
+          const glm::uvec3& tri = topo.Triangles[t];
+          for (int k = 0; k < 3; ++k)
+          {
+            const std::uint32_t from = tri[k], to = tri[(k + 1) % 3];
+            const bool reversed = to < from;
+            const std::uint32_t low = reversed ? to : from, high = reversed ? from : to;
+            StoreKey(topo.Uses[fill[low]++],
+              std::uint64_t(high) << 32 | std::uint64_t(t) << 1 | std::uint64_t(reversed));
+          }
+        }
+      }
+    });
 }
 
 /// Edges and uses from the grouped keys. Every half-edge is one use, in its own slot, and every
@@ -592,20 +746,10 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
   // Cells the vtkPolyData path dropped for bad ids were counted there.
   report.InputTriangles = triangles.size() + report.InvalidIndexTriangles;
 
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    const glm::dvec3 p = points[i];
-    if (IsFinite(p))
-    {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    else
-    {
-      ++report.NonFinitePoints;
-    }
-  }
+  const Extent input =
+    ExtentOf(points.size(), [&](std::size_t i, Extent& part) { part.Add(points[i]); });
+  const glm::dvec3 lo = input.Lo, hi = input.Hi;
+  report.NonFinitePoints = input.NonFinite;
   if (report.NonFinitePoints == points.size())
   {
     for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -629,12 +773,17 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
   topo.Points.resize(points.size());
   std::vector<std::uint32_t>& map = scratch.PointMap;
   map.resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    topo.Points[i] = points[i] - topo.Origin;
-    map[i] = IsFinite(topo.Points[i]) ? static_cast<std::uint32_t>(i) : InvalidIndex;
-  }
-  AddTriangles(triangles, map, topo, report);
+  const glm::dvec3 origin = topo.Origin;
+  ForEachChunk(points.size(),
+    [&](std::size_t, std::size_t begin, std::size_t end)
+    {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        topo.Points[i] = points[i] - origin;
+        map[i] = IsFinite(topo.Points[i]) ? static_cast<std::uint32_t>(i) : InvalidIndex;
+      }
+    });
+  AddTriangles(triangles, map, scratch.TriangleFates.Get(triangles.size()), topo, report);
   if (report.NonFinitePoints > 0)
   {
     KeepRepresentatives(topo, map); // no NaN or infinite point stays in the mesh
@@ -651,17 +800,16 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
 
   if (!topo.Triangles.empty())
   {
-    glm::dvec3 rlo(std::numeric_limits<double>::max()), rhi(-std::numeric_limits<double>::max());
-    for (const glm::uvec3& tri : topo.Triangles)
-    {
-      for (int k = 0; k < 3; ++k)
+    const Extent used = ExtentOf(topo.Triangles.size(),
+      [&](std::size_t t, Extent& part)
       {
-        rlo = glm::min(rlo, topo.Points[tri[k]]);
-        rhi = glm::max(rhi, topo.Points[tri[k]]);
-      }
-    }
-    topo.BoundsMin = rlo;
-    topo.BoundsMax = rhi;
+        for (int k = 0; k < 3; ++k)
+        {
+          part.Add(topo.Points[topo.Triangles[t][k]]);
+        }
+      });
+    topo.BoundsMin = used.Lo;
+    topo.BoundsMax = used.Hi;
   }
   topo.Report = report;
 }
@@ -855,7 +1003,7 @@ std::size_t TopologyBuilder::GetScratchBytes() const
   return scratch.InputPoints.capacity() * sizeof(glm::dvec3) +
     scratch.InputTriangles.capacity() * sizeof(glm::uvec3) +
     (scratch.PointMap.capacity() + scratch.GroupStart.capacity()) * sizeof(std::uint32_t) +
-    scratch.GroupFill.GetBytes() + scratch.EdgeStart.GetBytes();
+    scratch.GroupFill.GetBytes() + scratch.EdgeStart.GetBytes() + scratch.TriangleFates.GetBytes();
 }
 
 } // namespace penumbra

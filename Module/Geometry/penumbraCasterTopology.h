@@ -106,10 +106,11 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
 /**
  * Builds CasterTopology into storage kept between builds. Data that changes every frame (a
  * simulation played back) then rebuilds without allocating once its size has settled: fresh
- * pages cost about as much as the build itself at a million triangles. The edge work runs in
- * parallel (vtkSMPTools). Triangles-only data with float or double points is read in place and
- * the scratch held is 16 bytes a point (about 8 a triangle); other cells and point types add
- * their triangulated or converted copy.
+ * pages cost about as much as the build itself at a million triangles. The point and triangle
+ * passes and the edge work run in parallel (vtkSMPTools), in fixed chunks, so the result does
+ * not depend on the threads. Triangles-only data with float or double points is read in place
+ * and the scratch held is 16 bytes a point and 1 a triangle (about 9 a triangle); other cells
+ * and point types add their triangulated or converted copy.
  */
 class VTKPENUMBRAGEOMETRY_EXPORT TopologyBuilder
 {

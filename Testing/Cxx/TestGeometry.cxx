@@ -25,6 +25,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSphereSource.h"
 #include "vtkTriangleFilter.h"
 
@@ -532,6 +533,68 @@ bool SameTopology(const CasterTopology& a, const CasterTopology& b)
     ra.InconsistentEdges == rb.InconsistentEdges && ra.NonManifoldEdges == rb.NonManifoldEdges;
 }
 
+/// A torus of 2 * u * v triangles whose seams are duplicated points (they weld), with a NaN
+/// point, degenerate triangles and a triangle naming a point that does not exist scattered
+/// through it.
+void AwkwardTorus(int u, int v, std::vector<glm::dvec3>& points, std::vector<glm::uvec3>& triangles)
+{
+  points.clear();
+  triangles.clear();
+  for (int i = 0; i <= u; ++i)
+  {
+    for (int j = 0; j <= v; ++j)
+    {
+      const double a = 2.0 * 3.141592653589793 * i / u, b = 2.0 * 3.141592653589793 * j / v;
+      points.emplace_back((2.0 + 0.7 * std::cos(b)) * std::cos(a),
+        (2.0 + 0.7 * std::cos(b)) * std::sin(a), 0.7 * std::sin(b));
+    }
+  }
+  const std::uint32_t nan = static_cast<std::uint32_t>(points.size());
+  points.emplace_back(std::nan(""), 0.0, 0.0);
+  auto id = [v](int i, int j) { return static_cast<std::uint32_t>(i * (v + 1) + j); };
+  for (int i = 0; i < u; ++i)
+  {
+    for (int j = 0; j < v; ++j)
+    {
+      triangles.emplace_back(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      triangles.emplace_back(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+      if ((i * v + j) % 9973 == 0)
+      {
+        triangles.emplace_back(id(i, j), id(i, j), id(i + 1, j));
+        triangles.emplace_back(id(i, j), nan, id(i + 1, j));
+        triangles.emplace_back(id(i, j), nan + 7, id(i + 1, j));
+      }
+    }
+  }
+}
+
+void TestSameWithAnyThreads()
+{
+  // The parallel passes cut their work into fixed chunks and parts: one thread or two must
+  // build the same topology, to the order of every array.
+  std::vector<glm::dvec3> points;
+  std::vector<glm::uvec3> triangles;
+  AwkwardTorus(300, 200, points, triangles);
+  // Two threads first: once limited to one, TBB may keep that limit.
+  vtkSMPTools::Initialize(2);
+  const CasterTopology two = CasterTopology::Build(points, triangles);
+  vtkSMPTools::Initialize(1);
+  const CasterTopology one = CasterTopology::Build(points, triangles);
+  vtkSMPTools::Initialize(0);
+  // (i * 200 + j) % 9973 == 0 for 7 of the 60000 quads: 7 bad triangles of each kind.
+  const std::size_t quads = 300 * 200, bad = 7;
+  Check(one.Points.size() == quads && one.Triangles.size() == 2 * quads &&
+      one.Edges.size() == 3 * quads && one.ClosedAndOriented &&
+      one.Report.WeldedPoints == 301 + 201 - 1 && one.Report.NonFiniteTriangles == bad &&
+      one.Report.DegenerateTriangles == bad && one.Report.InvalidIndexTriangles == bad,
+    "the awkward torus welds its seams and drops its bad triangles into a closed surface");
+  const glm::dvec3 reach(2.7, 2.7, 0.7);
+  Check(glm::all(glm::lessThan(glm::abs(one.BoundsMax + one.Origin - reach), glm::dvec3(1e-9))) &&
+      glm::all(glm::lessThan(glm::abs(one.BoundsMin + one.Origin + reach), glm::dvec3(1e-3))),
+    "the awkward torus's bounds are the torus's");
+  Check(SameTopology(one, two), "one and two threads build the same topology");
+}
+
 void TestBuilderReuse()
 {
   // A builder kept between builds (time-varying data) must give what a fresh build gives,
@@ -771,6 +834,7 @@ int main()
   TestDegenerateInput();
   TestPolygonsCutAsVTKDraws();
   TestBuilderReuse();
+  TestSameWithAnyThreads();
   FuzzRandomMeshes(rng);
   TestVolumeEndPlane(rng);
   return penumbra_test::Finish();
