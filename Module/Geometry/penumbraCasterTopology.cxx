@@ -930,6 +930,59 @@ std::string TopologyReport::Describe() const
   return text;
 }
 
+int CasterTopology::OutwardWinding() const
+{
+  if (!this->ClosedAndOriented)
+  {
+    return 0;
+  }
+  // Connected pieces: union-find over the triangles, joined across each (manifold) edge.
+  std::vector<std::uint32_t> parent(this->Triangles.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto root = [&parent](std::uint32_t t)
+  {
+    while (parent[t] != t)
+    {
+      parent[t] = parent[parent[t]];
+      t = parent[t];
+    }
+    return t;
+  };
+  for (const Edge& edge : this->Edges)
+  {
+    const std::uint32_t a = root(this->Uses[edge.FirstUse].Triangle),
+                        b = root(this->Uses[edge.FirstUse + 1].Triangle);
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+  // Six times each piece's signed volume, relative to the origin (the bounds' centre), and the
+  // size of its terms: a volume lost in their rounding is flat, with no outside to tell.
+  std::vector<double> volume(this->Triangles.size(), 0.0), terms(this->Triangles.size(), 0.0);
+  for (std::uint32_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    const glm::uvec3& tri = this->Triangles[t];
+    const double term =
+      glm::dot(this->Points[tri.x], glm::cross(this->Points[tri.y], this->Points[tri.z]));
+    const std::uint32_t piece = root(t);
+    volume[piece] += term;
+    terms[piece] += std::abs(term);
+  }
+  int winding = 0;
+  for (std::uint32_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    if (parent[t] != t)
+    {
+      continue;
+    }
+    const int sign = !(std::abs(volume[t]) > 1e-9 * terms[t]) ? 0 : volume[t] > 0.0 ? 1 : -1;
+    if (sign == 0 || (winding != 0 && sign != winding))
+    {
+      return 0;
+    }
+    winding = sign;
+  }
+  return winding;
+}
+
 CasterTopology CasterTopology::Build(const std::vector<glm::dvec3>& points,
   const std::vector<glm::uvec3>& triangles, double relativeWeldTolerance)
 {

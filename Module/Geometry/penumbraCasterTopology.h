@@ -92,6 +92,12 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
   TopologyReport Report;
 
   bool Empty() const { return this->Triangles.empty(); }
+  /// +1 when the mesh is ClosedAndOriented and each of its connected pieces winds its triangles
+  /// counter-clockwise seen from outside (encloses a positive volume), -1 when each winds them
+  /// clockwise, 0 otherwise (open, inconsistently wound, pieces wound both ways, or flat): where
+  /// it is not 0, only triangles facing away from inside can be seen from outside. One pass over
+  /// the edges and triangles; not kept by Build.
+  int OutwardWinding() const;
   /// Relative weld tolerance used by Build (times the bounds diagonal).
   static constexpr double DefaultWeldTolerance = 1e-7;
 

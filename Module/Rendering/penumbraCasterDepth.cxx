@@ -10,6 +10,7 @@
 #include "vtkCellArray.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderProperty.h"
+#include "vtkOpenGLState.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -18,6 +19,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <unordered_map>
 
@@ -46,6 +48,38 @@ bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)
     return factor == 0.0 && units == 0.0;
   }
   return true;
+}
+
+/// The face to cull from `caster`'s depth (GL_BACK or GL_FRONT), or 0 to draw both: a closed
+/// mesh whose pieces all wind one way (MeshCache::OutwardWinding) and whose box lies wholly
+/// beyond the near plane is seen from outside only, so its faces turned away from the eye are
+/// hidden behind its own.
+unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster)
+{
+  const int winding = caster.Mesh->OutwardWinding();
+  if (winding == 0)
+  {
+    return 0;
+  }
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec4 clip =
+      frame.WorldToClip * glm::dvec4(BoxCorner(caster.WorldMin, caster.WorldMax, corner), 1.0);
+    if (!(clip.z > -clip.w))
+    {
+      return 0; // the near plane cuts it, or the eye is inside its box
+    }
+  }
+  // A camera's projection has a negative determinant: with it, counter-clockwise outward faces
+  // stay counter-clockwise in the window (GL's front faces, which VTK never changes). A mirrored
+  // actor or an inward winding turns them.
+  const double determinant = glm::determinant(frame.WorldToClip * caster.ObjectToWorld);
+  if (!std::isfinite(determinant) || determinant == 0.0)
+  {
+    return 0;
+  }
+  const bool turned = (determinant > 0.0) != (winding < 0);
+  return turned ? GL_FRONT : GL_BACK;
 }
 
 bool HasCustomShaders(vtkActor* actor)
@@ -120,8 +154,19 @@ std::vector<vtkProp*> CasterDepth::Draw(
   {
     return props;
   }
+  vtkOpenGLState* ostate = frame.Window->GetState();
   for (CasterCache* caster : drawn)
   {
+    const unsigned int hidden = HiddenFace(frame, *caster);
+    if (hidden)
+    {
+      ostate->vtkglEnable(GL_CULL_FACE);
+      ostate->vtkglCullFace(hidden);
+    }
+    else
+    {
+      ostate->vtkglDisable(GL_CULL_FACE);
+    }
     const glm::mat4 objectToClip(frame.WorldToClip * caster->ObjectToWorld);
     this->Program->SetUniformMatrix4x4(
       "MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));

@@ -136,6 +136,16 @@ void MeshCache::BindTriangles()
   this->TriangleIndices->Bind();
 }
 
+int MeshCache::OutwardWinding()
+{
+  if (this->WindingGeneration != this->Generation)
+  {
+    this->Winding = this->Topology.OutwardWinding();
+    this->WindingGeneration = this->Generation;
+  }
+  return this->Winding;
+}
+
 void MeshCache::ReleaseGraphicsResources()
 {
   this->Vertices->ReleaseGraphicsResources();

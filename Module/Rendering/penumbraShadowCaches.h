@@ -57,6 +57,8 @@ struct MeshCache
   /// Every triangle, for its depth (penumbra::CasterDepth); uploaded on first use.
   vtkNew<vtkOpenGLBufferObject> TriangleIndices;
   bool TrianglesUploaded = false;
+  int Winding = 0;
+  std::size_t WindingGeneration = 0; ///< the Generation Winding was worked out for; 0: none
   bool Used = false;
   bool WarnedProblems = false; ///< a mesh problem was reported once for this data object
   bool WarnedEmpty = false;
@@ -71,6 +73,8 @@ struct MeshCache
   void Bind(vtkShaderProgram* program);
   /// Uploads the index buffer of every triangle if needed and binds it; after Bind.
   void BindTriangles();
+  /// Topology.OutwardWinding(), worked out once per build, on first use.
+  int OutwardWinding();
   void ReleaseGraphicsResources();
 };
 
@@ -136,6 +140,8 @@ struct WedgeBuffer : WedgeGeometry
   /// Every triangle, for its depth (penumbra::CasterDepth); uploaded on first use.
   vtkNew<vtkOpenGLBufferObject> TriangleIndices;
   bool TrianglesUploaded = false;
+  int Winding = 0;
+  std::size_t WindingGeneration = 0; ///< the Generation Winding was worked out for; 0: none
   bool Used = false;
 
   /// The light in wedge coordinates, as the wedge shaders want it.

@@ -568,6 +568,42 @@ void AwkwardTorus(int u, int v, std::vector<glm::dvec3>& points, std::vector<glm
   }
 }
 
+void TestOutwardWinding()
+{
+  // Whether the faces turned away from outside are hidden: only for closed pieces that all
+  // enclose their volume the same way.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  const CasterTopology outward = CasterTopology::Build(sphere->GetOutput());
+  std::vector<glm::dvec3> points(outward.Points);
+  std::vector<glm::uvec3> inward(outward.Triangles);
+  for (glm::uvec3& tri : inward)
+  {
+    std::swap(tri.y, tri.z);
+  }
+  // Two spheres, the second shifted: both outward, then the second turned inward.
+  std::vector<glm::dvec3> twoPoints(points);
+  for (const glm::dvec3& p : points)
+  {
+    twoPoints.push_back(p + glm::dvec3(3.0, 0.0, 0.0));
+  }
+  const std::uint32_t shift = static_cast<std::uint32_t>(points.size());
+  std::vector<glm::uvec3> bothOut(outward.Triangles), mixed(outward.Triangles);
+  for (std::size_t t = 0; t < outward.Triangles.size(); ++t)
+  {
+    bothOut.push_back(outward.Triangles[t] + shift);
+    mixed.push_back(inward[t] + shift);
+  }
+  vtkNew<vtkPlaneSource> sheet;
+  Check(outward.OutwardWinding() == 1, "vtkSphereSource winds outward");
+  Check(CasterTopology::Build(points, inward).OutwardWinding() == -1, "turned, it winds inward");
+  Check(CasterTopology::Build(twoPoints, bothOut).OutwardWinding() == 1,
+    "two pieces wound outward wind outward");
+  Check(CasterTopology::Build(twoPoints, mixed).OutwardWinding() == 0,
+    "pieces wound both ways have no one outside");
+  Check(FromSource(sheet).OutwardWinding() == 0, "an open sheet has no outside");
+}
+
 void TestSameWithAnyThreads()
 {
   // The parallel passes cut their work into fixed chunks and parts: one thread or two must
@@ -835,6 +871,7 @@ int main()
   TestPolygonsCutAsVTKDraws();
   TestBuilderReuse();
   TestSameWithAnyThreads();
+  TestOutwardWinding();
   FuzzRandomMeshes(rng);
   TestVolumeEndPlane(rng);
   return penumbra_test::Finish();

@@ -166,17 +166,21 @@ std::size_t PixelsDiffering(const std::vector<float>& a, const std::vector<float
 
 void TestDepthFromCasterMeshes()
 {
-  // Spheres (triangles, plain actors: their depth comes from their caster meshes), one placed by
-  // a position, orientation, scale and user matrix; the ground and a box (quads, which VTK's fan
+  // Spheres (triangles, plain actors: their depth comes from their caster meshes, closed and
+  // seen from outside, so with their hidden faces culled), one placed by a position,
+  // orientation, mirroring scale and user matrix; the ground and a box (quads, which VTK's fan
   // cuts along the other diagonal), a sphere with its edges shown and one that casts no shadow
   // (VTK draws those four). The depth, and so the shadows, must be the same as VTK's.
   Scene scene(320, 240);
   scene.Ground();
   scene.Sphere(-1.2, 0.9, 0.4, 0.6);
+  // A small sphere between the light and the first, shadowing its lit side: were the first's
+  // depth its far side (the wrong faces culled), that shadow would move.
+  scene.Sphere(-1.48, 2.69, 1.31, 0.2, 24);
   vtkActor* placed = scene.Sphere(0, 0, 0, 0.5, 24);
   placed->SetPosition(0.4, 1.6, -0.6);
   placed->SetOrientation(20, 35, 10);
-  placed->SetScale(1.4, 0.8, 1.0);
+  placed->SetScale(-1.4, 0.8, 1.0); // mirrored: its front faces turn
   vtkNew<vtkTransform> user;
   user->Translate(0.2, 0.0, 0.3);
   user->RotateY(15);
@@ -187,8 +191,8 @@ void TestDepthFromCasterMeshes()
   scene.Camera(3, 4, 7, 0, 0.5, 0);
 
   CheckAgainstTruth("depth from the caster meshes", scene.Render());
-  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 2,
-    "the two plain spheres' depth comes from their meshes, the other props' from VTK");
+  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 3,
+    "the three plain spheres' depth comes from their meshes, the other props' from VTK");
   const std::vector<float> fromMeshes = ImageValues(scene.Pass->GetVisibilityImage(0));
 
   scene.Pass->DepthFromCasterMeshesOff();
