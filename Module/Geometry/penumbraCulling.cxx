@@ -336,4 +336,20 @@ PixelRect ShadowScissor(const glm::dvec3& casterMin, const glm::dvec3& casterMax
   return rect.Empty() ? PixelRect{} : rect;
 }
 
+bool BoxBeyondNearPlane(
+  const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dmat4& worldToClip)
+{
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    // The clip-space depth minus the near plane's is affine in the point: positive at every
+    // corner means positive in the whole box.
+    const glm::dvec4 clip = worldToClip * glm::dvec4(BoxCorner(boxMin, boxMax, corner), 1.0);
+    if (!(clip.z + clip.w > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace penumbra

@@ -67,6 +67,12 @@ VTKPENUMBRAGEOMETRY_EXPORT bool WedgesDrawnByFrontFaces(const glm::dvec3& boxMin
 VTKPENUMBRAGEOMETRY_EXPORT bool ShadowMayReachView(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dvec4& light, double radius, const glm::dmat4& worldToClip);
 
+/// Whether every point of the box lies strictly beyond the near plane of `worldToClip` (clip
+/// z > -w, the camera's side of it excluded): then a closed surface inside it is seen from
+/// outside only. False for a box that holds the eye, reaches behind it or is cut by the plane.
+VTKPENUMBRAGEOMETRY_EXPORT bool BoxBeyondNearPlane(
+  const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dmat4& worldToClip);
+
 /// A rectangle of pixels [X0, X1) x [Y0, Y1) of a viewport.
 struct PixelRect
 {

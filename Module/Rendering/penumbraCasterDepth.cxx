@@ -1,5 +1,6 @@
 #include "penumbraCasterDepth.h"
 
+#include "penumbraCulling.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
 
@@ -61,14 +62,9 @@ unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster)
   {
     return 0;
   }
-  for (int corner = 0; corner < 8; ++corner)
+  if (!BoxBeyondNearPlane(caster.WorldMin, caster.WorldMax, frame.WorldToClip))
   {
-    const glm::dvec4 clip =
-      frame.WorldToClip * glm::dvec4(BoxCorner(caster.WorldMin, caster.WorldMax, corner), 1.0);
-    if (!(clip.z > -clip.w))
-    {
-      return 0; // the near plane cuts it, or the eye is inside its box
-    }
+    return 0; // the near plane cuts it, or the eye is inside its box
   }
   // A camera's projection has a negative determinant: with it, counter-clockwise outward faces
   // stay counter-clockwise in the window (GL's front faces, which VTK never changes). A mirrored
@@ -117,6 +113,7 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
 std::vector<vtkProp*> CasterDepth::Draw(
   const ShadowFrame& frame, const std::vector<vtkProp*>& props)
 {
+  this->CulledProps = 0;
   std::vector<vtkProp*> left;
   std::unordered_map<vtkProp*, CasterCache*> casters;
   for (CasterCache* caster : *frame.Casters)
@@ -160,6 +157,7 @@ std::vector<vtkProp*> CasterDepth::Draw(
     const unsigned int hidden = HiddenFace(frame, *caster);
     if (hidden)
     {
+      ++this->CulledProps;
       ostate->vtkglEnable(GL_CULL_FACE);
       ostate->vtkglCullFace(hidden);
     }

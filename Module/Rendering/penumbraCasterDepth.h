@@ -10,7 +10,9 @@
  * mesh (penumbra::CasterTopology: welded, degenerate ones dropped, polygons cut as VTK's fan
  * cuts them): drawn from there, its depth needs a position-only shader and one draw call.
  * Everything else (other mappers, clipping planes, edges, lines and points, custom shaders,
- * polygon offsets, a concave polygon) is left to VTK's opaque pass.
+ * polygon offsets, a concave polygon) is left to VTK's opaque pass. A closed caster seen from
+ * outside only is drawn with the faces turned away from the eye culled: they are hidden behind
+ * its own.
  */
 #ifndef penumbraCasterDepth_h
 #define penumbraCasterDepth_h
@@ -41,9 +43,13 @@ public:
   /// whose caster among frame.Casters is opaque and cut as VTK draws it, with the caller's
   /// depth state. Returns the others (a prop that casts no shadow, say), for VTK to draw.
   std::vector<vtkProp*> Draw(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
+  /// Props the last Draw drew with their hidden faces culled: closed casters whose pieces all
+  /// wind one way (CasterTopology::OutwardWinding), wholly beyond the near plane.
+  vtkIdType GetCulledProps() const { return this->CulledProps; }
 
 private:
   vtkShaderProgram* Program = nullptr;
+  vtkIdType CulledProps = 0;
 };
 
 } // namespace penumbra

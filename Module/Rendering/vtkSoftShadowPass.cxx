@@ -290,6 +290,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSilhouetteUpdates: " << this->NumberOfSilhouetteUpdates << "\n";
   os << indent << "NumberOfPropsWithDepthFromMeshes: " << this->NumberOfPropsWithDepthFromMeshes
      << "\n";
+  os << indent << "NumberOfPropsWithCulledDepth: " << this->NumberOfPropsWithCulledDepth << "\n";
   os << indent << "GraphicsMemoryBytes: " << this->GraphicsMemoryBytes << "\n";
 }
 
@@ -418,6 +419,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->NumberOfCountedLights = 0;
   this->NumberOfAveragedLights = 0;
   this->NumberOfPropsWithDepthFromMeshes = 0;
+  this->NumberOfPropsWithCulledDepth = 0;
 
   using Stage = penumbra::StageTimes::Stage;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
@@ -780,6 +782,7 @@ void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
     internals.CasterDepth.Draw(internals.MakeFrame(), internals.DepthFromMeshes);
   this->NumberOfPropsWithDepthFromMeshes =
     static_cast<vtkIdType>(internals.DepthFromMeshes.size() - left.size());
+  this->NumberOfPropsWithCulledDepth = internals.CasterDepth.GetCulledProps();
   this->RenderDepthWithVTK(s, left);
 }
 

@@ -317,8 +317,10 @@ public:
   vtkGetMacro(DepthFromCasterMeshes, bool);
   vtkBooleanMacro(DepthFromCasterMeshes, bool);
   ///@}
-  /// Props whose depth the last frame drew from their caster meshes (DepthFromCasterMeshes).
+  /// Props whose depth the last frame drew from their caster meshes (DepthFromCasterMeshes),
+  /// and those of them drawn with their hidden faces culled (closed casters seen from outside).
   vtkGetMacro(NumberOfPropsWithDepthFromMeshes, vtkIdType);
+  vtkGetMacro(NumberOfPropsWithCulledDepth, vtkIdType);
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -351,6 +353,7 @@ protected:
   bool UseTightDepthRange = true;
   bool DepthFromCasterMeshes = true;
   vtkIdType NumberOfPropsWithDepthFromMeshes = 0;
+  vtkIdType NumberOfPropsWithCulledDepth = 0;
   vtkIdType NumberOfPlateauTriangles = 0;
   int NumberOfCountedLights = 0;
   int NumberOfAveragedLights = 0;

@@ -242,6 +242,46 @@ void TestTightClippingRange(std::mt19937& rng)
       glm::dvec2(0.1, 10),
     "a NaN box keeps the camera's range");
 }
+/// BoxBeyondNearPlane against points of the box: true only where every point lies beyond the
+/// near plane; false for every box that holds the eye; true for many boxes in front of it.
+void TestBoxBeyondNearPlane(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  int beyond = 0, wrong = 0, holdingEye = 0, holdingEyeBeyond = 0;
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    const glm::dvec3 eye(6.0 * u(rng), 6.0 * u(rng), 6.0 * u(rng));
+    const glm::dvec3 centre(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+    const glm::dvec3 half(0.1 + 3.0 * unit(rng), 0.1 + 3.0 * unit(rng), 0.1 + 3.0 * unit(rng));
+    const glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+    const double nearDistance = 0.05 + 2.0 * unit(rng);
+    const glm::dmat4 projection = trial % 4 == 0
+      ? glm::ortho(-5.0, 5.0, -4.0, 4.0, nearDistance, 40.0)
+      : glm::perspective(glm::radians(40.0), 1.3, nearDistance, 40.0);
+    const glm::dmat4 worldToClip = projection * view;
+    const bool said = penumbra::BoxBeyondNearPlane(centre - half, centre + half, worldToClip);
+    bool allBeyond = true;
+    for (int k = 0; k < 200 && allBeyond; ++k)
+    {
+      const glm::dvec3 p = centre + half * glm::dvec3(u(rng), u(rng), u(rng));
+      const glm::dvec4 clip = worldToClip * glm::dvec4(p, 1.0);
+      allBeyond = clip.z + clip.w > 0.0;
+    }
+    beyond += said;
+    wrong += said && !allBeyond;
+    if (glm::all(glm::lessThan(glm::abs(eye - centre), half)))
+    {
+      ++holdingEye;
+      holdingEyeBeyond += said;
+    }
+  }
+  std::printf("     near plane: %d boxes said beyond it (%d wrong), %d boxes hold the eye (%d said "
+              "beyond)\n",
+    beyond, wrong, holdingEye, holdingEyeBeyond);
+  Check(beyond > 100 && wrong == 0, "a box is said beyond the near plane only where all of it is");
+  Check(holdingEye > 0 && holdingEyeBeyond == 0,
+    "a box holding the eye is never beyond the near plane");
+}
 } // namespace
 
 int main()
@@ -350,5 +390,6 @@ int main()
     "draws back faces");
   TestTightClippingRange(rng);
   TestShadowScissor(rng);
+  TestBoxBeyondNearPlane(rng);
   return penumbra_test::Finish();
 }

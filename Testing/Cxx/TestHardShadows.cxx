@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using namespace penumbra_test;
 
@@ -164,6 +165,33 @@ std::size_t PixelsDiffering(const std::vector<float>& a, const std::vector<float
   return differing;
 }
 
+/// Renders `scene` with the casters' depth from their meshes, then drawn by VTK: both must agree
+/// with the truth and with each other; `fromMeshes` props take the mesh depth, `culled` of them
+/// with their hidden faces culled.
+void CompareDepthSources(Scene& scene, const std::string& what, int fromMeshes, int culled)
+{
+  scene.Pass->DepthFromCasterMeshesOn();
+  CheckAgainstTruth(what + ", depth from the caster meshes", scene.Render());
+  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == fromMeshes,
+    what + ": the plain spheres' depth comes from their meshes, the other props' from VTK");
+  Check(scene.Pass->GetNumberOfPropsWithCulledDepth() == culled,
+    what + ": the spheres seen from outside only are drawn with their hidden faces culled");
+  const std::vector<float> meshes = ImageValues(scene.Pass->GetVisibilityImage(0));
+
+  scene.Pass->DepthFromCasterMeshesOff();
+  CheckAgainstTruth(what + ", depth drawn by VTK", scene.Render());
+  Check(
+    scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 0, what + ": off, VTK draws every depth");
+  const std::vector<float> vtk = ImageValues(scene.Pass->GetVisibilityImage(0));
+
+  // The same triangles through another vertex shader: at most a pixel's rounding on a terminator.
+  const std::size_t differing = PixelsDiffering(meshes, vtk, 0.5f);
+  std::printf("    %s: pixels whose visibility differs by more than 0.5: %zu of %zu\n",
+    what.c_str(), differing, vtk.size());
+  Check(!vtk.empty() && differing <= vtk.size() / 1000,
+    what + ": the depth from the meshes shadows as VTK's depth does (at most 0.1% of pixels)");
+}
+
 void TestDepthFromCasterMeshes()
 {
   // Spheres (triangles, plain actors: their depth comes from their caster meshes, closed and
@@ -190,22 +218,19 @@ void TestDepthFromCasterMeshes()
   vtkSoftShadowPass::SetCastsShadows(scene.Sphere(1.0, 0.3, -1.4, 0.3), false);
   scene.Camera(3, 4, 7, 0, 0.5, 0);
 
-  CheckAgainstTruth("depth from the caster meshes", scene.Render());
-  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 3,
-    "the three plain spheres' depth comes from their meshes, the other props' from VTK");
-  const std::vector<float> fromMeshes = ImageValues(scene.Pass->GetVisibilityImage(0));
+  CompareDepthSources(scene, "spheres seen from outside", 3, 3);
+  scene.Pass->DepthFromCasterMeshesOn();
 
-  scene.Pass->DepthFromCasterMeshesOff();
-  CheckAgainstTruth("depth drawn by VTK", scene.Render());
-  Check(scene.Pass->GetNumberOfPropsWithDepthFromMeshes() == 0, "off: VTK draws every depth");
-  const std::vector<float> fromVTK = ImageValues(scene.Pass->GetVisibilityImage(0));
-
-  // The same triangles through another vertex shader: at most a pixel's rounding on a terminator.
-  const std::size_t differing = PixelsDiffering(fromMeshes, fromVTK, 0.5f);
-  std::printf("    pixels whose visibility differs by more than 0.5: %zu of %zu\n", differing,
-    fromVTK.size());
-  Check(!fromVTK.empty() && differing <= fromVTK.size() / 1000,
-    "the casters' depth from their meshes shadows as VTK's depth does (at most 0.1% of pixels)");
+  // The camera inside a closed caster (a sphere around the scene, the light inside it too): its
+  // box holds the eye, so none of its faces may be culled, or the walls would lose their depth.
+  // (Their shadows would not show it here: with nothing beyond the walls, a count taken to the
+  // far plane equals the count at the wall. The culled-props count does.)
+  Scene room(320, 240);
+  room.Sphere(0, 0, 0, 8, 60);
+  room.Sphere(0, 1, 0, 0.8);
+  room.Light->SetPosition(-2, 5, 1);
+  room.Camera(3, 2, 3, 0, 1, 0);
+  CompareDepthSources(room, "the camera inside a closed caster", 2, 1);
 }
 
 } // namespace
