@@ -1,6 +1,7 @@
 #include "vtkRendererSettingsPass.h"
 
 #include "vtkCameraPass.h"
+#include "vtkHardwareSelector.h"
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -8,11 +9,49 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkVolumetricPass.h"
 
+#include <vector>
+
 namespace
 {
+/// vtkViewport::PickFromProps, which VTK 9.1 keeps protected: the props a vtkRenderer::PickProp
+/// call restricts its selection to (nullptr: every prop).
+struct PickFromPropsOf : vtkViewport
+{
+  static vtkPropCollection* Get(vtkViewport* viewport)
+  {
+    return viewport->*(&PickFromPropsOf::PickFromProps);
+  }
+};
+
+/// A selection render (vtkHardwareSelector, vtkPropPicker, vtkRenderer::PickProp) as
+/// vtkRenderer::UpdateGeometry sends it when the renderer has no pass: every prop, or those it
+/// picks from, drawn by the selector with their ids. Returns the props drawn.
+int RenderForSelection(
+  vtkRenderer* renderer, vtkHardwareSelector* selector, const vtkRenderState* s)
+{
+  vtkPropCollection* pickFrom = PickFromPropsOf::Get(renderer);
+  if (!pickFrom)
+  {
+    return selector->Render(renderer, s->GetPropArray(), s->GetPropArrayCount());
+  }
+  std::vector<vtkProp*> props;
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (pickFrom->InitTraversal(it); (prop = pickFrom->GetNextProp(it));)
+  {
+    if (prop->GetVisibility())
+    {
+      props.push_back(prop);
+    }
+  }
+  return props.empty() ? 0
+                       : selector->Render(renderer, props.data(), static_cast<int>(props.size()));
+}
+
 /// What runs inside the camera pass: VTK's steps after the camera, as DeviceRender orders them.
 class vtkRendererSettingsSteps : public vtkRenderPass
 {
@@ -26,6 +65,11 @@ public:
     auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
     if (!renderer)
     {
+      return;
+    }
+    if (vtkHardwareSelector* selector = renderer->GetSelector())
+    {
+      this->NumberOfRenderedProps = RenderForSelection(renderer, selector, s);
       return;
     }
     const int before = renderer->GetNumberOfPropsRendered();

@@ -15,6 +15,8 @@
  *   order-independent translucency;
  * - FXAA (UseFXAA, FXAAOptions), before volumes and overlays as in VTK;
  * - volumes (unless depth peeling already drew them, UseDepthPeelingForVolumes) and overlays.
+ * A selection render (vtkHardwareSelector, vtkPropPicker, vtkRenderer::PickProp) draws the props
+ * through the renderer's selector instead, as vtkRenderer does without a pass.
  *
  * It is vtkSoftShadowPass's default delegate, so that a renderer looks the same with and
  * without shadows wherever the shadows are not.

@@ -428,7 +428,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
   internals.Lights.clear();
   internals.ApplyShadows = false;
-  if (this->ShadowsEnabled && window)
+  // A selection render (picking) draws ids, not light: the delegate draws it, unshadowed.
+  if (this->ShadowsEnabled && window && !renderer->GetSelector())
   {
     internals.Window = window;
     renderer->GetTiledSizeAndOrigin(

@@ -1,13 +1,19 @@
 // The pass's contracts as a VTK render pass: caching and headlights, compositing into VTK's
-// shading (attenuation, exclusions, PBR), viewports, lights and resizes, render-pass chains and
-// bad input.
+// shading (attenuation, exclusions, PBR), viewports, lights and resizes, render-pass chains, bad
+// input and picking.
 #include "penumbraTestHarness.h"
 
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkCoordinate.h"
+#include "vtkDataObject.h"
+#include "vtkHardwareSelector.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
@@ -16,8 +22,12 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPropCollection.h"
+#include "vtkPropPicker.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkSelection.h"
+#include "vtkSelectionNode.h"
 #include "vtkSequencePass.h"
 #include "vtkSphereSource.h"
 #include "vtkTranslucentPass.h"
@@ -27,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <vector>
 
 using namespace penumbra_test;
@@ -299,6 +310,72 @@ void TestDelegateChain()
     "vtkRenderStepsPass: lit pixels as VTK's steps draw them without the pass");
 }
 
+/// Picking with the pass set: vtkHardwareSelector's selection renders go through the renderer's
+/// selector (vtkRendererSettingsPass), with no shadow work; the shadows come back after.
+void TestPicking()
+{
+  Scene scene;
+  vtkActor* ground = scene.Ground();
+  vtkActor* sphere = scene.Sphere(0, 1, 0, 0.6);
+  vtkActor* box = scene.Box(1.6, 0.4, 0.8, 0.6, 0.8, 0.6);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  scene.Window->Render();
+  Check(scene.Pass->GetNumberOfShadowingLights() == 1, "picking: the scene is shadowed");
+
+  auto display = [&](double x, double y, double z)
+  {
+    vtkNew<vtkCoordinate> world;
+    world->SetCoordinateSystemToWorld();
+    world->SetValue(x, y, z);
+    const double* d = world->GetComputedDoubleDisplayValue(scene.Renderer);
+    return std::array<double, 2>{ { d[0], d[1] } };
+  };
+  vtkNew<vtkCallbackCommand> onError;
+  int errors = 0;
+  onError->SetClientData(&errors);
+  onError->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+
+  vtkNew<vtkPropPicker> picker;
+  picker->AddObserver(vtkCommand::ErrorEvent, onError);
+  const std::array<double, 2> atSphere = display(0, 1, 0), atGround = display(0.5, 0, 2.5);
+  picker->Pick(atSphere[0], atSphere[1], 0, scene.Renderer);
+  const bool sphereFound = picker->GetViewProp() == sphere;
+  picker->Pick(atGround[0], atGround[1], 0, scene.Renderer);
+  Check(sphereFound && picker->GetViewProp() == ground,
+    "picking: vtkPropPicker finds the sphere and the ground under their pixels");
+
+  vtkNew<vtkHardwareSelector> selector;
+  selector->AddObserver(vtkCommand::ErrorEvent, onError);
+  selector->SetRenderer(scene.Renderer);
+  const int* size = scene.Window->GetSize();
+  selector->SetArea(0, 0, size[0] - 1, size[1] - 1);
+  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
+  vtkSmartPointer<vtkSelection> selection = vtkSmartPointer<vtkSelection>::Take(selector->Select());
+  std::set<vtkProp*> selected;
+  for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
+  {
+    vtkInformation* properties = selection->GetNode(n)->GetProperties();
+    selected.insert(vtkProp::SafeDownCast(properties->Get(vtkSelectionNode::PROP())));
+  }
+  Check(selected == std::set<vtkProp*>{ ground, sphere, box },
+    "picking: a hardware selection over the view holds the ground, the sphere and the box");
+  // Picking from a list: the sphere's pixel gives the ground behind it. (Last: VTK keeps the
+  // list for later selections of the renderer.)
+  vtkNew<vtkPropCollection> onlyGround;
+  onlyGround->AddItem(ground);
+  vtkAssemblyPath* path = scene.Renderer->PickPropFrom(atSphere[0], atSphere[1], onlyGround);
+  Check(path && path->GetFirstNode()->GetViewProp() == ground,
+    "picking: PickPropFrom a list of props picks among them only");
+
+  Check(errors == 0, "picking: no errors from the picker or the selector");
+
+  scene.Window->Render();
+  Check(scene.Pass->GetNumberOfShadowingLights() == 1 &&
+      scene.Pass->GetNumberOfShadowVolumeTriangles() > 0,
+    "picking: the shadows come back after the selection");
+}
+
 void TestBadInput()
 {
   Scene scene;
@@ -375,6 +452,7 @@ int main(int argc, char* argv[])
     { "ViewportsLightsAndResize", TestViewportsLightsAndResize },
     { "DelegateChain", TestDelegateChain },
     { "BadInput", TestBadInput },
+    { "Picking", TestPicking },
   };
   return RunFeatures(argc, argv, features);
 }
