@@ -5,19 +5,19 @@
 
 N spheres of 264 triangles share one polydata (each its own vtkActor, as an application placing
 objects would make them) over a ground plane, one point light, hard shadows, 1024x768. Each round
-times the unshadowed frame, then the pass with DepthFromCasterMeshes on and off, and prints the
-medians and the depth stage of one timed frame (CollectStageTimes) for each.
+times the unshadowed frame, then the pass with DepthFromCasterMeshes on and off (medians of
+frames with the camera turning, frame_timing.py), and prints the depth stage of one more frame
+(CollectStageTimes) for each.
 """
 import argparse
 import math
-import statistics
-import time
 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
 import penumbra
+from frame_timing import median_frame_ms
 
 
 def main():
@@ -59,13 +59,8 @@ def main():
     def run(with_pass, depth_from_meshes=True):
         renderer.SetPass(shadows if with_pass else None)
         shadows.SetDepthFromCasterMeshes(depth_from_meshes)
-        times = []
-        for _ in range(args.frames + 2):
-            start = time.perf_counter()
-            window.Render()
-            window.WaitForCompletion()
-            times.append(time.perf_counter() - start)
-        median = statistics.median(times[2:]) * 1000.0
+        window.Render()  # warm-up: shader builds, topology, uploads
+        median = median_frame_ms(window, renderer, args.frames, 0.5)
         if not with_pass:
             return median, None, 0
         shadows.CollectStageTimesOn()
