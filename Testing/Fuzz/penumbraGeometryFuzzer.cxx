@@ -310,6 +310,20 @@ void CheckTopology(const CasterTopology& topo)
     "every triangle side is one edge use");
   Require(!topo.ClosedAndOriented || (r.BoundaryEdges == 0 && r.NonManifoldEdges == 0),
     "closed meshes have no boundary");
+  // Turning every triangle turns the winding; only a closed mesh has one.
+  const int winding = topo.OutwardWinding();
+  Require(winding >= -1 && winding <= 1 && (topo.ClosedAndOriented || winding == 0),
+    "only closed meshes wind outward or inward");
+  CasterTopology turned = topo;
+  for (glm::uvec3& t : turned.Triangles)
+  {
+    std::swap(t.y, t.z);
+  }
+  for (EdgeUse& use : turned.Uses)
+  {
+    use.Sign = -use.Sign;
+  }
+  Require(turned.OutwardWinding() == -winding, "turning every triangle turns the winding");
 }
 
 void CheckIndices(
