@@ -310,8 +310,9 @@ public:
    * Whether the pass draws the depth it counts shadows against from its casters' cached meshes,
    * for the props VTK draws as nothing but their polydata's triangles (a plain actor with a
    * polydata mapper, a surface with no edges, clipping planes or custom shaders; see
-   * penumbraCasterDepth.h): one position-only draw each instead of VTK's full shaders. The
-   * depth is the same; on by default. Off, VTK draws every prop's depth.
+   * penumbraCasterDepth.h): one position-only draw each instead of VTK's full shaders, and a
+   * closed caster seen from outside only with its hidden faces culled. The depth is the same; on
+   * by default. Off, VTK draws every prop's depth.
    */
   vtkSetMacro(DepthFromCasterMeshes, bool);
   vtkGetMacro(DepthFromCasterMeshes, bool);
