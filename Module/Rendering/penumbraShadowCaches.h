@@ -137,11 +137,6 @@ struct WedgeBuffer : WedgeGeometry
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;
   bool Uploaded = false;
-  /// Every triangle, for its depth (penumbra::CasterDepth); uploaded on first use.
-  vtkNew<vtkOpenGLBufferObject> TriangleIndices;
-  bool TrianglesUploaded = false;
-  int Winding = 0;
-  std::size_t WindingGeneration = 0; ///< the Generation Winding was worked out for; 0: none
   bool Used = false;
 
   /// The light in wedge coordinates, as the wedge shaders want it.
