@@ -115,8 +115,9 @@ struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
  * pages cost about as much as the build itself at a million triangles. The point and triangle
  * passes and the edge work run in parallel (vtkSMPTools), in fixed chunks, so the result does
  * not depend on the threads. Triangles-only data with float or double points is read in place
- * and the scratch held is 16 bytes a point and 1 a triangle (about 9 a triangle); other cells
- * and point types add their triangulated or converted copy.
+ * and the scratch held is 1 byte a triangle and 12 bytes a point, plus 4 a point for each part
+ * the half-edge grouping counts in parallel (one per thread, at most four): about 9 to 15 bytes
+ * a triangle. Other cells and point types add their triangulated or converted copy.
  */
 class VTKPENUMBRAGEOMETRY_EXPORT TopologyBuilder
 {

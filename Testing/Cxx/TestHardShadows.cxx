@@ -154,17 +154,6 @@ void TestBackgroundStaysLit()
   Check(background > 0 && dark == 0, "the background stays lit in the visibility image");
 }
 
-/// Pixels where two visibility images differ by more than `by`.
-std::size_t PixelsDiffering(const std::vector<float>& a, const std::vector<float>& b, float by)
-{
-  std::size_t differing = std::max(a.size(), b.size()) - std::min(a.size(), b.size());
-  for (std::size_t p = 0; p < a.size() && p < b.size(); ++p)
-  {
-    differing += std::abs(a[p] - b[p]) > by ? 1 : 0;
-  }
-  return differing;
-}
-
 /// Renders `scene` with the casters' depth from their meshes, then drawn by VTK: both must agree
 /// with the truth and with each other; `fromMeshes` props take the mesh depth, `culled` of them
 /// with their hidden faces culled.
@@ -185,7 +174,7 @@ void CompareDepthSources(Scene& scene, const std::string& what, int fromMeshes, 
   const std::vector<float> vtk = ImageValues(scene.Pass->GetVisibilityImage(0));
 
   // The same triangles through another vertex shader: at most a pixel's rounding on a terminator.
-  const std::size_t differing = PixelsDiffering(meshes, vtk, 0.5f);
+  const std::size_t differing = static_cast<std::size_t>(PixelsApart(meshes, vtk));
   std::printf("    %s: pixels whose visibility differs by more than 0.5: %zu of %zu\n",
     what.c_str(), differing, vtk.size());
   Check(!vtk.empty() && differing <= vtk.size() / 1000,

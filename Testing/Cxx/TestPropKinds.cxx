@@ -122,17 +122,6 @@ std::vector<float> TruthOf(View& view)
   return truth->Update() ? ImageValues(truth->GetVisibilityImage(0)) : std::vector<float>();
 }
 
-/// Pixels where two visibility images of one size are more than 0.5 apart.
-int PixelsApart(const std::vector<float>& a, const std::vector<float>& b)
-{
-  int apart = 0;
-  for (std::size_t i = 0; i < a.size() && a.size() == b.size(); ++i)
-  {
-    apart += std::abs(a[i] - b[i]) > 0.5f;
-  }
-  return apart;
-}
-
 void CompareScenes(const std::string& name, const std::function<void(vtkRenderer*)>& kind,
   const std::function<void(vtkRenderer*)>& plain, double visibilityTolerance = 0.002,
   double colourTolerance = 0.005)

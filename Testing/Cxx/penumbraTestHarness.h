@@ -167,6 +167,17 @@ struct WarningLog
   }
 };
 
+/// Pixels where two visibility images are more than 0.5 apart; a pixel one of them lacks counts.
+inline int PixelsApart(const std::vector<float>& a, const std::vector<float>& b)
+{
+  int apart = static_cast<int>(std::max(a.size(), b.size()) - std::min(a.size(), b.size()));
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    apart += std::abs(a[i] - b[i]) > 0.5f;
+  }
+  return apart;
+}
+
 /// The values of a float image (a visibility or depth image), in VTK's point order.
 inline std::vector<float> ImageValues(vtkImageData* image)
 {
