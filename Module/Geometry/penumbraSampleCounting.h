@@ -134,8 +134,8 @@ VTKPENUMBRAGEOMETRY_EXPORT bool EdgePlaneMissesSamples(const glm::dvec3& p, cons
 struct CountingCost
 {
   std::size_t PotentialEdges = 0;  ///< potential silhouette edges: counting draws one wedge each
-  std::size_t SilhouetteEdges = 0; ///< the centre silhouette's edges: averaging sweeps about as
-                                   ///< many for every sample
+  std::size_t SilhouetteEdges = 0; ///< the centre silhouette's distinct edges: averaging draws
+                                   ///< about as many sides for every sample, each once
   double AngularRadius = 0.0;      ///< the light's radius over its distance, or a sun's radius
 };
 
@@ -144,16 +144,16 @@ struct CountingCost
  * wedges, cut to the receivers and to the edges' silhouette sectors) should take less time than
  * averaging as many hard shadows (one volume pass each). Both give the same image, so a wrong
  * guess costs time, never accuracy. Fitted to the benchmark on llvmpipe at 1024x768
- * (Documentation/wedges.md, "Cost": 16 rows, four scenes, two radii, 16 and 64 samples, after
- * z-pass volumes stopped beyond the scene): the ratio
- * grows with the potential silhouette P against the centre silhouette S, and with the light's
+ * (Documentation/wedges.md, "Cost": 24 rows, six scenes, two radii, 16 and 64 samples, after
+ * averaging began to draw each side of an open caster's volume once): the ratio grows with the
+ * potential silhouette P against the centre silhouette's distinct edges E, and with the light's
  * angular radius rho (the penumbra, and how many edges cross the light seen from a pixel), and
  * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
  * a wedge reaches):
  *
- *   counting / averaging = 0.81 (P / S)^0.72 (rho / 0.016)^0.65 (16 / N)^0.66,
+ *   counting / averaging = 0.89 (P / E)^0.68 (rho / 0.016)^0.83 (16 / N)^0.64,
  *
- * P and S summed over the casters, rho averaged over them weighted by S.
+ * P and E summed over the casters, rho averaged over them weighted by E.
  */
 VTKPENUMBRAGEOMETRY_EXPORT bool CountingIsCheaper(
   const std::vector<CountingCost>& casters, int samples);

@@ -94,10 +94,7 @@ bool CountingTechnique::IsCheaper(
     }
     CountingCost cost;
     cost.PotentialEdges = caster->CountingWedges[light.Light].Potential.size();
-    for (const SilhouetteEdge& edge : caster->Volumes[light.VolumeKey(0)].Volume.Silhouette)
-    {
-      cost.SilhouetteEdges += edge.Multiplicity;
-    }
+    cost.SilhouetteEdges = caster->Volumes[light.VolumeKey(0)].Volume.Silhouette.size();
     if (light.World.w != 0.0)
     {
       const double distance =
