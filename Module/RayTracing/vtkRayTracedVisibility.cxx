@@ -39,6 +39,8 @@
 #include "vtkOpenGLMoleculeMapper.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -54,6 +56,7 @@
 
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <array>
@@ -78,7 +81,38 @@ struct Mesh
   /// Below 1: a translucent surface, invisible to the eye rays (the pass shadows the nearest
   /// opaque surface) and letting 1 - Opacity of a shadow ray through at each crossing.
   double Opacity = 1.0;
+  /// The mapper's clipping planes as (n, offset), world coordinates until the scene is moved
+  /// next to the origin, then relative to it: VTK draws no point where n . x + offset < 0, so
+  /// no ray hits one (ClipHits).
+  std::vector<glm::dvec4> ClipPlanes;
 };
+
+/// Embree's filter for meshes with clipping planes: a hit on a clipped side is no hit, as VTK's
+/// fragment shader discards it. During the filter a ray's tfar is the candidate hit's distance.
+void ClipHits(const RTCFilterFunctionNArguments* args)
+{
+  const auto* planes = static_cast<const std::vector<glm::dvec4>*>(args->geometryUserPtr);
+  for (unsigned int i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] != -1)
+    {
+      continue;
+    }
+    const double t = RTCRayN_tfar(args->ray, args->N, i);
+    const glm::dvec3 hit(
+      RTCRayN_org_x(args->ray, args->N, i) + t * RTCRayN_dir_x(args->ray, args->N, i),
+      RTCRayN_org_y(args->ray, args->N, i) + t * RTCRayN_dir_y(args->ray, args->N, i),
+      RTCRayN_org_z(args->ray, args->N, i) + t * RTCRayN_dir_z(args->ray, args->N, i));
+    for (const glm::dvec4& plane : *planes)
+    {
+      if (glm::dot(glm::dvec3(plane), hit) + plane.w < 0.0)
+      {
+        args->valid[i] = 0;
+        break;
+      }
+    }
+  }
+}
 
 /// What the shadow rays of one light need, positions relative to the scene origin.
 struct ShadowLight
@@ -263,6 +297,12 @@ public:
   void AddGeometry(RTCScene scene, unsigned int id, const Mesh& mesh)
   {
     RTCGeometry geometry = mesh.Spheres.empty() ? this->NewTriangles(mesh) : this->NewSpheres(mesh);
+    if (!mesh.ClipPlanes.empty())
+    {
+      rtcSetGeometryUserData(geometry, const_cast<std::vector<glm::dvec4>*>(&mesh.ClipPlanes));
+      rtcSetGeometryIntersectFilterFunction(geometry, ClipHits);
+      rtcSetGeometryOccludedFilterFunction(geometry, ClipHits);
+    }
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene, geometry, id);
     rtcReleaseGeometry(geometry);
@@ -498,7 +538,7 @@ vtkSmartPointer<vtkImageData> NewImage(int width, int height, const char* name, 
 
 /// Appends the surface triangles of one dataset, transformed by `matrix`, to `meshes`.
 void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, double opacity,
-  std::vector<Mesh>& meshes)
+  std::vector<Mesh>& meshes, const std::vector<glm::dvec4>& clipPlanes = {})
 {
   vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(data);
   if (!poly)
@@ -529,6 +569,7 @@ void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, do
   Mesh mesh;
   mesh.Casts = casts;
   mesh.Opacity = opacity;
+  mesh.ClipPlanes = clipPlanes;
   mesh.Points.reserve(static_cast<std::size_t>(points->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
   {
@@ -1039,6 +1080,21 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     }
     return;
   }
+  // Lines and points: a wireframe or points representation draws no surface.
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    return;
+  }
+  // VTK's shaders clip by the first six planes, each keeping the side its normal points to.
+  std::vector<glm::dvec4> clipPlanes;
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    for (int i = 0; i < std::min(planes->GetNumberOfItems(), 6); ++i)
+    {
+      const glm::dvec3 n = glm::make_vec3(planes->GetItem(i)->GetNormal());
+      clipPlanes.emplace_back(n, -glm::dot(n, glm::make_vec3(planes->GetItem(i)->GetOrigin())));
+    }
+  }
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::vector<std::pair<vtkDataObject*, double>> leaves;
   VisibleLeaves(mapper->GetInputDataObject(0, 0),
@@ -1057,7 +1113,7 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     const double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
     if (!glyphs)
     {
-      CollectDataSet(leaf.first, matrix, casts, leafOpacity, meshes);
+      CollectDataSet(leaf.first, matrix, casts, leafOpacity, meshes, clipPlanes);
     }
     else if (points)
     {
@@ -1178,6 +1234,10 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
     for (glm::dvec4& sphere : mesh.Spheres)
     {
       sphere -= glm::dvec4(this->Origin, 0.0);
+    }
+    for (glm::dvec4& plane : mesh.ClipPlanes)
+    {
+      plane.w += glm::dot(glm::dvec3(plane), this->Origin);
     }
     // Ids are indices into Meshes in every scene: a hit finds its mesh's plane or opacity.
     const unsigned int id = static_cast<unsigned int>(i);

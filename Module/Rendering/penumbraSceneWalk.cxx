@@ -89,6 +89,14 @@ bool DrawsImposters(vtkMapper* mapper)
   return mapper->IsA("vtkPointGaussianMapper");
 }
 
+/// Mappers that draw spheres or sticks as imposters, for which the walk casts tessellated
+/// stand-ins (SceneWalk::Spheres, Sticks, Molecule); VTK draws them whatever the representation.
+bool DrawsImposterInstances(vtkMapper* mapper)
+{
+  return vtkOpenGLSphereMapper::SafeDownCast(mapper) ||
+    vtkOpenGLStickMapper::SafeDownCast(mapper) || vtkOpenGLMoleculeMapper::SafeDownCast(mapper);
+}
+
 /// Whether VTK's imposter mappers read `array` as it is: they take it as floats, `components`
 /// to a point, for every point (GetVoidPointer). Another type or layout they draw from garbage
 /// or from past the array's end.
@@ -299,6 +307,7 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
       surfaces[i].ViewProp = prop;
     }
   }
+  this->Clipped.PurgeUnused();
   return surfaces;
 }
 
@@ -376,6 +385,22 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
         ", whose imposters have no triangles: it casts no shadow");
     return;
   }
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE && !DrawsImposterInstances(mapper))
+  {
+    this->Warn(owner, leaf,
+      "is drawn as a wireframe or as points (vtkProperty::SetRepresentation): lines and points "
+      "cast no shadow");
+    return;
+  }
+  if (mapper->GetNumberOfClippingPlanes() > 0 &&
+    (DrawsImposterInstances(mapper) || vtkGlyph3DMapper::SafeDownCast(mapper)))
+  {
+    this->Warn(owner, leaf,
+      std::string("has clipping planes, which shadows follow for vtkPolyDataMapper and "
+                  "vtkCompositePolyDataMapper2 only, not for its ") +
+        mapper->GetClassName() + ": it casts no shadow");
+    return;
+  }
   if (this->Instances(actor, mapper, matrix, owner, surfaces))
   {
     return;
@@ -428,7 +453,10 @@ void SceneWalk::Blocks(vtkActor* actor, bool composite,
   {
     return;
   }
-  surfaces.push_back({ actor, node, matrix, index, drawn.Opacity, drawn.SeenThrough });
+  if (vtkDataObject* clipped = this->Clipped.Apply(actor, index, node, matrix))
+  {
+    surfaces.push_back({ actor, clipped, matrix, index, drawn.Opacity, drawn.SeenThrough });
+  }
 }
 
 void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix,

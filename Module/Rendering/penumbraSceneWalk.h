@@ -9,8 +9,10 @@
  * vtkOpenGLStickMapper (particles; a vtkMoleculeMapper's atoms and bonds), cast as tessellated
  * spheres and cylinders, and the parts of vtkAxesActor and vtkAnnotatedCubeActor. The walk follows
  * what VTK draws, not what a mapper's input holds: a glyph mapper's input points (a seed plane, an
- * image's bounding box) are never drawn and never cast. What VTK draws but no shadow volume can be
- * built from (point-gaussian splats, volumes, image slices) gets one warning per prop and reason.
+ * image's bounding box) are never drawn and never cast. A surface under its mapper's clipping
+ * planes casts as cut by them (ClippedSurfaces). What VTK draws but no shadow volume can be built
+ * from (point-gaussian splats, volumes, image slices, wireframes and points) gets one warning per
+ * prop and reason.
  *
  * The ray tracer (vtkRayTracedVisibility) walks the scene its own way, through VTK's filters,
  * so that a mistake here shows against it.
@@ -18,6 +20,7 @@
 #ifndef penumbraSceneWalk_h
 #define penumbraSceneWalk_h
 
+#include "penumbraClippedSurfaces.h"
 #include "penumbraPropWarnings.h"
 
 #include "vtkSmartPointer.h"
@@ -117,6 +120,8 @@ private:
   void Warn(vtkObject* owner, vtkProp* prop, const std::string& reason);
 
   PropWarnings Warned;
+  /// Surfaces cut by their mapper's clipping planes, as VTK draws them.
+  ClippedSurfaces Clipped;
   /// The caster of every imposter sphere (penumbra::ImposterSphereMesh), built on first use:
   /// one topology, instanced by the spheres' matrices.
   vtkSmartPointer<vtkPolyData> UnitSphere;

@@ -227,6 +227,7 @@ public:
    * The last frame's light intensity for the i-th light of the renderer's light collection, as a
    * one-component float image of the viewport's size (1 lit, 0 in shadow; background 1), or
    * nullptr for a light that cast no shadow. Reads the GPU buffer back: not for every frame.
+   * A pass set on several renderers holds the last renderer's frame.
    */
   vtkImageData* GetVisibilityImage(int lightIndex);
 

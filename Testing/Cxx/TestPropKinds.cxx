@@ -19,6 +19,7 @@
 #include "vtkBitArray.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkClipPolyData.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
@@ -45,11 +46,13 @@
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkProp3DCollection.h"
 #include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
@@ -61,6 +64,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTexture.h"
 #include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -571,6 +575,175 @@ void TestMultiBlock()
       translucent->GetProperty()->SetOpacity(0.4);
       r->AddActor(translucent);
     });
+}
+
+//------------------------------------------------------------------------------
+/// A plane through `origin` keeping the side `normal` points to.
+vtkSmartPointer<vtkPlane> KeepPlane(
+  double ox, double oy, double oz, double nx, double ny, double nz)
+{
+  auto plane = vtkSmartPointer<vtkPlane>::New();
+  plane->SetOrigin(ox, oy, oz);
+  plane->SetNormal(nx, ny, nz);
+  return plane;
+}
+
+/// The surface `placed` draws when its mapper clips by `planes`, built the long way: `source`
+/// moved to world coordinates by the actor's matrix (vtkTransformPolyDataFilter), then cut by
+/// each world plane (vtkClipPolyData), drawn by an actor at the identity. vtkClipPolyData
+/// merges coincident points, so a box's corners keep one face's normal: `faceted` puts each
+/// face's normal back (vtkPolyDataNormals, split at the box's edges).
+vtkSmartPointer<vtkActor> ClippedByFilters(vtkAlgorithm* source, vtkActor* placed,
+  const std::vector<vtkPlane*>& planes, bool faceted = false)
+{
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(placed->GetMatrix());
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetTransform(transform);
+  moved->SetInputConnection(source->GetOutputPort());
+  vtkSmartPointer<vtkAlgorithm> last = moved.Get();
+  for (vtkPlane* plane : planes)
+  {
+    vtkNew<vtkClipPolyData> clip;
+    clip->SetClipFunction(plane);
+    clip->SetInputConnection(last->GetOutputPort());
+    last = clip.Get();
+  }
+  if (faceted)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(last->GetOutputPort());
+    normals->SplittingOn();
+    normals->ConsistencyOff();
+    normals->AutoOrientNormalsOff();
+    last = normals.Get();
+  }
+  return MakeActor(last, 1, 1, 1);
+}
+
+void TestClippingPlanes()
+{
+  // A sphere cut open at the top and a box cut open at one side, each moved and turned by its
+  // actor (so that the data's coordinates are not the world's): VTK draws only the kept parts,
+  // whose shadows fall through the openings onto the insides. The planes miss every vertex, so
+  // the cut leaves no zero-area triangle to warn about.
+  auto sphere = SphereSource(0.0, 1.1, 0.0, 0.8, 32, 16);
+  auto box = BoxSource(0.0, 0.8, 0.0, 0.9, 1.2, 0.9);
+  auto top = KeepPlane(0.0, 1.37, 0.0, 0.2, -1.0, 0.15);
+  auto side = KeepPlane(1.23, 0.0, 0.27, 0.3, 0.1, -1.0);
+  auto lid = KeepPlane(0.0, 1.13, 0.0, 0.1, -1.0, -0.2);
+  auto place = [](vtkActor* actor, double x, double angle)
+  {
+    actor->SetPosition(x, 0.1, 0.2);
+    actor->RotateY(angle);
+  };
+  CompareScenes(
+    "clipping planes (a cut sphere, a cut box)",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      auto bowl = MakeActor(sphere, 1, 1, 1);
+      place(bowl, -0.9, 25.0);
+      bowl->GetMapper()->AddClippingPlane(top);
+      r->AddActor(bowl);
+      auto open = MakeActor(box, 1, 1, 1);
+      place(open, 1.2, -20.0);
+      open->GetMapper()->AddClippingPlane(side);
+      open->GetMapper()->AddClippingPlane(lid);
+      r->AddActor(open);
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      auto bowl = MakeActor(sphere, 1, 1, 1);
+      place(bowl, -0.9, 25.0);
+      r->AddActor(ClippedByFilters(sphere, bowl, { top }));
+      auto open = MakeActor(box, 1, 1, 1);
+      place(open, 1.2, -20.0);
+      r->AddActor(ClippedByFilters(box, open, { side, lid }, true));
+    });
+
+  // The same through vtkCompositePolyDataMapper2, which hands its planes to each block.
+  sphere->Update();
+  box->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, sphere->GetOutput());
+  blocks->SetBlock(1, box->GetOutput());
+  auto split = KeepPlane(0.0, 0.0, 0.31, 0.15, 0.05, -1.0);
+  CompareScenes(
+    "clipping planes of a composite mapper",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkCompositePolyDataMapper2> mapper;
+      mapper->SetInputDataObject(blocks);
+      mapper->ScalarVisibilityOff();
+      mapper->AddClippingPlane(split);
+      auto actor = LitActor(mapper);
+      place(actor, 0.3, 15.0);
+      r->AddActor(actor);
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkActor> placed;
+      place(placed, 0.3, 15.0);
+      r->AddActor(ClippedByFilters(sphere, placed, { split }));
+      r->AddActor(ClippedByFilters(box, placed, { split }, true));
+    });
+
+  // Soft shadows: averaged and counted hard shadows drew dark "ghosts" of the clipped-away
+  // parts (volumes open where VTK draws no depth); with the cut casters each equals the plain
+  // scene's.
+  for (const int method : { vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS,
+         vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES })
+  {
+    View clipped, plain;
+    for (View* view : { &clipped, &plain })
+    {
+      view->Pass->SetMethod(method);
+      view->Pass->SetLightSamples(16);
+      vtkSoftShadowPass::SetLightRadius(view->Light, 0.3);
+      Ground(view->Renderer);
+    }
+    auto bowl = MakeActor(sphere, 1, 1, 1);
+    place(bowl, -0.9, 25.0);
+    bowl->GetMapper()->AddClippingPlane(top);
+    clipped.Renderer->AddActor(bowl);
+    plain.Renderer->AddActor(ClippedByFilters(sphere, bowl, { top }));
+    clipped.Render();
+    plain.Render();
+    const int apart = PixelsApart(clipped.Visibility(), plain.Visibility());
+    std::printf("clipping planes, %s: %d px differ by more than 0.5 from the cut scene\n",
+      clipped.Pass->GetMethodAsString(), apart);
+    Check(apart <= 0.002 * Width * Height,
+      std::string("clipping planes, ") + clipped.Pass->GetMethodAsString() +
+        ": shadows as the cut scene's");
+  }
+
+  // Moving a plane between frames moves the shadow: the cut is redone, not kept.
+  View moving, fresh;
+  Ground(moving.Renderer);
+  Ground(fresh.Renderer);
+  auto cut = KeepPlane(0.0, 1.37, 0.0, 0.2, -1.0, 0.15);
+  auto lowered = KeepPlane(0.0, 0.93, 0.0, 0.2, -1.0, 0.15);
+  auto bowl = MakeActor(sphere, 1, 1, 1);
+  bowl->GetMapper()->AddClippingPlane(cut);
+  moving.Renderer->AddActor(bowl);
+  auto lowBowl = MakeActor(sphere, 1, 1, 1);
+  lowBowl->GetMapper()->AddClippingPlane(lowered);
+  fresh.Renderer->AddActor(lowBowl);
+  moving.Render();
+  const std::vector<float> before = moving.Visibility();
+  cut->SetOrigin(lowered->GetOrigin());
+  moving.Render();
+  fresh.Render();
+  const int moved = PixelsApart(before, moving.Visibility());
+  const int apart = PixelsApart(moving.Visibility(), fresh.Visibility());
+  std::printf(
+    "moving a clipping plane: %d px change; %d px differ from a fresh render\n", moved, apart);
+  Check(moved > Width * Height / 200, "moving a clipping plane changes the shadow");
+  Check(apart <= 0.002 * Width * Height, "the moved plane shadows as a fresh render of it");
 }
 
 //------------------------------------------------------------------------------
@@ -1165,6 +1338,23 @@ void TestWarnings()
   lineAxes->SetUserTransform(away);
   view.Renderer->AddViewProp(lineAxes);
 
+  // A sphere drawn as its wireframe, in view over lit ground: VTK draws lines, which cast
+  // nothing (one warning). The truth traces no lines, so a shadow of the sphere would show as
+  // wrong pixels against it; the lines themselves, over lit ground, compare lit either way.
+  auto wires = MakeActor(SphereSource(2.2, 1.0, 2.6, 0.35, 16, 8), 0.9, 0.9, 0.9);
+  wires->GetProperty()->SetRepresentationToWireframe();
+  view.Renderer->AddActor(wires);
+  // Glyphs with a clipping plane (out of view): the shadows do not follow a glyph mapper's
+  // planes, so it casts nothing, with one warning.
+  vtkNew<vtkGlyph3DMapper> clippedGlyphs;
+  clippedGlyphs->SetInputData(points);
+  clippedGlyphs->SetSourceConnection(cone->GetOutputPort());
+  clippedGlyphs->AddClippingPlane(KeepPlane(0.0, 0.5, 0.0, 0.0, -1.0, 0.0));
+  vtkNew<vtkActor> clippedGlyphActor;
+  clippedGlyphActor->SetMapper(clippedGlyphs);
+  clippedGlyphActor->SetPosition(-50.0, 0.0, 0.0);
+  view.Renderer->AddActor(clippedGlyphActor);
+
   const WarningLog log(view.Pass);
   const std::vector<std::string>& warnings = log.Messages;
   view.Render();
@@ -1185,7 +1375,10 @@ void TestWarnings()
   Check(count("Lighting off") == 1, "an actor with Lighting off: one warning");
   Check(count("part of vtkAxesActor") == 1 && count("no surface triangles") == 1,
     "vtkAxesActor's line shafts: one warning, naming the axes");
-  Check(warnings.size() == 9, "no other warning");
+  Check(count("drawn as a wireframe") == 1, "a wireframe sphere: one warning");
+  Check(count("has clipping planes") == 1 && count("vtkOpenGLGlyph3DMapper") == 1,
+    "glyphs with a clipping plane: one warning naming the mapper");
+  Check(warnings.size() == 11, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
@@ -1203,6 +1396,7 @@ int main()
   TestGlyphsByDirectionClampingAndIndex();
   TestGlyphsByQuaternionTableAndClamping();
   TestMultiBlock();
+  TestClippingPlanes();
   TestAssembly();
   TestAxesActor();
   TestAnnotatedCube();

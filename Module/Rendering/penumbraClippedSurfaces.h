@@ -1,0 +1,67 @@
+/**
+ * @file   penumbraClippedSurfaces.h
+ * @brief  A mapper's clipping planes applied to the surface it draws, as VTK's shaders apply
+ *         them, and kept between frames.
+ *
+ * vtkOpenGLPolyDataMapper (and so vtkCompositePolyDataMapper2) discards every fragment on the
+ * negative side of any of its first six clipping planes (world coordinates; the normal points to
+ * what is kept). Casting the whole surface would shadow with parts VTK does not draw, and, as the
+ * depth of those parts is missing, leave volumes open where they enter them. So the caster is the
+ * surface cut by each plane in turn (vtkClipPolyData in the data's coordinates, the plane carried
+ * there by the actor's matrix as vtkAbstractMapper3D::GetClippingPlaneInDataCoords does): the
+ * surface VTK draws, up to rounding. One chain of filters per (actor, part) keeps its output, so
+ * the caster built from it is rebuilt only when the data, a plane or the matrix changes.
+ */
+#ifndef penumbraClippedSurfaces_h
+#define penumbraClippedSurfaces_h
+
+#include "vtkSmartPointer.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+class vtkActor;
+class vtkClipPolyData;
+class vtkDataObject;
+class vtkDataSetSurfaceFilter;
+class vtkMapper;
+class vtkPlane;
+
+namespace penumbra
+{
+
+/// The planes VTK clips `mapper`'s fragments by (at most six), as (normal, offset) in world
+/// coordinates: a point x is drawn where dot(normal, x) + offset >= 0 for every plane.
+std::vector<glm::dvec4> DrawnClippingPlanes(vtkMapper* mapper);
+
+class ClippedSurfaces
+{
+public:
+  /// `data` as `actor`'s mapper draws it at `objectToWorld`: `data` itself without clipping
+  /// planes, else its surface cut by them (empty if it has no surface).
+  vtkDataObject* Apply(
+    vtkActor* actor, std::size_t part, vtkDataObject* data, const glm::dmat4& objectToWorld);
+  /// Drops the chains not applied since the last call: props removed, hidden or unclipped.
+  void PurgeUnused();
+
+private:
+  struct Chain
+  {
+    vtkDataObject* Input = nullptr;
+    vtkSmartPointer<vtkDataSetSurfaceFilter> Surface; ///< for datasets that are not polydata
+    std::vector<vtkSmartPointer<vtkPlane>> Planes;
+    std::vector<vtkSmartPointer<vtkClipPolyData>> Clips;
+    bool Used = false;
+  };
+  void Connect(Chain& chain, vtkDataObject* data, std::size_t planes);
+
+  std::map<std::pair<vtkActor*, std::size_t>, Chain> Chains;
+};
+
+} // namespace penumbra
+
+#endif
