@@ -352,4 +352,27 @@ bool BoxBeyondNearPlane(
   return true;
 }
 
+ClipSide ClipBoxByPlanes(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+  const glm::dmat4& objectToWorld, const std::vector<glm::dvec4>& planes)
+{
+  bool kept = true;
+  for (const glm::dvec4& plane : planes)
+  {
+    int inside = 0, outside = 0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 world(objectToWorld * glm::dvec4(BoxCorner(boxMin, boxMax, corner), 1.0));
+      const double distance = glm::dot(glm::dvec3(plane), world) + plane.w;
+      inside += distance >= 0.0;
+      outside += distance < 0.0;
+    }
+    if (outside == 8)
+    {
+      return ClipSide::Removed;
+    }
+    kept = kept && inside == 8; // NaN distances count neither way: Cut
+  }
+  return kept ? ClipSide::Kept : ClipSide::Cut;
+}
+
 } // namespace penumbra

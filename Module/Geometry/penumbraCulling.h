@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <vector>
 
 namespace penumbra
 {
@@ -72,6 +73,23 @@ VTKPENUMBRAGEOMETRY_EXPORT bool ShadowMayReachView(const glm::dvec3& boxMin,
 /// outside only. False for a box that holds the eye, reaches behind it or is cut by the plane.
 VTKPENUMBRAGEOMETRY_EXPORT bool BoxBeyondNearPlane(
   const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dmat4& worldToClip);
+
+/// Where a placed box lies against clipping planes (ClipBoxByPlanes).
+enum class ClipSide
+{
+  Kept,    ///< every point of it is kept by every plane
+  Removed, ///< every point of it is discarded by one plane
+  Cut      ///< anything else: it may be cut
+};
+
+/**
+ * Where the box [boxMin, boxMax], placed by `objectToWorld` (affine), lies against `planes`,
+ * each (normal, offset) in world coordinates and keeping the points where
+ * dot(normal, x) + offset >= 0, as VTK's shaders clip a mapper's fragments. Decided at the
+ * corners: an affine map takes the box to the hull of its corners. Non-finite values give Cut.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT ClipSide ClipBoxByPlanes(const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const glm::dmat4& objectToWorld, const std::vector<glm::dvec4>& planes);
 
 /// A rectangle of pixels [X0, X1) x [Y0, Y1) of a viewport.
 struct PixelRect

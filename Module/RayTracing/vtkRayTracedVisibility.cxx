@@ -1117,7 +1117,7 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     }
     else if (points)
     {
-      CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, leafOpacity, meshes);
+      CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, leafOpacity, meshes, clipPlanes);
     }
   }
 }
@@ -1292,6 +1292,14 @@ std::vector<ShadowLight> vtkRayTracedVisibility::vtkInternals::CollectLights(
     light->GetTransformedPosition(&position.x);
     light->GetTransformedFocalPoint(&focal.x);
     const double radius = std::max(0.0, vtkSoftShadowPass::GetLightRadius(light));
+    const glm::dvec3 placement = shadowLight.Positional ? position : position - focal;
+    if (!std::isfinite(placement.x) || !std::isfinite(placement.y) || !std::isfinite(placement.z))
+    {
+      // Rays from or towards it would not be rays: it lights and shadows nothing.
+      vtkWarningWithObjectMacro(owner,
+        "Light " << lightIndex << " has a non-finite position or direction: it is not traced.");
+      continue;
+    }
     if (shadowLight.Positional)
     {
       shadowLight.Position = position - this->Origin;

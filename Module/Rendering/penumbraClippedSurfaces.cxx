@@ -34,6 +34,7 @@ std::vector<glm::dvec4> DrawnClippingPlanes(vtkMapper* mapper)
 void ClippedSurfaces::Connect(Chain& chain, vtkDataObject* data, std::size_t planes)
 {
   chain.Input = data;
+  chain.Surface = nullptr;
   chain.Planes.clear();
   chain.Clips.clear();
   vtkAlgorithmOutput* upstream = nullptr;
@@ -86,7 +87,7 @@ vtkDataObject* ClippedSurfaces::Apply(
     const double length2 = glm::dot(normal, normal);
     if (!(length2 > 0.0) || !std::isfinite(length2) || !std::isfinite(local.w))
     {
-      return nullptr; // a degenerate matrix or plane: VTK's distances are then meaningless
+      return nullptr; // a degenerate matrix or plane: VTK draws all or nothing; cast nothing
     }
     const glm::dvec3 origin = -local.w / length2 * normal;
     // vtkPlane's setters mark it modified only when the values change.
@@ -95,7 +96,8 @@ vtkDataObject* ClippedSurfaces::Apply(
   }
   vtkClipPolyData* last = chain.Clips.back();
   last->Update();
-  return last->GetOutput();
+  // Wholly clipped away: VTK draws nothing of it, and there is nothing to warn about.
+  return last->GetOutput()->GetNumberOfCells() > 0 ? last->GetOutput() : nullptr;
 }
 
 void ClippedSurfaces::PurgeUnused()

@@ -42,7 +42,7 @@ class ClippedSurfaces
 {
 public:
   /// `data` as `actor`'s mapper draws it at `objectToWorld`: `data` itself without clipping
-  /// planes, else its surface cut by them (empty if it has no surface).
+  /// planes, else its surface cut by them; nullptr where nothing of it is left.
   vtkDataObject* Apply(
     vtkActor* actor, std::size_t part, vtkDataObject* data, const glm::dmat4& objectToWorld);
   /// Drops the chains not applied since the last call: props removed, hidden or unclipped.

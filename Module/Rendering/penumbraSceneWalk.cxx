@@ -1,5 +1,7 @@
 #include "penumbraSceneWalk.h"
 
+#include "penumbraCulling.h"
+
 #include "penumbraGlyphs.h"
 #include "penumbraMatrices.h"
 #include "vtkSoftShadowPass.h"
@@ -392,12 +394,10 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
       "cast no shadow");
     return;
   }
-  if (mapper->GetNumberOfClippingPlanes() > 0 &&
-    (DrawsImposterInstances(mapper) || vtkGlyph3DMapper::SafeDownCast(mapper)))
+  if (mapper->GetNumberOfClippingPlanes() > 0 && DrawsImposterInstances(mapper))
   {
     this->Warn(owner, leaf,
-      std::string("has clipping planes, which shadows follow for vtkPolyDataMapper and "
-                  "vtkCompositePolyDataMapper2 only, not for its ") +
+      std::string("has clipping planes, which shadows do not follow for the imposters of its ") +
         mapper->GetClassName() + ": it casts no shadow");
     return;
   }
@@ -539,6 +539,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
 
   std::size_t part = 0;
   bool nonFinite = false;
+  const std::size_t firstGlyph = surfaces.size();
   for (vtkDataSet* points : inputs)
   {
     if (!points)
@@ -593,6 +594,45 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
     this->Warn(
       owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
   }
+  this->ClipGlyphs(actor, firstGlyph, surfaces);
+}
+
+void SceneWalk::ClipGlyphs(
+  vtkActor* actor, std::size_t firstGlyph, std::vector<DrawnSurface>& surfaces)
+{
+  const std::vector<glm::dvec4> planes = DrawnClippingPlanes(actor->GetMapper());
+  if (planes.empty())
+  {
+    return;
+  }
+  // VTK clips each glyph where it is placed. Most glyphs lie wholly on one side of the planes:
+  // they keep the shared source, or go; only those the planes run through are cut, each on its
+  // own.
+  std::size_t kept = firstGlyph;
+  for (std::size_t i = firstGlyph; i < surfaces.size(); ++i)
+  {
+    DrawnSurface glyph = surfaces[i];
+    auto source = vtkDataSet::SafeDownCast(glyph.Data);
+    const double* bounds = source ? source->GetBounds() : nullptr;
+    const ClipSide side = bounds
+      ? ClipBoxByPlanes(glm::dvec3(bounds[0], bounds[2], bounds[4]),
+          glm::dvec3(bounds[1], bounds[3], bounds[5]), glyph.ObjectToWorld, planes)
+      : ClipSide::Cut;
+    if (side == ClipSide::Removed)
+    {
+      continue;
+    }
+    if (side == ClipSide::Cut)
+    {
+      glyph.Data = this->Clipped.Apply(actor, glyph.Part, glyph.Data, glyph.ObjectToWorld);
+      if (!glyph.Data)
+      {
+        continue;
+      }
+    }
+    surfaces[kept++] = glyph;
+  }
+  surfaces.resize(kept);
 }
 
 bool SceneWalk::Instances(vtkActor* actor, vtkMapper* mapper, const glm::dmat4& matrix,

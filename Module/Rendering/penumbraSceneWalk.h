@@ -107,6 +107,9 @@ private:
     std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
+  /// The glyphs from `firstGlyph` on, under their mapper's clipping planes: dropped where wholly
+  /// clipped away, cut where a plane runs through them.
+  void ClipGlyphs(vtkActor* actor, std::size_t firstGlyph, std::vector<DrawnSurface>& surfaces);
   /// One surface per sphere, each an instance of UnitSphere.
   void Spheres(vtkActor* actor, vtkOpenGLSphereMapper* mapper, const glm::dmat4& matrix,
     vtkObject* owner, std::vector<DrawnSurface>& surfaces);

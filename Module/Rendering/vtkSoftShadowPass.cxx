@@ -158,6 +158,8 @@ public:
   penumbra::Box SceneBox;
   void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
+  bool WarnedWindowChange = false;
+  std::set<vtkLight*> WarnedReachingLights;
 
   std::string ShaderConfiguration;
   vtkTimeStamp ShaderStageTime;
@@ -431,6 +433,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   // A selection render (picking) draws ids, not light: the delegate draws it, unshadowed.
   if (this->ShadowsEnabled && window && !renderer->GetSelector())
   {
+    this->FollowWindow(window);
     internals.Window = window;
     renderer->GetTiledSizeAndOrigin(
       &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
@@ -463,6 +466,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   {
     // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
     internals.UpdateSceneBox(renderer);
+    this->WarnOfLightsReachingTheScene();
     ScopedShadowDepthRange depthRange(renderer, internals.SceneBox, this->UseTightDepthRange);
     internals.UpdateCamera(renderer);
     this->PrepareFramebuffer(window);
@@ -1000,6 +1004,13 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
 //------------------------------------------------------------------------------
 vtkImageData* vtkSoftShadowPass::GetVisibilityImage(int lightIndex)
 {
+  if (lightIndex < 0)
+  {
+    vtkErrorMacro("GetVisibilityImage(" << lightIndex
+                                        << "): lights are numbered from 0, in the order of the "
+                                           "renderer's light collection.");
+    return nullptr;
+  }
   vtkInternals& internals = *this->Internals;
   const vtkInternals::ShadowLight* light = internals.FindLight(lightIndex);
   vtkOpenGLRenderWindow* window = internals.Window;
@@ -1189,6 +1200,56 @@ double vtkSoftShadowPass::GetStageGPUMilliseconds(int stage)
 }
 
 //------------------------------------------------------------------------------
+void vtkSoftShadowPass::WarnOfLightsReachingTheScene()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.SceneBox.Valid)
+  {
+    return;
+  }
+  for (const vtkInternals::ShadowLight& light : internals.Lights)
+  {
+    if (light.World.w == 0.0 || !(light.SoftRadius > 0.0))
+    {
+      continue;
+    }
+    const glm::dvec3 centre(light.World);
+    const double distance =
+      glm::length(centre - glm::clamp(centre, internals.SceneBox.Min, internals.SceneBox.Max));
+    if (distance < light.SoftRadius && internals.WarnedReachingLights.insert(light.Light).second)
+    {
+      vtkWarningMacro("Light " << light.Light << " has a radius of " << light.SoftRadius
+                               << ", more than its distance to the visible props' box (" << distance
+                               << "): points inside its sphere see all of it, but soft shadows "
+                                  "sample it as a disk facing the scene, so shadows near it "
+                                  "are wrong. Give it a radius below that distance.");
+    }
+  }
+}
+
+void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* previous = internals.Window;
+  if (!previous || previous == window)
+  {
+    return;
+  }
+  // Textures, buffers and vertex arrays belong to the context they were made in: drawn with in
+  // another window's, they crash the driver. Release them in theirs; the next frame remakes them.
+  if (!internals.WarnedWindowChange)
+  {
+    vtkWarningMacro("This pass draws into a second render window ("
+      << window << " after " << previous
+      << "): its GPU buffers are remade each time it changes window. Give each window a "
+         "vtkSoftShadowPass of its own.");
+    internals.WarnedWindowChange = true;
+  }
+  previous->MakeCurrent();
+  this->ReleaseGraphicsResources(previous);
+  window->MakeCurrent();
+}
+
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;

@@ -373,6 +373,10 @@ private:
   void operator=(const vtkSoftShadowPass&) = delete;
 
   void RenderDelegate(const vtkRenderState* s);
+  /// Warns once per positional light whose sphere reaches the visible props' box.
+  void WarnOfLightsReachingTheScene();
+  /// Before drawing into `window`: releases the GPU resources made in another window's context.
+  void FollowWindow(vtkOpenGLRenderWindow* window);
   /// Warns once per prop and problem that a receiver's shader could not be edited.
   void WarnShaderEdit(vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem);
   void CollectShadowingLights(vtkRenderer* renderer);

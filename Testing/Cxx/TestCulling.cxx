@@ -282,6 +282,69 @@ void TestBoxBeyondNearPlane(std::mt19937& rng)
   Check(holdingEye > 0 && holdingEyeBeyond == 0,
     "a box holding the eye is never beyond the near plane");
 }
+
+/// ClipBoxByPlanes against points of the placed box: Kept only where every point is kept,
+/// Removed only where every point is discarded, and each answer given for many boxes.
+void TestClipBoxByPlanes(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  int counts[3] = { 0, 0, 0 }, wrong = 0, mixedCut = 0;
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    const glm::dvec3 centre(2.0 * u(rng), 2.0 * u(rng), 2.0 * u(rng));
+    const glm::dvec3 half(0.05 + unit(rng), 0.05 + unit(rng), 0.05 + unit(rng));
+    // A turned, sheared and scaled placement, mirrored every third trial.
+    glm::dmat4 place = glm::rotate(glm::dmat4(1.0), 6.0 * unit(rng),
+      glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + glm::dvec3(0.0, 0.0, 1e-3)));
+    place[1][0] = 0.5 * u(rng);
+    place = glm::translate(glm::dmat4(1.0), glm::dvec3(u(rng), u(rng), u(rng))) * place *
+      glm::scale(glm::dmat4(1.0), glm::dvec3(trial % 3 == 0 ? -1.0 : 1.0, 1.0 + unit(rng), 1.0));
+    std::vector<glm::dvec4> planes;
+    for (int k = 0, n = 1 + trial % 3; k < n; ++k)
+    {
+      const glm::dvec3 normal = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+      planes.emplace_back(normal, 2.5 * u(rng));
+    }
+    const penumbra::ClipSide side =
+      penumbra::ClipBoxByPlanes(centre - half, centre + half, place, planes);
+    int kept = 0, removed = 0;
+    for (int k = 0; k < 200; ++k)
+    {
+      const glm::dvec3 p(
+        place * glm::dvec4(centre + half * glm::dvec3(u(rng), u(rng), u(rng)), 1.0));
+      bool keeps = true;
+      for (const glm::dvec4& plane : planes)
+      {
+        keeps = keeps && glm::dot(glm::dvec3(plane), p) + plane.w >= 0.0;
+      }
+      kept += keeps;
+      removed += !keeps;
+    }
+    ++counts[static_cast<int>(side)];
+    wrong += (side == penumbra::ClipSide::Kept && removed > 0) ||
+      (side == penumbra::ClipSide::Removed && kept > 0);
+    mixedCut += side == penumbra::ClipSide::Cut && kept > 0 && removed > 0;
+  }
+  std::printf("     clip planes: %d boxes kept, %d removed, %d cut (%d with points both sides), %d "
+              "wrong\n",
+    counts[0], counts[1], counts[2], mixedCut, wrong);
+  Check(wrong == 0, "a box is kept or removed only where all of it is");
+  Check(counts[0] > 100 && counts[1] > 100 && mixedCut > 100, "each answer is given");
+  const std::vector<glm::dvec4> halfSpace = { { 0.0, 0.0, 1.0, 0.0 } };
+  Check(penumbra::ClipBoxByPlanes({ -1, -1, 1 }, { 1, 1, 2 }, glm::dmat4(1.0), halfSpace) ==
+      penumbra::ClipSide::Kept,
+    "a box above the plane z = 0 is kept");
+  Check(penumbra::ClipBoxByPlanes({ -1, -1, 1 }, { 1, 1, 2 },
+          glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, 1.0, -1.0)),
+          halfSpace) == penumbra::ClipSide::Removed,
+    "mirrored below it, removed");
+  Check(penumbra::ClipBoxByPlanes({ -1, -1, std::nan("") }, { 1, 1, 2 }, glm::dmat4(1.0),
+          halfSpace) == penumbra::ClipSide::Cut,
+    "a NaN box is neither kept nor removed");
+  Check(penumbra::ClipBoxByPlanes({ -1, -1, -1 }, { 1, 1, 1 }, glm::dmat4(1.0), {}) ==
+      penumbra::ClipSide::Kept,
+    "no planes: kept");
+}
 } // namespace
 
 int main()
@@ -391,5 +454,6 @@ int main()
   TestTightClippingRange(rng);
   TestShadowScissor(rng);
   TestBoxBeyondNearPlane(rng);
+  TestClipBoxByPlanes(rng);
   return penumbra_test::Finish();
 }

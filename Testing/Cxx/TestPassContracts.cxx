@@ -444,6 +444,97 @@ void TestBadInput()
 
 } // namespace
 
+/// One pass drawn into two windows in turn (found crashing llvmpipe once the second window drew
+/// with buffers made in the first one's context): it warns once, and each window's shadows are
+/// those of a pass of its own.
+void TestTwoWindows()
+{
+  std::vector<vtkSmartPointer<vtkObject>> keep;
+  auto scene = [&](vtkRenderer* renderer, double lightX, double radius)
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-4, 0, -4);
+    plane->SetPoint1(4, 0, -4);
+    plane->SetPoint2(-4, 0, 4);
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(0, 1, 0);
+    sphere->SetThetaResolution(32);
+    sphere->SetPhiResolution(16);
+    AddActor(renderer, plane, 0.9, 0.9, 0.9, keep);
+    AddActor(renderer, sphere, 0.9, 0.3, 0.3, keep);
+    renderer->AddLight(penumbra::scene::MakeLight(true, { lightX, 5, 1 }, radius));
+    PlaceCamera(renderer, 0, 5, 6, 0, 0, 0);
+  };
+  PassScene first(200, 150, PassScene::StartLight::None),
+    second(160, 120, PassScene::StartLight::None), alone(160, 120, PassScene::StartLight::None);
+  scene(first.Renderer, -2.0, 0.3);
+  scene(second.Renderer, 2.0, 0.0);
+  scene(alone.Renderer, 2.0, 0.0);
+  first.Window->Render();
+  second.Window->Render();
+  const WarningLog log(first.Pass);
+  second.Renderer->SetPass(first.Pass);
+  std::vector<float> shared;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    first.Window->Render();
+    second.Window->Render();
+    shared = ImageValues(first.Pass->GetVisibilityImage(0));
+  }
+  alone.Window->Render();
+  const std::vector<float> own = ImageValues(alone.Pass->GetVisibilityImage(0));
+  const int apart = PixelsApart(shared, own);
+  std::printf("     one pass, two windows: %d px apart from a pass of its own; %zu warnings\n",
+    apart, log.Messages.size());
+  Check(!own.empty() && apart == 0, "a pass shared by two windows shadows as a pass of its own");
+  Check(log.Count("second render window") == 1 && log.Messages.size() == 1,
+    "one warning that the pass changes window");
+}
+
+/// A positional light whose sphere reaches the visible props: one warning, naming the distance;
+/// none for a radius just below it. A negative light index: an error.
+void TestLightReachingScene()
+{
+  std::vector<vtkSmartPointer<vtkObject>> keep;
+  PassScene view(160, 120, PassScene::StartLight::None);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-4, 0, -4);
+  plane->SetPoint1(4, 0, -4);
+  plane->SetPoint2(-4, 0, 4);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0, 1, 0);
+  AddActor(view.Renderer, plane, 0.9, 0.9, 0.9, keep);
+  AddActor(view.Renderer, sphere, 0.9, 0.3, 0.3, keep);
+  auto light = penumbra::scene::MakeLight(true, { 0.5, 6, 0.5 }, 4.3);
+  view.Renderer->AddLight(light);
+  PlaceCamera(view.Renderer, 0, 5, 6, 0, 0, 0);
+  const WarningLog log(view.Pass);
+  view.Window->Render();
+  const std::ptrdiff_t below = log.Count("distance to the visible props' box");
+  vtkSoftShadowPass::SetLightRadius(light, 4.7); // the sphere's top is 4.5 below the light
+  view.Window->Render();
+  view.Window->Render();
+  std::printf("     light reaching the scene: %d warnings below, %d after\n",
+    static_cast<int>(below), static_cast<int>(log.Count("distance to the visible props' box")));
+  for (const std::string& w : log.Messages)
+  {
+    std::printf("     warning: %s", w.c_str());
+  }
+  Check(below == 0, "a light short of the scene: no warning");
+  Check(log.Count("distance to the visible props' box (4.5") == 1,
+    "a light reaching the scene: one warning, with the distance");
+
+  // A negative light index is a mistake, not a light without shadows: an error says so.
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&errors);
+  onError->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  view.Pass->AddObserver(vtkCommand::ErrorEvent, onError);
+  Check(view.Pass->GetVisibilityImage(-1) == nullptr && errors == 1,
+    "a negative light index: no image, one error");
+}
+
 int main(int argc, char* argv[])
 {
   static const Features features = {
@@ -453,6 +544,8 @@ int main(int argc, char* argv[])
     { "DelegateChain", TestDelegateChain },
     { "BadInput", TestBadInput },
     { "Picking", TestPicking },
+    { "TwoWindows", TestTwoWindows },
+    { "LightReachingScene", TestLightReachingScene },
   };
   return RunFeatures(argc, argv, features);
 }

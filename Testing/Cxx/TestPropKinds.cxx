@@ -161,6 +161,10 @@ void CompareScenes(const std::string& name, const std::function<void(vtkRenderer
     visibilityOff <= visibilityTolerance * pixels, name + ": shadows as its plain-actor scene's");
   Check(colourOff <= colourTolerance * pixels, name + ": colours as its plain-actor scene's");
   CheckAgainstTruth(name, CompareWithTruth(a.Window, a.Renderer, a.Pass, 0));
+  for (const std::string& w : warnings.Messages)
+  {
+    std::printf("     warning: %s", w.c_str());
+  }
   Check(warnings.Messages.empty(), name + ": no warning");
 
   // The truth walks each kind of prop its own way (vtkGlyph3D, the leaves, the path's matrix):
@@ -690,6 +694,41 @@ void TestClippingPlanes()
       place(placed, 0.3, 15.0);
       r->AddActor(ClippedByFilters(sphere, placed, { split }));
       r->AddActor(ClippedByFilters(box, placed, { split }, true));
+    });
+
+  // Glyphs: VTK clips each where it is placed. The plane runs through some cones, above some
+  // and below others.
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  auto cone = Cone();
+  auto slant = KeepPlane(0.0, 1.05, 0.0, 0.25, -1.0, 0.1);
+  CompareScenes(
+    "clipping planes of a glyph mapper",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetSourceConnection(cone->GetOutputPort());
+      mapper->SetOrientationArray("direction");
+      mapper->AddClippingPlane(slant);
+      auto actor = LitActor(mapper);
+      actor->SetPosition(0.2, 0.1, -0.1);
+      r->AddActor(actor);
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3D> glyphs;
+      glyphs->SetInputData(points);
+      glyphs->SetSourceConnection(cone->GetOutputPort());
+      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
+      glyphs->SetVectorModeToUseVector();
+      glyphs->SetScaleModeToDataScalingOff();
+      vtkNew<vtkActor> placed;
+      placed->SetPosition(0.2, 0.1, -0.1);
+      auto actor = ClippedByFilters(glyphs, placed, { slant });
+      actor->GetMapper()->ScalarVisibilityOff();
+      r->AddActor(actor);
     });
 
   // Soft shadows: averaged and counted hard shadows drew dark "ghosts" of the clipped-away
@@ -1344,16 +1383,16 @@ void TestWarnings()
   auto wires = MakeActor(SphereSource(2.2, 1.0, 2.6, 0.35, 16, 8), 0.9, 0.9, 0.9);
   wires->GetProperty()->SetRepresentationToWireframe();
   view.Renderer->AddActor(wires);
-  // Glyphs with a clipping plane (out of view): the shadows do not follow a glyph mapper's
-  // planes, so it casts nothing, with one warning.
-  vtkNew<vtkGlyph3DMapper> clippedGlyphs;
-  clippedGlyphs->SetInputData(points);
-  clippedGlyphs->SetSourceConnection(cone->GetOutputPort());
-  clippedGlyphs->AddClippingPlane(KeepPlane(0.0, 0.5, 0.0, 0.0, -1.0, 0.0));
-  vtkNew<vtkActor> clippedGlyphActor;
-  clippedGlyphActor->SetMapper(clippedGlyphs);
-  clippedGlyphActor->SetPosition(-50.0, 0.0, 0.0);
-  view.Renderer->AddActor(clippedGlyphActor);
+  // Imposter spheres with a clipping plane (out of view): the shadows do not follow the planes
+  // of imposters, so they cast nothing, with one warning.
+  vtkNew<vtkOpenGLSphereMapper> clippedImposters;
+  clippedImposters->SetInputData(centres);
+  clippedImposters->SetRadius(0.3);
+  clippedImposters->AddClippingPlane(KeepPlane(0.0, 1.2, 0.0, 0.0, -1.0, 0.0));
+  vtkNew<vtkActor> clippedImposterActor;
+  clippedImposterActor->SetMapper(clippedImposters);
+  clippedImposterActor->SetPosition(-50.0, 0.0, 0.0);
+  view.Renderer->AddActor(clippedImposterActor);
 
   const WarningLog log(view.Pass);
   const std::vector<std::string>& warnings = log.Messages;
@@ -1376,8 +1415,8 @@ void TestWarnings()
   Check(count("part of vtkAxesActor") == 1 && count("no surface triangles") == 1,
     "vtkAxesActor's line shafts: one warning, naming the axes");
   Check(count("drawn as a wireframe") == 1, "a wireframe sphere: one warning");
-  Check(count("has clipping planes") == 1 && count("vtkOpenGLGlyph3DMapper") == 1,
-    "glyphs with a clipping plane: one warning naming the mapper");
+  Check(count("has clipping planes") == 1 && count("imposters of its vtkOpenGLSphereMapper") == 1,
+    "imposter spheres with a clipping plane: one warning naming the mapper");
   Check(warnings.size() == 11, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
