@@ -466,7 +466,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   {
     // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
     internals.UpdateSceneBox(renderer);
-    this->WarnOfLightsReachingTheScene();
+    this->WarnOfLightsReachingTheScene(renderer);
     ScopedShadowDepthRange depthRange(renderer, internals.SceneBox, this->UseTightDepthRange);
     internals.UpdateCamera(renderer);
     this->PrepareFramebuffer(window);
@@ -662,6 +662,31 @@ PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
   box.Extend(glm::dvec3(bounds[0], bounds[2], bounds[4]) - reach,
     glm::dvec3(bounds[1], bounds[3], bounds[5]) + reach);
   return PropExtent::Finite;
+}
+
+/// The distance from `point` to the nearest surface of a visible prop's box: to the box from
+/// outside it, to its nearest face from inside (a light inside a room is as far from the walls
+/// as from their box's faces). Infinite when no prop has finite bounds.
+double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
+{
+  double nearest = std::numeric_limits<double>::infinity();
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  vtkProp* prop;
+  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  {
+    penumbra::Box box;
+    if (!prop->GetVisibility() || ExtendByProp(box, prop) != PropExtent::Finite)
+    {
+      continue;
+    }
+    const glm::dvec3 outside = point - glm::clamp(point, box.Min, box.Max);
+    const glm::dvec3 inside = glm::min(point - box.Min, box.Max - point);
+    nearest = std::min(nearest,
+      glm::dot(outside, outside) > 0.0 ? glm::length(outside)
+                                       : std::min({ inside.x, inside.y, inside.z }));
+  }
+  return nearest;
 }
 } // namespace
 
@@ -1200,26 +1225,23 @@ double vtkSoftShadowPass::GetStageGPUMilliseconds(int stage)
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::WarnOfLightsReachingTheScene()
+void vtkSoftShadowPass::WarnOfLightsReachingTheScene(vtkRenderer* renderer)
 {
   vtkInternals& internals = *this->Internals;
-  if (!internals.SceneBox.Valid)
-  {
-    return;
-  }
   for (const vtkInternals::ShadowLight& light : internals.Lights)
   {
-    if (light.World.w == 0.0 || !(light.SoftRadius > 0.0))
+    if (light.World.w == 0.0 || !(light.SoftRadius > 0.0) ||
+      internals.WarnedReachingLights.count(light.Light))
     {
       continue;
     }
-    const glm::dvec3 centre(light.World);
-    const double distance =
-      glm::length(centre - glm::clamp(centre, internals.SceneBox.Min, internals.SceneBox.Max));
-    if (distance < light.SoftRadius && internals.WarnedReachingLights.insert(light.Light).second)
+    const double distance = NearestPropBoxSurface(renderer, glm::dvec3(light.World));
+    if (distance < light.SoftRadius)
     {
+      internals.WarnedReachingLights.insert(light.Light);
       vtkWarningMacro("Light " << light.Light << " has a radius of " << light.SoftRadius
-                               << ", more than its distance to the visible props' box (" << distance
+                               << ", more than its distance to the nearest visible prop's box ("
+                               << distance
                                << "): points inside its sphere see all of it, but soft shadows "
                                   "sample it as a disk facing the scene, so shadows near it "
                                   "are wrong. Give it a radius below that distance.");

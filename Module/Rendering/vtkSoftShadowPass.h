@@ -373,8 +373,8 @@ private:
   void operator=(const vtkSoftShadowPass&) = delete;
 
   void RenderDelegate(const vtkRenderState* s);
-  /// Warns once per positional light whose sphere reaches the visible props' box.
-  void WarnOfLightsReachingTheScene();
+  /// Warns once per positional light whose sphere reaches a visible prop's box.
+  void WarnOfLightsReachingTheScene(vtkRenderer* renderer);
   /// Before drawing into `window`: releases the GPU resources made in another window's context.
   void FollowWindow(vtkOpenGLRenderWindow* window);
   /// Warns once per prop and problem that a receiver's shader could not be edited.

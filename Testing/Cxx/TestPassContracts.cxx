@@ -11,6 +11,7 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkCoordinate.h"
+#include "vtkCubeSource.h"
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
@@ -491,8 +492,8 @@ void TestTwoWindows()
     "one warning that the pass changes window");
 }
 
-/// A positional light whose sphere reaches the visible props: one warning, naming the distance;
-/// none for a radius just below it. A negative light index: an error.
+/// A positional light whose sphere reaches a visible prop: one warning, naming the distance;
+/// none for a radius just below it, nor for the room it hangs in. A negative light index: an error.
 void TestLightReachingScene()
 {
   std::vector<vtkSmartPointer<vtkObject>> keep;
@@ -505,23 +506,31 @@ void TestLightReachingScene()
   sphere->SetCenter(0, 1, 0);
   AddActor(view.Renderer, plane, 0.9, 0.9, 0.9, keep);
   AddActor(view.Renderer, sphere, 0.9, 0.3, 0.3, keep);
+  // A room round it all, its walls 9 or more from the light: the light inside the room's box
+  // is no reason to warn.
+  vtkNew<vtkCubeSource> room;
+  room->SetXLength(30);
+  room->SetYLength(30);
+  room->SetZLength(30);
+  AddActor(view.Renderer, room, 0.8, 0.8, 0.8, keep);
   auto light = penumbra::scene::MakeLight(true, { 0.5, 6, 0.5 }, 4.3);
   view.Renderer->AddLight(light);
   PlaceCamera(view.Renderer, 0, 5, 6, 0, 0, 0);
   const WarningLog log(view.Pass);
   view.Window->Render();
-  const std::ptrdiff_t below = log.Count("distance to the visible props' box");
+  const std::ptrdiff_t below = log.Count("distance to the nearest visible prop's box");
   vtkSoftShadowPass::SetLightRadius(light, 4.7); // the sphere's top is 4.5 below the light
   view.Window->Render();
   view.Window->Render();
   std::printf("     light reaching the scene: %d warnings below, %d after\n",
-    static_cast<int>(below), static_cast<int>(log.Count("distance to the visible props' box")));
+    static_cast<int>(below),
+    static_cast<int>(log.Count("distance to the nearest visible prop's box")));
   for (const std::string& w : log.Messages)
   {
     std::printf("     warning: %s", w.c_str());
   }
   Check(below == 0, "a light short of the scene: no warning");
-  Check(log.Count("distance to the visible props' box (4.5") == 1,
+  Check(log.Count("distance to the nearest visible prop's box (4.5") == 1,
     "a light reaching the scene: one warning, with the distance");
 
   // A negative light index is a mistake, not a light without shadows: an error says so.
