@@ -5,7 +5,6 @@
 
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkCellArray.h"
@@ -161,6 +160,22 @@ void TestCompositing()
   Check(pbrShadowed + 20 < pbrUnshadowed, "PBR materials are shadowed");
 }
 
+/// The contracts' small scene in `renderer`: a ground of half-width 4 at y = 0 and a sphere of
+/// diameter 1 at (0, 1, 0).
+void AddGroundAndSphere(vtkRenderer* renderer, std::vector<vtkSmartPointer<vtkObject>>& keep)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-4, 0, -4);
+  plane->SetPoint1(4, 0, -4);
+  plane->SetPoint2(-4, 0, 4);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0, 1, 0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  AddActor(renderer, plane, 0.9, 0.9, 0.9, keep);
+  AddActor(renderer, sphere, 0.9, 0.3, 0.3, keep);
+}
+
 void TestViewportsLightsAndResize()
 {
   // Two renderers side by side in a non-square window, one with two coloured lights.
@@ -176,18 +191,7 @@ void TestViewportsLightsAndResize()
     passes[i] = vtkSmartPointer<vtkSoftShadowPass>::New();
     renderers[i]->SetPass(passes[i]);
     window->AddRenderer(renderers[i]);
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-4, 0, -4);
-    plane->SetPoint1(4, 0, -4);
-    plane->SetPoint2(-4, 0, 4);
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetCenter(0, 1, 0);
-    sphere->SetThetaResolution(32);
-    sphere->SetPhiResolution(16);
-    renderers[i]->AddActor(MakeActor(plane, 0.9, 0.9, 0.9));
-    renderers[i]->AddActor(MakeActor(sphere, 0.9, 0.3, 0.3));
-    keep.push_back(plane);
-    keep.push_back(sphere);
+    AddGroundAndSphere(renderers[i], keep);
     auto light = penumbra::scene::MakeLight(true, { i ? 2.0 : -2.0, 5, 1 }, 0.0);
     light->SetDiffuseColor(1.0, 0.7, 0.7);
     renderers[i]->AddLight(light);
@@ -443,8 +447,6 @@ void TestBadInput()
   Check(warnings.Messages.size() == before, "warnings are not repeated every frame");
 }
 
-} // namespace
-
 /// One pass drawn into two windows in turn (found crashing llvmpipe once the second window drew
 /// with buffers made in the first one's context): it warns once, and each window's shadows are
 /// those of a pass of its own.
@@ -453,16 +455,7 @@ void TestTwoWindows()
   std::vector<vtkSmartPointer<vtkObject>> keep;
   auto scene = [&](vtkRenderer* renderer, double lightX, double radius)
   {
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-4, 0, -4);
-    plane->SetPoint1(4, 0, -4);
-    plane->SetPoint2(-4, 0, 4);
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetCenter(0, 1, 0);
-    sphere->SetThetaResolution(32);
-    sphere->SetPhiResolution(16);
-    AddActor(renderer, plane, 0.9, 0.9, 0.9, keep);
-    AddActor(renderer, sphere, 0.9, 0.3, 0.3, keep);
+    AddGroundAndSphere(renderer, keep);
     renderer->AddLight(penumbra::scene::MakeLight(true, { lightX, 5, 1 }, radius));
     PlaceCamera(renderer, 0, 5, 6, 0, 0, 0);
   };
@@ -498,14 +491,7 @@ void TestLightReachingScene()
 {
   std::vector<vtkSmartPointer<vtkObject>> keep;
   PassScene view(160, 120, PassScene::StartLight::None);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-4, 0, -4);
-  plane->SetPoint1(4, 0, -4);
-  plane->SetPoint2(-4, 0, 4);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0, 1, 0);
-  AddActor(view.Renderer, plane, 0.9, 0.9, 0.9, keep);
-  AddActor(view.Renderer, sphere, 0.9, 0.3, 0.3, keep);
+  AddGroundAndSphere(view.Renderer, keep);
   // A room round it all, its walls 9 or more from the light: the light inside the room's box
   // is no reason to warn.
   vtkNew<vtkCubeSource> room;
@@ -534,15 +520,12 @@ void TestLightReachingScene()
     "a light reaching the scene: one warning, with the distance");
 
   // A negative light index is a mistake, not a light without shadows: an error says so.
-  int errors = 0;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&errors);
-  onError->SetCallback(
-    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
-  view.Pass->AddObserver(vtkCommand::ErrorEvent, onError);
-  Check(view.Pass->GetVisibilityImage(-1) == nullptr && errors == 1,
+  const WarningLog errors(view.Pass, vtkCommand::ErrorEvent);
+  Check(view.Pass->GetVisibilityImage(-1) == nullptr && errors.Messages.size() == 1,
     "a negative light index: no image, one error");
 }
+
+} // namespace
 
 int main(int argc, char* argv[])
 {

@@ -278,6 +278,34 @@ vtkSmartPointer<vtkGlyph3DMapper> TwoSourceGlyphs(
   return mapper;
 }
 
+/// Cones at `points`, along their "direction", scaled by their "size" times 0.8, as a glyph
+/// mapper draws them: the mapper, for an actor at (0.2, 0.1, -0.1).
+vtkSmartPointer<vtkGlyph3DMapper> DirectedCones(vtkPolyData* points, vtkAlgorithm* cone)
+{
+  auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
+  mapper->SetInputData(points);
+  mapper->SetSourceConnection(cone->GetOutputPort());
+  mapper->SetOrientationArray("direction");
+  mapper->SetScaleArray("size");
+  mapper->SetScaleModeToScaleByMagnitude();
+  mapper->SetScaleFactor(0.8);
+  return mapper;
+}
+
+/// The same cones as vtkGlyph3D builds them (to be drawn at the same actor position).
+vtkSmartPointer<vtkGlyph3D> DirectedConesByFilter(vtkPolyData* points, vtkAlgorithm* cone)
+{
+  auto glyphs = vtkSmartPointer<vtkGlyph3D>::New();
+  glyphs->SetInputData(points);
+  glyphs->SetSourceConnection(cone->GetOutputPort());
+  glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "size");
+  glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
+  glyphs->SetScaleModeToScaleByScalar();
+  glyphs->SetVectorModeToUseVector();
+  glyphs->SetScaleFactor(0.8);
+  return glyphs;
+}
+
 void TestGlyphsByDirection()
 {
   vtkSmartPointer<vtkPolyData> points = GlyphPoints();
@@ -287,29 +315,14 @@ void TestGlyphsByDirection()
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3DMapper> mapper;
-      mapper->SetInputData(points);
-      mapper->SetSourceConnection(cone->GetOutputPort());
-      mapper->SetOrientationArray("direction");
-      mapper->SetScaleArray("size");
-      mapper->SetScaleModeToScaleByMagnitude();
-      mapper->SetScaleFactor(0.8);
-      auto actor = LitActor(mapper);
+      auto actor = LitActor(DirectedCones(points, cone));
       actor->SetPosition(0.2, 0.1, -0.1); // the actor's matrix applies to every glyph
       r->AddActor(actor);
     },
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3D> glyphs;
-      glyphs->SetInputData(points);
-      glyphs->SetSourceConnection(cone->GetOutputPort());
-      glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "size");
-      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
-      glyphs->SetScaleModeToScaleByScalar();
-      glyphs->SetVectorModeToUseVector();
-      glyphs->SetScaleFactor(0.8);
-      auto actor = MakeActor(glyphs, 1, 1, 1);
+      auto actor = MakeActor(DirectedConesByFilter(points, cone), 1, 1, 1);
       actor->GetMapper()->ScalarVisibilityOff(); // vtkGlyph3D colours by scale; the mapper does not
       actor->SetPosition(0.2, 0.1, -0.1);
       r->AddActor(actor);
@@ -706,10 +719,7 @@ void TestClippingPlanes()
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3DMapper> mapper;
-      mapper->SetInputData(points);
-      mapper->SetSourceConnection(cone->GetOutputPort());
-      mapper->SetOrientationArray("direction");
+      vtkSmartPointer<vtkGlyph3DMapper> mapper = DirectedCones(points, cone);
       mapper->AddClippingPlane(slant);
       auto actor = LitActor(mapper);
       actor->SetPosition(0.2, 0.1, -0.1);
@@ -718,15 +728,9 @@ void TestClippingPlanes()
     [&](vtkRenderer* r)
     {
       Ground(r);
-      vtkNew<vtkGlyph3D> glyphs;
-      glyphs->SetInputData(points);
-      glyphs->SetSourceConnection(cone->GetOutputPort());
-      glyphs->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
-      glyphs->SetVectorModeToUseVector();
-      glyphs->SetScaleModeToDataScalingOff();
       vtkNew<vtkActor> placed;
       placed->SetPosition(0.2, 0.1, -0.1);
-      auto actor = ClippedByFilters(glyphs, placed, { slant });
+      auto actor = ClippedByFilters(DirectedConesByFilter(points, cone), placed, { slant });
       actor->GetMapper()->ScalarVisibilityOff();
       r->AddActor(actor);
     });

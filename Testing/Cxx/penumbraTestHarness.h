@@ -145,20 +145,21 @@ inline vtkSmartPointer<vtkCubeSource> BoxSource(
   return cube;
 }
 
-/// The warnings an object sends from construction on, and how many of them contain a text.
+/// The warnings (or, given vtkCommand::ErrorEvent, the errors) an object sends from construction
+/// on, and how many of them contain a text.
 struct WarningLog
 {
   std::vector<std::string> Messages;
   vtkNew<vtkCallbackCommand> Callback;
 
-  explicit WarningLog(vtkObject* source)
+  explicit WarningLog(vtkObject* source, unsigned long event = vtkCommand::WarningEvent)
   {
     this->Callback->SetClientData(&this->Messages);
     this->Callback->SetCallback(
       [](vtkObject*, unsigned long, void* client, void* text) {
         static_cast<std::vector<std::string>*>(client)->push_back(static_cast<const char*>(text));
       });
-    source->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    source->AddObserver(event, this->Callback);
   }
   std::ptrdiff_t Count(const std::string& needle) const
   {
