@@ -1,6 +1,5 @@
 #include "penumbraClippedSurfaces.h"
 
-#include "vtkActor.h"
 #include "vtkClipPolyData.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -63,10 +62,9 @@ void ClippedSurfaces::Connect(Chain& chain, vtkDataObject* data, std::size_t pla
   }
 }
 
-vtkDataObject* ClippedSurfaces::Apply(
-  vtkActor* actor, std::size_t part, vtkDataObject* data, const glm::dmat4& objectToWorld)
+vtkDataObject* ClippedSurfaces::Apply(vtkActor* actor, std::size_t part, vtkDataObject* data,
+  const glm::dmat4& objectToWorld, const std::vector<glm::dvec4>& planes)
 {
-  const std::vector<glm::dvec4> planes = DrawnClippingPlanes(actor->GetMapper());
   if (planes.empty() || !vtkDataSet::SafeDownCast(data))
   {
     return data;

@@ -41,10 +41,11 @@ std::vector<glm::dvec4> DrawnClippingPlanes(vtkMapper* mapper);
 class ClippedSurfaces
 {
 public:
-  /// `data` as `actor`'s mapper draws it at `objectToWorld`: `data` itself without clipping
-  /// planes, else its surface cut by them; nullptr where nothing of it is left.
-  vtkDataObject* Apply(
-    vtkActor* actor, std::size_t part, vtkDataObject* data, const glm::dmat4& objectToWorld);
+  /// `data` as `actor`'s mapper draws it at `objectToWorld` under `planes` (its
+  /// DrawnClippingPlanes): `data` itself without planes, else its surface cut by them; nullptr
+  /// where nothing of it is left.
+  vtkDataObject* Apply(vtkActor* actor, std::size_t part, vtkDataObject* data,
+    const glm::dmat4& objectToWorld, const std::vector<glm::dvec4>& planes);
   /// Drops the chains not applied since the last call: props removed, hidden or unclipped.
   void PurgeUnused();
 

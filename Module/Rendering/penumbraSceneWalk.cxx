@@ -1,7 +1,6 @@
 #include "penumbraSceneWalk.h"
 
 #include "penumbraCulling.h"
-
 #include "penumbraGlyphs.h"
 #include "penumbraMatrices.h"
 #include "vtkSoftShadowPass.h"
@@ -453,7 +452,8 @@ void SceneWalk::Blocks(vtkActor* actor, bool composite,
   {
     return;
   }
-  if (vtkDataObject* clipped = this->Clipped.Apply(actor, index, node, matrix))
+  if (vtkDataObject* clipped =
+        this->Clipped.Apply(actor, index, node, matrix, DrawnClippingPlanes(actor->GetMapper())))
   {
     surfaces.push_back({ actor, clipped, matrix, index, drawn.Opacity, drawn.SeenThrough });
   }
@@ -624,7 +624,7 @@ void SceneWalk::ClipGlyphs(
     }
     if (side == ClipSide::Cut)
     {
-      glyph.Data = this->Clipped.Apply(actor, glyph.Part, glyph.Data, glyph.ObjectToWorld);
+      glyph.Data = this->Clipped.Apply(actor, glyph.Part, glyph.Data, glyph.ObjectToWorld, planes);
       if (!glyph.Data)
       {
         continue;
