@@ -151,8 +151,11 @@ void Usage(const char* program)
     "                        the default\n"
     "  --methods a,b,...     among none,shadowmap_1024,shadowmap_4096,hard_volumes,\n"
     "                        averaged_4,averaged_16,averaged_64,averaged_256,wedges,\n"
-    "                        plateaus, planar_filter_16, planar_filter_64 (default all of\n"
-    "                        these);\n"
+    "                        plateaus, planar_filter_16, planar_filter_64,\n"
+    "                        soft_volumes_16, soft_volumes_64 (counting), automatic_64\n"
+    "                        (default all of these);\n"
+    "                        also soft_volumes_16_half, soft_volumes_64_half: counted at\n"
+    "                        half resolution (HalfResolutionCounting);\n"
     "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
     "                        shadow maps without the benchmark's square-bake fix;\n"
     "                        hard_volumes_vtkdepth, averaged_16_vtkdepth: with VTK drawing\n"
@@ -717,6 +720,18 @@ std::vector<MethodSpec> AllMethods()
     methods.push_back({ "soft_volumes_" + std::to_string(samples),
       [samples]()
       { return MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples); } });
+  }
+  // The same, counted at half resolution (HalfResolutionCounting).
+  for (int samples : { 16, 64 })
+  {
+    methods.push_back({ "soft_volumes_" + std::to_string(samples) + "_half",
+      [samples]()
+      {
+        MethodInstance instance =
+          MakeSoftShadow(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES, samples);
+        vtkSoftShadowPass::SafeDownCast(instance.Pass)->HalfResolutionCountingOn();
+        return instance;
+      } });
   }
   // The default: counting or averaging 64 samples, whichever the cost model expects faster.
   methods.push_back(

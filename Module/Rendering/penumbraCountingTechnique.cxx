@@ -11,6 +11,8 @@
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "penumbraCountingResolveFS.h"
 #include "penumbraCountingTransmissionFS.h"
 #include "penumbraCountingWedgeFS.h"
@@ -31,11 +33,14 @@ namespace
 constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 
 /// A shader source with its sample count compiled in (the loops' bounds and the samples' array),
-/// and `define` defined when given.
-std::string WithSampleCount(const char* source, std::size_t samples, const char* define = nullptr)
+/// the pixels between counter texels (1, or 2 at half resolution), and `define` defined when
+/// given.
+std::string CountingShader(
+  const char* source, std::size_t samples, int counterStride, const char* define = nullptr)
 {
   std::string text = source;
-  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n";
+  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) +
+    "\n#define PENUMBRA_COUNTER_STRIDE " + std::to_string(counterStride) + "\n";
   if (define)
   {
     defines += std::string("#define ") + define + "\n";
@@ -133,21 +138,32 @@ vtkIdType CountingTechnique::UpdateCaster(
     : 0;
 }
 
-void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight& light)
+void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight&)
 {
-  // Allocated for this viewport and sample count only when a light is counted, so averaging
-  // lights hold none.
-  const int width = frame.Size[0], height = frame.Size[1];
-  const unsigned int words = static_cast<unsigned int>((light.CountingSamples.size() + 3) / 4);
-  if (TextureNeedsAllocation(this->SampleCounters, frame.Window, width, height,
-        static_cast<int>(words), 1, vtkTextureObject::Nearest))
+  frame.AttachClearedFloatTarget(this->CentreCount);
+}
+
+void CountingTechnique::PrepareCounters(
+  vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples)
+{
+  // Allocated for these texels and samples only when a light is counted, so averaging lights
+  // hold none.
+  const int words = static_cast<int>((samples + 3) / 4);
+  if (TextureNeedsAllocation(
+        this->SampleCounters, window, texels.x, texels.y, words, 1, vtkTextureObject::Nearest))
   {
     this->SampleCounters->SetInternalFormat(GL_R32UI);
     this->SampleCounters->SetFormat(GL_RED_INTEGER);
     this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
-    this->SampleCounters->Allocate3D(width, height, words, 1, VTK_UNSIGNED_INT);
+    this->SampleCounters->Allocate3D(texels.x, texels.y, words, 1, VTK_UNSIGNED_INT);
   }
-  frame.AttachClearedFloatTarget(this->CentreCount);
+  this->ClearCounters();
+}
+
+void CountingTechnique::ClearCounters()
+{
+  const GLuint zero = 0;
+  glClearTexImage(this->SampleCounters->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
@@ -166,8 +182,50 @@ void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
 bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
+  ostate->PushFramebufferBindings();
+  // Translucent casters' transmission reads every pixel's counters: such lights count at full
+  // resolution.
+  const bool half = this->HalfResolution && !light.ShadowedByTranslucentCasters &&
+    this->HalfResolutionTargets.Begin(frame);
+  // Full size either way: at half resolution the counters' corner holds the counted pixels,
+  // then the whole every pixel that the counted ones leave uncertain.
+  this->PrepareCounters(
+    window, glm::ivec2(frame.Size[0], frame.Size[1]), light.CountingSamples.size());
+  bool drawn;
+  if (half)
+  {
+    // Uncertain: counted neighbours more than two samples apart, or a surface between them that
+    // neither sees (penumbraHalfUpsampleFS.glsl). One sample apart would leave the mean within
+    // half a sample of the full count, at up to a fifth more time (Documentation/wedges.md).
+    const float uncertain = 2.0f / static_cast<float>(light.CountingSamples.size());
+    drawn = this->CountWedges(frame, light, WedgePixels::Counted) &&
+      this->Resolve(frame, light, ResolveInto::HalfResolution) &&
+      this->HalfResolutionTargets.Upsample(frame, light.Layer, uncertain);
+    if (drawn)
+    {
+      this->ClearCounters();
+      drawn = this->CountWedges(frame, light, WedgePixels::Uncertain) &&
+        this->Resolve(frame, light, ResolveInto::UncertainPixels);
+    }
+  }
+  else
+  {
+    drawn = this->CountWedges(frame, light, WedgePixels::All) &&
+      this->Resolve(frame, light, ResolveInto::Layer);
+  }
+  ostate->PopFramebufferBindings();
+  return drawn;
+}
+
+bool CountingTechnique::CountWedges(
+  ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
   const std::size_t sampleCount = light.CountingSamples.size();
-  const std::string wedgeFS = WithSampleCount(penumbraCountingWedgeFS, sampleCount);
+  const bool counted = pixels == WedgePixels::Counted;
+  const std::string wedgeFS = CountingShader(penumbraCountingWedgeFS, sampleCount, counted ? 2 : 1);
   vtkShaderProgram* program = frame.Programs->Ready(window, penumbraCountingWedgeVS,
     wedgeFS.c_str(), "soft shadow volume wedge", "soft shadows average hard shadows instead");
   if (!program)
@@ -176,16 +234,23 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   }
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
-  const GLuint zero = 0;
-  glClearTexImage(this->SampleCounters->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-
-  // Wedge fragments that pass the depth test mark their pixel in the stencil, so that the
-  // resolve reads counters only there; counts go to the image, not to colour.
-  ostate->vtkglStencilMask(0xFF);
-  ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
   ostate->vtkglEnable(GL_STENCIL_TEST);
-  ostate->vtkglStencilFunc(GL_ALWAYS, 1, 0xFF);
-  ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  ostate->vtkglStencilMask(0xFF);
+  if (pixels == WedgePixels::Uncertain)
+  {
+    // Only where the half-resolution count left the pixel uncertain.
+    ostate->vtkglStencilFunc(GL_EQUAL, HalfResolutionCounts::UncertainStencil, 0xFF);
+    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  }
+  else
+  {
+    // Wedge fragments that pass the depth test mark their pixel in the stencil, so that the
+    // resolve reads counters only there.
+    ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
+    ostate->vtkglStencilFunc(GL_ALWAYS, 1, 0xFF);
+    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  }
+  // Counts go to the image, not to colour.
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -195,6 +260,9 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   frame.DepthCopy()->Activate();
 
   frame.SetDepthUniforms(program);
+  const glm::vec4 clipToCounters =
+    counted ? HalfResolutionCounts::ClipToCounters(frame.Size) : glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
+  program->SetUniform4f("clipToCounters", glm::value_ptr(clipToCounters));
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
@@ -225,19 +293,19 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
   }
-  ostate->vtkglDisable(GL_CULL_FACE);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   frame.DepthCopy()->Deactivate();
-
-  return this->Resolve(frame, light, false);
+  return true;
 }
 
-bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bool countOffset)
+bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, ResolveInto target)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
-  const std::string resolveFS = WithSampleCount(penumbraCountingResolveFS,
-    light.CountingSamples.size(), countOffset ? "PENUMBRA_COUNT_OFFSET" : nullptr);
+  const bool countOffset = target == ResolveInto::CountOffset;
+  const std::string resolveFS = CountingShader(penumbraCountingResolveFS,
+    light.CountingSamples.size(), target == ResolveInto::HalfResolution ? 2 : 1,
+    countOffset ? "PENUMBRA_COUNT_OFFSET" : nullptr);
   vtkShaderProgram* resolve = frame.Programs->Ready(window, penumbraResolveVS, resolveFS.c_str(),
     countOffset ? "soft shadow volume count offset" : "soft shadow volume resolve",
     "soft shadows average hard shadows instead");
@@ -248,13 +316,18 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
   ostate->vtkglDisable(GL_SCISSOR_TEST); // every geometry pixel
-  if (countOffset)
+  switch (target)
   {
-    frame.AttachClearedFloatTarget(this->CountOffset);
-  }
-  else
-  {
-    frame.AttachColour(frame.Layers(), light.Layer);
+    case ResolveInto::Layer:
+    case ResolveInto::UncertainPixels:
+      frame.AttachColour(frame.Layers(), light.Layer);
+      break;
+    case ResolveInto::CountOffset:
+      frame.AttachClearedFloatTarget(this->CountOffset);
+      break;
+    case ResolveInto::HalfResolution:
+      this->HalfResolutionTargets.AttachVisibility();
+      break;
   }
   // At every geometry pixel (the far-plane triangle passes GL_GREATER exactly there): counters
   // where a wedge reached (the stencil's mark), the centre's count elsewhere.
@@ -269,11 +342,21 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, bo
   this->SampleCounters->Activate();
   resolve->SetUniformi("centreCount", this->CentreCount->GetTextureUnit());
   resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
-  for (int reached : { 1, 0 })
+  if (target == ResolveInto::UncertainPixels)
   {
-    ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
-    resolve->SetUniformi("useCounters", reached);
-    frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
+    // Counted again there (CountWedges); every other pixel is written.
+    ostate->vtkglStencilFunc(GL_EQUAL, HalfResolutionCounts::UncertainStencil, 0xFF);
+    resolve->SetUniformi("useCounters", 1);
+    frame.FullScreen->Draw(resolve, this->ResolveVAO);
+  }
+  else
+  {
+    for (int reached : { 1, 0 })
+    {
+      ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
+      resolve->SetUniformi("useCounters", reached);
+      frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
+    }
   }
   this->SampleCounters->Deactivate();
   this->CentreCount->Deactivate();
@@ -318,7 +401,8 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
       continue;
     }
     // Once a translucent volume reaches the view; it leaves the transmission target alone.
-    if (!offsetResolved && !(offsetResolved = this->Resolve(frame, light, true)))
+    if (!offsetResolved &&
+      !(offsetResolved = this->Resolve(frame, light, ResolveInto::CountOffset)))
     {
       return false;
     }
@@ -347,7 +431,8 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
 std::size_t CountingTechnique::GraphicsMemoryBytes() const
 {
   return TextureBytes(this->CentreCount) + TextureBytes(this->SampleCounters) +
-    TextureBytes(this->CountOffset) + TextureBytes(this->LogTransmission);
+    TextureBytes(this->CountOffset) + TextureBytes(this->LogTransmission) +
+    this->HalfResolutionTargets.GraphicsMemoryBytes();
 }
 
 void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
@@ -356,6 +441,7 @@ void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
   this->SampleCounters->ReleaseGraphicsResources(window);
   this->CountOffset->ReleaseGraphicsResources(window);
   this->LogTransmission->ReleaseGraphicsResources(window);
+  this->HalfResolutionTargets.ReleaseGraphicsResources(window);
   this->ResolveVAO.ReleaseGraphicsResources();
   this->OffsetVAO.ReleaseGraphicsResources();
   this->TransmissionVAO.ReleaseGraphicsResources();

@@ -12,6 +12,7 @@
 #ifndef penumbraCountingTechnique_h
 #define penumbraCountingTechnique_h
 
+#include "penumbraHalfResolutionCounts.h"
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
@@ -36,6 +37,9 @@ public:
   /// Whether counting the light's samples should be cheaper than averaging them
   /// (penumbra::CountingIsCheaper), from its casters' potential silhouettes.
   bool IsCheaper(const ShadowLight& light, const std::vector<CasterCache*>& casters) const;
+  /// Whether lights without translucent casters are counted at half the viewport's resolution
+  /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
+  void SetHalfResolution(bool half) { this->HalfResolution = half; }
   bool CountsCentreInColour() const override { return true; }
   bool ShadowsTranslucentCasters() const override { return true; }
   /// Builds the wedges of the opaque casters that are not culled (after the chooser kept
@@ -52,15 +56,40 @@ public:
   /// then multiplies each visible sample's share by its translucent casters' transmission.
   void Finish(ShadowFrame& frame, const ShadowLight& light) override;
   /// The centre count and counters: 4 + N bytes per pixel, and 20 more for the count offset and
-  /// the transmission of four samples once a light with translucent casters was counted.
+  /// the transmission of four samples once a light with translucent casters was counted; at
+  /// half resolution the counted pixels' depth-stencil and visibility, 2 more.
   std::size_t GraphicsMemoryBytes() const override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
+  /// Where Resolve writes: the visibility into the light's layer, into the pixels that the
+  /// half-resolution count left uncertain (HalfResolutionCounts::UncertainStencil), or into the
+  /// counted pixels' visibility at half resolution; or the counts' per-pixel offset
+  /// (PENUMBRA_COUNT_OFFSET).
+  enum class ResolveInto
+  {
+    Layer,
+    UncertainPixels,
+    CountOffset,
+    HalfResolution
+  };
+  /// Which pixels CountWedges counts: all, the half-resolution ones, or those the stencil marks
+  /// uncertain after them.
+  enum class WedgePixels
+  {
+    All,
+    Counted,
+    Uncertain
+  };
   bool Draw(ShadowFrame& frame, const ShadowLight& light);
-  /// Into `target`: the counts' visibility (the light's layer), or their per-pixel offset
-  /// (PENUMBRA_COUNT_OFFSET), at every geometry pixel.
-  bool Resolve(ShadowFrame& frame, const ShadowLight& light, bool countOffset);
+  /// Adds every opaque caster's wedges' changes into the counters at `pixels`.
+  bool CountWedges(ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels);
+  /// Sizes the counters for `texels` and `samples` and clears them.
+  void PrepareCounters(
+    vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples);
+  void ClearCounters();
+  /// Into `target`, at every geometry pixel (or counted pixel at half resolution).
+  bool Resolve(ShadowFrame& frame, const ShadowLight& light, ResolveInto target);
   /// Takes from each counted sample's visible share what translucent casters keep from it, four
   /// samples (one counters' word) at a time.
   bool DrawTransmission(ShadowFrame& frame, const ShadowLight& light);
@@ -75,9 +104,11 @@ private:
   vtkNew<vtkTextureObject> CountOffset;
   /// log(1 - opacity) summed over the translucent surfaces in the way of four samples (RGBA32F).
   vtkNew<vtkTextureObject> LogTransmission;
+  HalfResolutionCounts HalfResolutionTargets;
   FullScreenTriangle::VAO ResolveVAO, OffsetVAO, TransmissionVAO;
   int Support = -1;
   bool WarnedSamples = false;
+  bool HalfResolution = false;
 };
 
 } // namespace penumbra

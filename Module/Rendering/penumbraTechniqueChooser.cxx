@@ -50,6 +50,7 @@ void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const
     this->Counting.Supported(pass))
   {
     light.Technique = &this->Counting;
+    this->Counting.SetHalfResolution(pass->GetHalfResolutionCounting());
     light.CountingChosenAutomatically = method == vtkSoftShadowPass::METHOD_AUTOMATIC;
     light.CountingSamples =
       this->Counting.ChooseSamples(pass, world, radius, pass->GetLightSamples(), target);

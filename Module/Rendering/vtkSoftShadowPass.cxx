@@ -271,6 +271,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightSamples: " << this->LightSamples << "\n";
   os << indent << "CollectStageTimes: " << this->CollectStageTimes << "\n";
   os << indent << "UseTightDepthRange: " << this->UseTightDepthRange << "\n";
+  os << indent << "HalfResolutionCounting: " << this->HalfResolutionCounting << "\n";
   os << indent << "DepthFromCasterMeshes: " << this->DepthFromCasterMeshes << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";

@@ -308,6 +308,21 @@ public:
 
   ///@{
   /**
+   * Whether soft shadow volumes (METHOD_SOFT_SHADOW_VOLUMES, and Automatic where it counts) are
+   * counted at half the viewport's resolution in each direction. Every other pixel in each
+   * direction is counted exactly; the pixels between take the mean of their counted neighbours
+   * on the same surface (none across a depth discontinuity). A quarter of the wedge fragments,
+   * for a penumbra as smooth as the full count's; a shadow detail narrower than two pixels may
+   * be lost. A light whose translucent casters' shadows reach the view is counted at full
+   * resolution. Off by default.
+   */
+  vtkSetMacro(HalfResolutionCounting, bool);
+  vtkGetMacro(HalfResolutionCounting, bool);
+  vtkBooleanMacro(HalfResolutionCounting, bool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the pass draws the depth it counts shadows against from its casters' cached meshes,
    * for the props VTK draws as nothing but their polydata's triangles (a plain actor with a
    * polydata mapper, a surface with no edges, clipping planes or custom shaders; see
@@ -353,6 +368,7 @@ protected:
   bool UseReceiverPlane = false;
   bool CollectStageTimes = false;
   bool UseTightDepthRange = true;
+  bool HalfResolutionCounting = false;
   bool DepthFromCasterMeshes = true;
   vtkIdType NumberOfPropsWithDepthFromMeshes = 0;
   vtkIdType NumberOfPropsWithCulledDepth = 0;

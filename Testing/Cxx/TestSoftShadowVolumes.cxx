@@ -227,6 +227,64 @@ void TestReceiversBox()
   }
 }
 
+/// The pixels with both coordinates even: the ones half-resolution counting counts.
+std::vector<float> CountedPixels(const std::vector<float>& image)
+{
+  std::vector<float> counted;
+  for (int y = 0; y < Height; y += 2)
+  {
+    for (int x = 0; x < Width; x += 2)
+    {
+      counted.push_back(image[static_cast<std::size_t>(y) * Width + x]);
+    }
+  }
+  return counted;
+}
+
+/// HalfResolutionCounting: the counted pixels are the full count's (a counter texel offset by a
+/// pixel, or tested against another pixel's depth, differs at every penumbra's edge); the pixels
+/// between are the full count's where counted again and otherwise near the mean of their counted
+/// neighbours, so few differ from the full count by more than 1/N or 1/2 (a shadow or surface
+/// narrower than two pixels between two counted pixels that agree); against the truth the MAE
+/// stays within 0.005 of the full count's (measured: 0.0026 at most, the directional light's); the
+/// half-resolution depth-stencil and visibility are reported in the GPU memory.
+void TestHalfResolution(const SceneMaker& make)
+{
+  const Scene scene = make();
+  SceneWindow view(scene);
+  vtkSoftShadowPass* pass = view.Pass;
+  pass->SetMethodToSoftShadowVolumes();
+  view.Window->Render();
+  const std::vector<float> full = Visibility(pass);
+  const vtkIdType fullBytes = pass->GetGraphicsMemoryBytes();
+  pass->HalfResolutionCountingOn();
+  view.Window->Render();
+  const std::vector<float> half = Visibility(pass);
+  const vtkIdType halfBytes = pass->GetGraphicsMemoryBytes();
+
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(view.Renderer);
+  truth->SetSamplesPerLight(256);
+  Check(truth->Update(), scene.Name + ": ray tracer ran");
+  const std::vector<float> zbuffer = WindowDepth(view.Window, view.Renderer);
+  const double maeFull = VisibilityError(full, truth, 0, zbuffer).MAE;
+  const double maeHalf = VisibilityError(half, truth, 0, zbuffer).MAE;
+  const SampleAgreement counted =
+    CompareSampledVisibility(CountedPixels(full), CountedPixels(half), Samples);
+  const SampleAgreement all = CompareSampledVisibility(full, half, Samples);
+  const vtkIdType halfTargets = vtkIdType((Width + 1) / 2) * ((Height + 1) / 2) * 8;
+  std::printf("half resolution %-34s counted pixels differ > 1/N %.2f%%, all pixels %.2f%% "
+              "(> 0.5 %.2f%%); MAE vs truth: full %.4f, half %.4f\n",
+    scene.Name.c_str(), 100.0 * counted.Step, 100.0 * all.Step, 100.0 * all.Half, maeFull, maeHalf);
+  Check(counted.Shadowed > Width * Height / 400 && counted.Step <= 0.001,
+    scene.Name + ": half resolution counts its pixels as the full count does");
+  Check(all.Step <= 0.01 && all.Half <= 0.003,
+    scene.Name + ": half resolution differs from the full count on few pixels");
+  Check(maeHalf <= maeFull + 0.005, scene.Name + ": half resolution as accurate as the full count");
+  Check(halfBytes == fullBytes + halfTargets,
+    scene.Name + ": the half-resolution targets are reported in GPU memory");
+}
+
 vtkSmartPointer<vtkAlgorithm> Mobius()
 {
   vtkNew<vtkParametricMobius> mobius;
@@ -314,6 +372,10 @@ int main()
     // buffer, whose steps the tight range makes tens of times finer (wedges.md).
     RunScene(scene, { true, 0.003, 0.0005 });
     RunScene(scene, { false, 0.05, 0.005 });
+  }
+  for (const SceneMaker& scene : scenes)
+  {
+    TestHalfResolution(scene);
   }
   TestAutomaticChoice(scenes[0]);
   TestReceiversBox();

@@ -15,14 +15,17 @@
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
 // translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads one sample at a time.
+//
+// Counter texel t holds the counts of pixel PENUMBRA_COUNTER_STRIDE * t (see the wedges' shader).
 uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler3D counters;
 uniform int useCounters;
 
 void main()
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  int centre = int(round(-texelFetch(centreCount, pixel, 0).r));
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int centre =
+    int(round(-texelFetch(centreCount, texel * PENUMBRA_COUNTER_STRIDE, 0).r));
   if (useCounters == 0)
   {
 #ifdef PENUMBRA_COUNT_OFFSET
@@ -37,7 +40,7 @@ void main()
   int visible = 0; // samples whose count equals it
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
   {
-    uint counts = texelFetch(counters, ivec3(pixel, word), 0).r + offset;
+    uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
     for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
     {
       int count = int((counts >> uint(8 * field)) & 0xFFu) - 128;

@@ -10,6 +10,10 @@
 // keeps every field exact while the final count stays in [0, 255].
 //
 // The depth test must run before this shader: a fragment it rejects must not count.
+//
+// Counter texel t counts the pixel PENUMBRA_COUNTER_STRIDE * t: every pixel, or at half
+// resolution every other pixel in each direction, whose texel centre the wedges' vertex shader
+// puts on that pixel's centre, so that the depth test and the point agree.
 layout(early_fragment_tests) in;
 
 //PENUMBRA::DepthPoint::Dec
@@ -35,7 +39,8 @@ float faceWeight(vec3 normal, vec3 fromEdge)
 
 void main()
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  ivec2 pixel = texel * PENUMBRA_COUNTER_STRIDE;
   float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
   vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
@@ -109,7 +114,7 @@ void main()
     }
     if (changes != 0u)
     {
-      imageAtomicAdd(counters, ivec3(pixel, word), changes);
+      imageAtomicAdd(counters, ivec3(texel, word), changes);
     }
   }
 }

@@ -12,6 +12,9 @@ in vec2 faceSigns;
 in vec3 centreNormal;
 
 uniform mat4 MCDCMatrix;
+// Clip-space scale (xy) and offset (zw) that put the counter texel centres on the pixel centres
+// they count (penumbra::HalfResolutionCounts::ClipToCounters); (1, 1, 0, 0) at full resolution.
+uniform vec4 clipToCounters;
 
 flat out vec3 edgeFromVS;
 flat out vec3 edgeToVS;
@@ -28,5 +31,11 @@ void main()
   faceNormal1VS = faceNormal1;
   faceSignsVS = faceSigns;
   centreNormalVS = centreNormal;
-  gl_Position = vertexMC.w > 1.5 ? vec4(vertexMC.xy, 1.0, 1.0) : MCDCMatrix * vertexMC;
+  if (vertexMC.w > 1.5)
+  {
+    gl_Position = vec4(vertexMC.xy, 1.0, 1.0); // covers every counter texel at any scale
+    return;
+  }
+  gl_Position = MCDCMatrix * vertexMC;
+  gl_Position.xy = gl_Position.xy * clipToCounters.xy + clipToCounters.zw * gl_Position.w;
 }

@@ -1,0 +1,90 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//PENUMBRA::Defines
+// Counting at half resolution counted the pixels with even coordinates exactly
+// (penumbraCountingWedgeFS.glsl). Every other pixel lies between 2 of them along a row or
+// column, or 4 on the diagonals. Where their visibilities are at most `uncertain` apart, the
+// pixel takes their mean: the light changes little there, whatever surfaces they lie on. The
+// pixel is uncertain, and counted again at full resolution, where they differ more (a shadow's
+// edge, or a crease or silhouette with a shadow ending at it), where its surface stands out in
+// depth from both counted pixels of a pair (a surface narrower than two pixels, which neither
+// sees), and where no counted pixel is beside it (only the background or the window's border).
+//
+// With PENUMBRA_MARK_UNCERTAIN defined it writes nothing and keeps only the uncertain pixels
+// (for the stencil); otherwise it writes every pixel's mean, which the full count then replaces
+// at the uncertain ones.
+uniform sampler2D depthTexture;
+uniform sampler2D countedVisibility; // at half resolution: texel t is pixel 2t's visibility
+uniform float uncertain; // the largest difference of counted neighbours taken as smooth
+
+/// Steps of a 24-bit depth buffer within which depths are taken as equal.
+const float depthSteps = 4.0 / 16777216.0;
+
+float sum = 0.0;
+float lowest = 1.0;
+float highest = 0.0;
+int counted = 0;
+bool standsOut = false;
+
+/// The depth at `pixel`; 1 (the background's) off the window.
+float depthAt(ivec2 pixel)
+{
+  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, textureSize(depthTexture, 0))))
+  {
+    return 1.0;
+  }
+  return texelFetch(depthTexture, pixel, 0).r;
+}
+
+/// Adds the counted pixel at `pixel` unless it shows the background; returns its depth.
+float add(ivec2 pixel)
+{
+  float depth = depthAt(pixel);
+  if (depth < 1.0)
+  {
+    float visibility = texelFetch(countedVisibility, pixel / 2, 0).r;
+    sum += visibility;
+    lowest = min(lowest, visibility);
+    highest = max(highest, visibility);
+    ++counted;
+  }
+  return depth;
+}
+
+/// Adds the counted pixels at pixel - step and pixel + step.
+void addPair(ivec2 pixel, float depth, ivec2 step)
+{
+  float before = add(pixel - step);
+  float after = add(pixel + step);
+  standsOut = standsOut || depth < min(before, after) - depthSteps ||
+    depth > max(before, after) + depthSteps;
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 odd = pixel & 1;
+  if (odd == ivec2(0))
+  {
+#ifdef PENUMBRA_MARK_UNCERTAIN
+    discard; // counted
+#else
+    gl_FragData[0] = vec4(texelFetch(countedVisibility, pixel / 2, 0).r);
+    return;
+#endif
+  }
+  float depth = texelFetch(depthTexture, pixel, 0).r;
+  addPair(pixel, depth, odd);
+  if (odd.x == 1 && odd.y == 1)
+  {
+    addPair(pixel, depth, ivec2(1, -1));
+  }
+#ifdef PENUMBRA_MARK_UNCERTAIN
+  if (counted > 0 && highest - lowest <= uncertain && !standsOut)
+  {
+    discard; // certain
+  }
+#else
+  gl_FragData[0] = vec4(counted > 0 ? sum / float(counted) : 0.0);
+#endif
+}

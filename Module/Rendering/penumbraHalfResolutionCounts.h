@@ -1,0 +1,77 @@
+/**
+ * @file    penumbraHalfResolutionCounts.h
+ * @brief   Soft shadow volumes counted at half the window's resolution in each direction
+ *          (vtkSoftShadowPass::HalfResolutionCounting), then brought up to every pixel.
+ *
+ * Counting's cost on the GPU is its wedge fragments (Documentation/wedges.md); at half
+ * resolution there are a quarter as many. Counter texel t counts the pixel 2t exactly: the
+ * wedges' clip space is shifted so that t's centre falls on that pixel's centre, and their depth
+ * test runs against that pixel's depth. A pixel between takes the mean of its counted
+ * neighbours where they lie on its surface and nearly agree (penumbraHalfUpsampleFS.glsl); the
+ * rest, at shadow edges narrower than a few pixels, creases and depth discontinuities, are
+ * counted again at full resolution with the stencil test rejecting every other pixel, which
+ * costs a fraction of starting the counting shader there.
+ */
+#ifndef penumbraHalfResolutionCounts_h
+#define penumbraHalfResolutionCounts_h
+
+#include "penumbraOpenGLHelpers.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h" // for vtkNew<vtkOpenGLFramebufferObject>
+#include "vtkTextureObject.h"           // for vtkNew<vtkTextureObject>
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+
+class vtkShaderProgram;
+class vtkWindow;
+
+namespace penumbra
+{
+
+struct ShadowFrame;
+
+class HalfResolutionCounts
+{
+public:
+  /// The LI framebuffer's stencil value at the pixels Upsample leaves uncertain.
+  static constexpr int UncertainStencil = 1;
+  /// Counter texels for a viewport of `size` pixels: every other pixel, the last one included.
+  static glm::ivec2 CounterSize(const int size[2]);
+  /// The clip-space scale (xy) and offset (zw) that put counter texel t's centre on pixel 2t's
+  /// centre for a viewport of `size` pixels drawn into CounterSize(size) texels.
+  static glm::vec4 ClipToCounters(const int size[2]);
+
+  /// Binds the half-resolution framebuffer with its own depth (each counted pixel's, from the
+  /// frame's depth copy) and a cleared stencil, and sets the viewport to it. False, reported
+  /// once, when its shader does not build.
+  bool Begin(ShadowFrame& frame);
+  /// Makes the counted pixels' visibility (R32F) the colour target of the bound framebuffer.
+  void AttachVisibility();
+  /// Writes every geometry pixel's visibility into `layer` of the frame's LI layers: the counted
+  /// pixels' own, and between them the mean of their counted neighbours. Where that mean is
+  /// uncertain (neighbours more than `uncertain` apart, or across a crease or a depth
+  /// discontinuity; penumbraHalfUpsampleFS.glsl) the LI framebuffer's stencil is set to
+  /// UncertainStencil, for the caller to count those pixels at full resolution. The LI framebuffer
+  /// and the full viewport are bound on return.
+  bool Upsample(ShadowFrame& frame, int layer, float uncertain);
+
+  /// Bytes held: 4 per counter texel each for the depth-stencil and the visibility.
+  std::size_t GraphicsMemoryBytes() const;
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> DepthStencil;
+  vtkNew<vtkTextureObject> Visibility;
+  void SetUniforms(ShadowFrame& frame, vtkShaderProgram* program, float uncertain);
+
+  FullScreenTriangle::VAO DepthVAO, UpsampleVAO, MarkVAO;
+  glm::ivec2 Size{ 0, 0 };
+};
+
+} // namespace penumbra
+
+#endif
