@@ -283,6 +283,7 @@ bool CountingTechnique::CountWedges(
   }
   program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
   program->SetUniformf("sampleSpread", static_cast<float>(spread));
+  const TechniqueCounts before = frame.Counts;
   for (CasterCache* caster : *frame.Casters)
   {
     if (!Counted(*caster, light))
@@ -292,6 +293,10 @@ bool CountingTechnique::CountWedges(
     CountingWedgeCache& cache = caster->CountingWedges[light.Light];
     program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
     frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
+  }
+  if (pixels == WedgePixels::Uncertain)
+  {
+    frame.Counts = before; // the wedges the counted pixels' pass drew, in the statistics once
   }
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
