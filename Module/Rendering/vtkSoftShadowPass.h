@@ -313,10 +313,11 @@ public:
    * direction is counted exactly; a pixel between takes the mean of its counted neighbours where
    * they are at most two samples' shares apart and its depth does not stand out from theirs, and
    * is counted again at full resolution elsewhere (shadow edges, silhouettes, thin surfaces). A
-   * shadow narrower than two pixels between counted pixels that agree is lost. A light whose translucent casters' shadows reach the view is counted at full
-   * resolution. Automatic's choice between counting and averaging does not take it into
-   * account. Off by default; up to 1.8 times faster on large lights and big casters, slower on
-   * small scenes (Documentation/wedges.md, "Counting at half resolution").
+   * shadow narrower than two pixels between counted pixels that agree is lost. A light whose
+   * translucent casters' shadows reach the view is counted at full resolution. Automatic's choice
+   * between counting and averaging does not take it into account. Off by default; up to 1.8 times
+   * faster on large lights and big casters, slower on small scenes (Documentation/wedges.md,
+   * "Counting at half resolution").
    */
   vtkSetMacro(HalfResolutionCounting, bool);
   vtkGetMacro(HalfResolutionCounting, bool);
