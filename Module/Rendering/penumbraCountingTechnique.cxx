@@ -32,6 +32,10 @@ namespace
 /// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
 constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 
+/// The largest visibility step between counted neighbours that half-resolution counting takes
+/// as smooth, whatever the samples (penumbraHalfUpsampleFS.glsl's `uncertain`).
+constexpr float MaxSmoothStep = 0.25f;
+
 /// A shader source with its sample count compiled in (the loops' bounds and the samples' array),
 /// the pixels between counter texels (1, or 2 at half resolution), and `define` defined when
 /// given.
@@ -199,7 +203,9 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     // Uncertain: counted neighbours more than two samples apart, or a surface between them that
     // neither sees (penumbraHalfUpsampleFS.glsl). One sample apart would leave the mean within
     // half a sample of the full count, at up to a fifth more time (Documentation/wedges.md).
-    const float uncertain = 2.0f / static_cast<float>(light.CountingSamples.size());
+    // At most a quarter: with few samples two of them are a hard shadow's whole step.
+    const float uncertain =
+      std::min(2.0f / static_cast<float>(light.CountingSamples.size()), MaxSmoothStep);
     drawn = this->CountWedges(frame, light, WedgePixels::Counted) &&
       this->Resolve(frame, light, ResolveInto::HalfResolution) &&
       this->HalfResolutionTargets.Upsample(frame, light.Layer, uncertain);

@@ -20,7 +20,11 @@
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <glm/glm.hpp>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 
 using namespace penumbra_test;
@@ -285,6 +289,85 @@ void TestHalfResolution(const SceneMaker& make)
     scene.Name + ": the half-resolution targets are reported in GPU memory");
 }
 
+/// The pixels between counted ones (odd coordinates) with a pair of counted neighbours of which
+/// one shows the background or lies beyond the window's border (penumbraHalfUpsampleFS.glsl's
+/// pairs): one neighbour alone tells nothing about the pixel, which must be counted again.
+std::vector<std::size_t> OneSidedPixels(const std::vector<float>& zbuffer, int width, int height)
+{
+  auto background = [&](glm::ivec2 p)
+  {
+    return p.x < 0 || p.y < 0 || p.x >= width || p.y >= height ||
+      zbuffer[static_cast<std::size_t>(p.y) * width + p.x] >= 1.0f;
+  };
+  std::vector<std::size_t> pixels;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const glm::ivec2 pixel(x, y), odd(x & 1, y & 1);
+      std::vector<glm::ivec2> steps;
+      if (odd != glm::ivec2(0))
+      {
+        steps.push_back(odd);
+      }
+      if (odd == glm::ivec2(1))
+      {
+        steps.emplace_back(1, -1);
+      }
+      if (std::any_of(steps.begin(), steps.end(),
+            [&](glm::ivec2 step) { return background(pixel - step) != background(pixel + step); }))
+      {
+        pixels.push_back(static_cast<std::size_t>(y) * width + x);
+      }
+    }
+  }
+  return pixels;
+}
+
+/// Half resolution where its pairs of counted pixels are incomplete or its light has few samples:
+/// beside the background and the window's border, in windows of a few pixels too, a pixel with a
+/// one-sided pair equals the full count; with two samples a step between counted neighbours is a
+/// hard shadow's whole step, so no pixel may take a mean between two counts.
+void TestHalfResolutionEdges(const SceneMaker& make)
+{
+  const Scene scene = make();
+  SceneWindow view(scene);
+  vtkSoftShadowPass* pass = view.Pass;
+  pass->SetMethodToSoftShadowVolumes();
+  auto render = [&](bool half)
+  {
+    pass->SetHalfResolutionCounting(half);
+    view.Window->Render();
+    return Visibility(pass);
+  };
+  for (const glm::ivec2 size : { glm::ivec2(Width, Height), glm::ivec2(3, 3), glm::ivec2(5, 5),
+         glm::ivec2(7, 9), glm::ivec2(11, 6), glm::ivec2(16, 12) })
+  {
+    view.Window->SetSize(size.x, size.y);
+    const std::vector<float> full = render(false);
+    const std::vector<float> half = render(true);
+    const std::vector<std::size_t> oneSided =
+      OneSidedPixels(WindowDepth(view.Window, view.Renderer), size.x, size.y);
+    const auto differing = std::count_if(oneSided.begin(), oneSided.end(),
+      [&](std::size_t i) { return std::abs(full[i] - half[i]) > 1e-3f; });
+    const std::string window = std::to_string(size.x) + "x" + std::to_string(size.y);
+    std::printf("half resolution %-34s %s: %zu one-sided pixels, %d differ from the full count\n",
+      scene.Name.c_str(), window.c_str(), oneSided.size(), static_cast<int>(differing));
+    Check(!oneSided.empty() && differing == 0,
+      scene.Name + ": half resolution counts one-sided pixels again, " + window + " window");
+  }
+  view.Window->SetSize(Width, Height);
+  pass->SetLightSamples(2);
+  const std::vector<float> half = render(true);
+  const auto between = std::count_if(half.begin(), half.end(),
+    [](float visibility)
+    { return std::abs(2.0f * visibility - std::round(2.0f * visibility)) > 1e-3f; });
+  std::printf("half resolution %-34s two samples: %d pixels between counts\n", scene.Name.c_str(),
+    static_cast<int>(between));
+  Check(between == 0, scene.Name + ": with two samples half resolution blends no hard step");
+  pass->SetLightSamples(Samples);
+}
+
 vtkSmartPointer<vtkAlgorithm> Mobius()
 {
   vtkNew<vtkParametricMobius> mobius;
@@ -377,6 +460,7 @@ int main()
   {
     TestHalfResolution(scene);
   }
+  TestHalfResolutionEdges(scenes[0]);
   TestAutomaticChoice(scenes[0]);
   TestReceiversBox();
   TestStageTimes(scenes[0]);

@@ -8,7 +8,9 @@
 // pixel is uncertain, and counted again at full resolution, where they differ more (a shadow's
 // edge, or a crease or silhouette with a shadow ending at it), where its surface stands out in
 // depth from both counted pixels of a pair (a surface narrower than two pixels, which neither
-// sees), and where no counted pixel is beside it (only the background or the window's border).
+// sees), and where a pair has only one counted pixel (the other shows the background or lies
+// beyond the window's border): one pixel alone bounds nothing, and beside a silhouette it often
+// lies on another surface than the pixel's.
 //
 // With PENUMBRA_MARK_UNCERTAIN defined it writes nothing and keeps only the uncertain pixels
 // (for the stencil); otherwise it writes every pixel's mean, which the full count then replaces
@@ -25,6 +27,7 @@ float lowest = 1.0;
 float highest = 0.0;
 int counted = 0;
 bool standsOut = false;
+bool oneSided = false;
 
 /// The depth at `pixel`; 1 (the background's) off the window.
 float depthAt(ivec2 pixel)
@@ -56,6 +59,7 @@ void addPair(ivec2 pixel, float depth, ivec2 step)
 {
   float before = add(pixel - step);
   float after = add(pixel + step);
+  oneSided = oneSided || (before < 1.0) != (after < 1.0);
   standsOut = standsOut || depth < min(before, after) - depthSteps ||
     depth > max(before, after) + depthSteps;
 }
@@ -80,7 +84,7 @@ void main()
     addPair(pixel, depth, ivec2(1, -1));
   }
 #ifdef PENUMBRA_MARK_UNCERTAIN
-  if (counted > 0 && highest - lowest <= uncertain && !standsOut)
+  if (counted > 0 && !oneSided && highest - lowest <= uncertain && !standsOut)
   {
     discard; // certain
   }
