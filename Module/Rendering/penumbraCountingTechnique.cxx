@@ -32,19 +32,22 @@ namespace
 /// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
 constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 
-/// The largest visibility step between counted neighbours that half-resolution counting takes
-/// as smooth, whatever the samples (penumbraHalfUpsampleFS.glsl's `uncertain`).
-constexpr float MaxSmoothStep = 0.25f;
+/// The largest difference of counted neighbours' visibilities that half-resolution counting
+/// takes as smooth (penumbraHalfUpsampleFS.glsl's `uncertain`): two samples' shares, or fewer
+/// where two would be more than a quarter (with few samples, a hard shadow's whole step), and
+/// half a share more so that float rounding cannot move a step across it.
+float SmoothLimit(std::size_t samples)
+{
+  const std::size_t steps = std::min<std::size_t>(2, samples / 4);
+  return (static_cast<float>(steps) + 0.5f) / static_cast<float>(samples);
+}
 
-/// A shader source with its sample count compiled in (the loops' bounds and the samples' array),
-/// the pixels between counter texels (1, or 2 at half resolution), and `define` defined when
-/// given.
-std::string CountingShader(
-  const char* source, std::size_t samples, int counterStride, const char* define = nullptr)
+/// A shader source with its sample count compiled in (the loops' bounds and the samples' array)
+/// and `define` defined when given.
+std::string CountingShader(const char* source, std::size_t samples, const char* define = nullptr)
 {
   std::string text = source;
-  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) +
-    "\n#define PENUMBRA_COUNTER_STRIDE " + std::to_string(counterStride) + "\n";
+  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n";
   if (define)
   {
     defines += std::string("#define ") + define + "\n";
@@ -188,6 +191,10 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
+  if (!this->HalfResolution && this->HalfResolutionTargets.GraphicsMemoryBytes() > 0)
+  {
+    this->HalfResolutionTargets.ReleaseGraphicsResources(window); // the option was turned off
+  }
   ostate->PushFramebufferBindings();
   // Translucent casters' transmission reads every pixel's counters: such lights count at full
   // resolution.
@@ -203,9 +210,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     // Uncertain: counted neighbours more than two samples apart, or a surface between them that
     // neither sees (penumbraHalfUpsampleFS.glsl). One sample apart would leave the mean within
     // half a sample of the full count, at up to a fifth more time (Documentation/wedges.md).
-    // At most a quarter: with few samples two of them are a hard shadow's whole step.
-    const float uncertain =
-      std::min(2.0f / static_cast<float>(light.CountingSamples.size()), MaxSmoothStep);
+    const float uncertain = SmoothLimit(light.CountingSamples.size());
     drawn = this->CountWedges(frame, light, WedgePixels::Counted) &&
       this->Resolve(frame, light, ResolveInto::HalfResolution) &&
       this->HalfResolutionTargets.Upsample(frame, light.Layer, uncertain);
@@ -231,7 +236,7 @@ bool CountingTechnique::CountWedges(
   vtkOpenGLRenderWindow* window = frame.Window;
   const std::size_t sampleCount = light.CountingSamples.size();
   const bool counted = pixels == WedgePixels::Counted;
-  const std::string wedgeFS = CountingShader(penumbraCountingWedgeFS, sampleCount, counted ? 2 : 1);
+  const std::string wedgeFS = CountingShader(penumbraCountingWedgeFS, sampleCount);
   vtkShaderProgram* program = frame.Programs->Ready(window, penumbraCountingWedgeVS,
     wedgeFS.c_str(), "soft shadow volume wedge", "soft shadows average hard shadows instead");
   if (!program)
@@ -244,9 +249,13 @@ bool CountingTechnique::CountWedges(
   ostate->vtkglStencilMask(0xFF);
   if (pixels == WedgePixels::Uncertain)
   {
-    // Only where the half-resolution count left the pixel uncertain.
-    ostate->vtkglStencilFunc(GL_EQUAL, HalfResolutionCounts::UncertainStencil, 0xFF);
-    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    // Only where the half-resolution count left the pixel uncertain; fragments that pass the
+    // depth test mark it reached there, as below.
+    ostate->vtkglStencilFunc(GL_EQUAL,
+      HalfResolutionCounts::UncertainStencil | HalfResolutionCounts::ReachedStencil,
+      HalfResolutionCounts::ClassStencilBits);
+    ostate->vtkglStencilMask(HalfResolutionCounts::ReachedStencil);
+    ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   }
   else
   {
@@ -269,6 +278,7 @@ bool CountingTechnique::CountWedges(
   const glm::vec4 clipToCounters =
     counted ? HalfResolutionCounts::ClipToCounters(frame.Size) : glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
   program->SetUniform4f("clipToCounters", glm::value_ptr(clipToCounters));
+  program->SetUniformi("counterStride", counted ? 2 : 1);
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
@@ -305,7 +315,8 @@ bool CountingTechnique::CountWedges(
     frame.Counts = before; // the wedges the counted pixels' pass drew, in the statistics once
   }
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  // For the resolve's reads and for the clear of a second count (glClearTexImage).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   frame.DepthCopy()->Deactivate();
   return true;
 }
@@ -315,8 +326,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   vtkOpenGLRenderWindow* window = frame.Window;
   const bool countOffset = target == ResolveInto::CountOffset;
   const std::string resolveFS = CountingShader(penumbraCountingResolveFS,
-    light.CountingSamples.size(), target == ResolveInto::HalfResolution ? 2 : 1,
-    countOffset ? "PENUMBRA_COUNT_OFFSET" : nullptr);
+    light.CountingSamples.size(), countOffset ? "PENUMBRA_COUNT_OFFSET" : nullptr);
   vtkShaderProgram* resolve = frame.Programs->Ready(window, penumbraResolveVS, resolveFS.c_str(),
     countOffset ? "soft shadow volume count offset" : "soft shadow volume resolve",
     "soft shadows average hard shadows instead");
@@ -353,21 +363,17 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   this->SampleCounters->Activate();
   resolve->SetUniformi("centreCount", this->CentreCount->GetTextureUnit());
   resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
-  if (target == ResolveInto::UncertainPixels)
+  resolve->SetUniformi("counterStride", target == ResolveInto::HalfResolution ? 2 : 1);
+  // Counted again only at the uncertain pixels (CountWedges); every other pixel is written.
+  const int counted =
+    target == ResolveInto::UncertainPixels ? HalfResolutionCounts::UncertainStencil : 0;
+  const int reachedMark =
+    target == ResolveInto::UncertainPixels ? HalfResolutionCounts::ReachedStencil : 1;
+  for (const bool reached : { true, false })
   {
-    // Counted again there (CountWedges); every other pixel is written.
-    ostate->vtkglStencilFunc(GL_EQUAL, HalfResolutionCounts::UncertainStencil, 0xFF);
-    resolve->SetUniformi("useCounters", 1);
-    frame.FullScreen->Draw(resolve, this->ResolveVAO);
-  }
-  else
-  {
-    for (int reached : { 1, 0 })
-    {
-      ostate->vtkglStencilFunc(GL_EQUAL, reached, 0xFF);
-      resolve->SetUniformi("useCounters", reached);
-      frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
-    }
+    ostate->vtkglStencilFunc(GL_EQUAL, counted | (reached ? reachedMark : 0), 0xFF);
+    resolve->SetUniformi("useCounters", reached ? 1 : 0);
+    frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
   }
   this->SampleCounters->Deactivate();
   this->CentreCount->Deactivate();

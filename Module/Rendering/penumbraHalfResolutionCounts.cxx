@@ -21,7 +21,6 @@ namespace
 {
 constexpr const char* FullResolutionInstead = "soft shadows are counted at full resolution";
 constexpr const char* AveragedInstead = "soft shadows average hard shadows instead";
-constexpr int CertainStencil = 2;
 }
 
 glm::ivec2 HalfResolutionCounts::CounterSize(const int size[2])
@@ -70,13 +69,12 @@ bool HalfResolutionCounts::Begin(ShadowFrame& frame)
     GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, this->DepthStencil->GetHandle(), 0);
   this->AttachVisibility();
 
+  // The viewport stays for the wedges; the stencil is cleared by their pass.
   vtkOpenGLState* ostate = window->GetState();
+  ostate->vtkglViewport(0, 0, size.x, size.y);
   {
     ScopedDrawState saved(ostate);
-    ostate->vtkglViewport(0, 0, size.x, size.y);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglStencilMask(0xFF);
-    ostate->vtkglClear(GL_STENCIL_BUFFER_BIT);
     ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_STENCIL_TEST);
@@ -89,7 +87,6 @@ bool HalfResolutionCounts::Begin(ShadowFrame& frame)
     frame.FullScreen->Draw(program, this->DepthVAO);
     frame.DepthCopy()->Deactivate();
   }
-  ostate->vtkglViewport(0, 0, size.x, size.y);
   return true;
 }
 
@@ -135,15 +132,16 @@ bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncerta
   ostate->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   ostate->vtkglStencilFunc(GL_ALWAYS, CertainStencil, 0xFF);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (!frame.Programs->Bind(window, upsample, "half-resolution upsample"))
+  const bool averaged = frame.Programs->Bind(window, upsample, "half-resolution upsample");
+  if (averaged)
   {
-    return false;
+    this->SetUniforms(frame, upsample, uncertain);
+    frame.FullScreen->Draw(upsample, this->UpsampleVAO);
   }
-  this->SetUniforms(frame, upsample, uncertain);
-  frame.FullScreen->Draw(upsample, this->UpsampleVAO);
   ostate->vtkglStencilFunc(GL_ALWAYS, UncertainStencil, 0xFF);
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  const bool marked = frame.Programs->Bind(window, mark, "half-resolution uncertain pixels");
+  const bool marked =
+    averaged && frame.Programs->Bind(window, mark, "half-resolution uncertain pixels");
   if (marked)
   {
     this->SetUniforms(frame, mark, uncertain);

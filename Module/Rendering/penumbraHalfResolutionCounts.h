@@ -7,8 +7,9 @@
  * resolution there are a quarter as many. Counter texel t counts the pixel 2t exactly: the
  * wedges' clip space is shifted so that t's centre falls on that pixel's centre, and their depth
  * test runs against that pixel's depth. A pixel between takes the mean of its counted
- * neighbours where they lie on its surface and nearly agree (penumbraHalfUpsampleFS.glsl); the
- * rest, at shadow edges narrower than a few pixels, creases and depth discontinuities, are
+ * neighbours where they nearly agree and its depth lies between theirs
+ * (penumbraHalfUpsampleFS.glsl); the rest, at shadow edges, creases, depth discontinuities and
+ * beside the background, are
  * counted again at full resolution with the stencil test rejecting every other pixel, which
  * costs a fraction of starting the counting shader there.
  */
@@ -36,8 +37,14 @@ struct ShadowFrame;
 class HalfResolutionCounts
 {
 public:
-  /// The LI framebuffer's stencil value at the pixels Upsample leaves uncertain.
+  /// The LI framebuffer's stencil values that Upsample leaves at the geometry's pixels: certain
+  /// or uncertain (ClassStencilBits); the second count marks the uncertain pixels that a wedge
+  /// reached with ReachedStencil, for the resolve to read their counters only there, as the full
+  /// count does.
   static constexpr int UncertainStencil = 1;
+  static constexpr int CertainStencil = 2;
+  static constexpr int ClassStencilBits = UncertainStencil | CertainStencil;
+  static constexpr int ReachedStencil = 4;
   /// Counter texels for a viewport of `size` pixels: every other pixel, the last one included.
   static glm::ivec2 CounterSize(const int size[2]);
   /// The clip-space scale (xy) and offset (zw) that put counter texel t's centre on pixel 2t's

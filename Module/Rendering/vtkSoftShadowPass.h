@@ -311,8 +311,10 @@ public:
    * Whether soft shadow volumes (METHOD_SOFT_SHADOW_VOLUMES, and Automatic where it counts) are
    * counted at half the viewport's resolution in each direction. Every other pixel in each
    * direction is counted exactly; a pixel between takes the mean of its counted neighbours where
-   * they are at most two samples' shares apart and its depth does not stand out from theirs, and
-   * is counted again at full resolution elsewhere (shadow edges, silhouettes, thin surfaces). A
+   * they are at most two samples' shares apart (with fewer than 8 samples: fewer shares, so that
+   * no hard step is blended) and its depth does not stand out from theirs, and is counted again
+   * at full resolution elsewhere (shadow edges, silhouettes, the background's edge, thin
+   * surfaces). A
    * shadow narrower than two pixels between counted pixels that agree is lost. A light whose
    * translucent casters' shadows reach the view is counted at full resolution. Automatic's choice
    * between counting and averaging does not take it into account. Off by default; up to 1.8 times

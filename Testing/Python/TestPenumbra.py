@@ -121,15 +121,21 @@ check(soft.RegressionTest(10) == vtkTesting.PASSED, "soft shadows match their ba
 # neighbours or counted again; within 0.005 of the full count's MAE (C++ TestSoftShadowVolumes
 # holds it to the full count pixel by pixel).
 soft_mae = error.mean()
+full_bytes = shadows.GetGraphicsMemoryBytes()
 shadows.HalfResolutionCountingOn()
 check(shadows.GetHalfResolutionCounting(), "half-resolution counting is on")
 window.Render()
+# Its depth-stencil and visibility, 4 bytes each per counter texel: it did count at half size.
+check(shadows.GetGraphicsMemoryBytes() == full_bytes + ((w + 1) // 2) * ((h + 1) // 2) * 8,
+      "half-resolution targets in use")
 half = image(shadows.GetVisibilityImage(0), w, h)
 half_mae = np.abs(half - true)[region].mean()
 print("     soft at half resolution: MAE %.4f (full %.4f)" % (half_mae, soft_mae))
 check(np.isfinite(half).all() and half.min() >= 0 and half.max() <= 1, "half-resolution visibility in [0, 1]")
 check(half_mae < soft_mae + 0.005, "half-resolution counting near the full count")
 shadows.HalfResolutionCountingOff()
+window.Render()
+check(shadows.GetGraphicsMemoryBytes() == full_bytes, "half-resolution targets freed once off")
 
 # Plateaus on the ground plane, marked through the actor's keys.
 penumbra.vtkSoftShadowPass.SetShadowPlane(ground, True)

@@ -16,16 +16,17 @@
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
 // translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads one sample at a time.
 //
-// Counter texel t holds the counts of pixel PENUMBRA_COUNTER_STRIDE * t (see the wedges' shader).
+// Counter texel t holds the counts of pixel counterStride * t (see the wedges' shader).
 uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler3D counters;
 uniform int useCounters;
+uniform int counterStride; // pixels between counter texels: 1, or 2 at half resolution
 
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int centre =
-    int(round(-texelFetch(centreCount, texel * PENUMBRA_COUNTER_STRIDE, 0).r));
+    int(round(-texelFetch(centreCount, texel * counterStride, 0).r));
   if (useCounters == 0)
   {
 #ifdef PENUMBRA_COUNT_OFFSET

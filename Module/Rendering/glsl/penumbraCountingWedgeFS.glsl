@@ -11,7 +11,7 @@
 //
 // The depth test must run before this shader: a fragment it rejects must not count.
 //
-// Counter texel t counts the pixel PENUMBRA_COUNTER_STRIDE * t: every pixel, or at half
+// Counter texel t counts the pixel counterStride * t: every pixel, or at half
 // resolution every other pixel in each direction, whose texel centre the wedges' vertex shader
 // puts on that pixel's centre, so that the depth test and the point agree.
 layout(early_fragment_tests) in;
@@ -22,6 +22,7 @@ uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT]; // wedge coordinates, same w a
 uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
+uniform int counterStride;  // pixels between counter texels: 1, or 2 at half resolution
 layout(r32ui) uniform uimage3D counters;
 
 flat in vec3 edgeFromVS;
@@ -40,7 +41,7 @@ float faceWeight(vec3 normal, vec3 fromEdge)
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  ivec2 pixel = texel * PENUMBRA_COUNTER_STRIDE;
+  ivec2 pixel = texel * counterStride;
   float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
   vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
