@@ -20,7 +20,6 @@ namespace penumbra
 namespace
 {
 constexpr const char* FullResolutionInstead = "soft shadows are counted at full resolution";
-constexpr const char* AveragedInstead = "soft shadows average hard shadows instead";
 }
 
 glm::ivec2 HalfResolutionCounts::CounterSize(const int size[2])
@@ -37,15 +36,35 @@ glm::vec4 HalfResolutionCounts::ClipToCounters(const int size[2])
   return { pixels / (2.0f * texels), (0.5f * pixels + 0.5f) / texels - 1.0f };
 }
 
-bool HalfResolutionCounts::Begin(ShadowFrame& frame)
+bool HalfResolutionCounts::ReadyPrograms(ShadowFrame& frame)
 {
-  vtkOpenGLRenderWindow* window = frame.Window;
-  vtkShaderProgram* program = frame.Programs->Ready(
-    window, penumbraResolveVS, penumbraHalfDepthFS, "half-resolution depth", FullResolutionInstead);
-  if (!program)
+  if (this->ProgramsFailed)
   {
     return false;
   }
+  vtkOpenGLRenderWindow* window = frame.Window;
+  std::string markFS = penumbraHalfUpsampleFS;
+  vtkShaderProgram::Substitute(
+    markFS, "//PENUMBRA::Defines", "#define PENUMBRA_MARK_UNCERTAIN", false);
+  this->DepthProgram = frame.Programs->Ready(
+    window, penumbraResolveVS, penumbraHalfDepthFS, "half-resolution depth", FullResolutionInstead);
+  this->UpsampleProgram = frame.Programs->Ready(window, penumbraResolveVS, penumbraHalfUpsampleFS,
+    "half-resolution upsample", FullResolutionInstead);
+  this->MarkProgram = frame.Programs->Ready(window, penumbraResolveVS, markFS.c_str(),
+    "half-resolution uncertain pixels", FullResolutionInstead);
+  this->ProgramsFailed = !this->DepthProgram || !this->UpsampleProgram || !this->MarkProgram;
+  return !this->ProgramsFailed;
+}
+
+bool HalfResolutionCounts::Begin(ShadowFrame& frame)
+{
+  if (!this->ReadyPrograms(frame) ||
+    !frame.Programs->Bind(frame.Window, this->DepthProgram, "half-resolution depth"))
+  {
+    return false;
+  }
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkShaderProgram* program = this->DepthProgram;
   const glm::ivec2 size = CounterSize(frame.Size);
   // A new window releases the textures (SetContext), so both are allocated again.
   if (this->Framebuffer->GetContext() != window)
@@ -100,17 +119,8 @@ void HalfResolutionCounts::AttachVisibility()
 bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncertain)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
-  std::string markFS = penumbraHalfUpsampleFS;
-  vtkShaderProgram::Substitute(
-    markFS, "//PENUMBRA::Defines", "#define PENUMBRA_MARK_UNCERTAIN", false);
-  vtkShaderProgram* mark = frame.Programs->Ready(
-    window, penumbraResolveVS, markFS.c_str(), "half-resolution uncertain pixels", AveragedInstead);
-  vtkShaderProgram* upsample = frame.Programs->Ready(
-    window, penumbraResolveVS, penumbraHalfUpsampleFS, "half-resolution upsample", AveragedInstead);
-  if (!mark || !upsample)
-  {
-    return false;
-  }
+  vtkShaderProgram* mark = this->MarkProgram;
+  vtkShaderProgram* upsample = this->UpsampleProgram;
   vtkOpenGLState* ostate = window->GetState();
   frame.Buffer->BindLayer(layer);
   ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
@@ -174,6 +184,8 @@ void HalfResolutionCounts::ReleaseGraphicsResources(vtkWindow* window)
   this->UpsampleVAO.ReleaseGraphicsResources();
   this->MarkVAO.ReleaseGraphicsResources();
   this->Size = glm::ivec2(0);
+  this->DepthProgram = this->UpsampleProgram = this->MarkProgram = nullptr;
+  this->ProgramsFailed = false;
 }
 
 } // namespace penumbra

@@ -52,8 +52,8 @@ public:
   static glm::vec4 ClipToCounters(const int size[2]);
 
   /// Binds the half-resolution framebuffer with its own depth (each counted pixel's, from the
-  /// frame's depth copy) and a cleared stencil, and sets the viewport to it. False, reported
-  /// once, when its shader does not build.
+  /// frame's depth copy), and sets the viewport to it. False, reported once, when one of its
+  /// shaders does not build: the caller counts at full resolution instead.
   bool Begin(ShadowFrame& frame);
   /// Makes the counted pixels' visibility (R32F) the colour target of the bound framebuffer.
   void AttachVisibility();
@@ -74,6 +74,12 @@ private:
   vtkNew<vtkTextureObject> DepthStencil;
   vtkNew<vtkTextureObject> Visibility;
   void SetUniforms(ShadowFrame& frame, vtkShaderProgram* program, float uncertain);
+  /// Builds the three shaders, once: after one failed, never again for this context.
+  bool ReadyPrograms(ShadowFrame& frame);
+  vtkShaderProgram* DepthProgram = nullptr;
+  vtkShaderProgram* UpsampleProgram = nullptr;
+  vtkShaderProgram* MarkProgram = nullptr;
+  bool ProgramsFailed = false;
 
   FullScreenTriangle::VAO DepthVAO, UpsampleVAO, MarkVAO;
   glm::ivec2 Size{ 0, 0 };
