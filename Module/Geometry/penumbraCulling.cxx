@@ -26,7 +26,7 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   const double size = glm::length(nearCorners[2] - nearCorners[0]);
   const glm::dvec3 apex = light.w != 0.0 ? glm::dvec3(light) / light.w : glm::dvec3(0.0);
   const glm::dvec3 towardsLight =
-    light.w != 0.0 ? apex - centre : glm::normalize(glm::dvec3(light)) * size;
+    light.w != 0.0 ? apex - centre : UnitDirection(glm::dvec3(light)) * size;
   const glm::dvec3 inside = centre + 0.5 * towardsLight;
 
   std::array<Plane, 5> planes;
@@ -127,7 +127,7 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, cons
     else
     {
       // Sweep directions within the angular radius of the direction away from the light.
-      const glm::dvec3 away = -glm::normalize(glm::dvec3(light));
+      const glm::dvec3 away = -UnitDirection(glm::dvec3(light));
       const double cosine = glm::dot(n, away) / length;
       sweptOutside = cosine <= -std::sin(std::min(radius, 1.5707963267948966));
     }
@@ -175,7 +175,7 @@ glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin, const glm::dvec3& casterM
   // Every swept direction lies within `spread` radians of `axis`: the sweep through the caster's
   // centre, and for a point light the cone around it that holds the caster's bounding sphere.
   const glm::dvec3 centre = 0.5 * (casterMin + casterMax);
-  glm::dvec3 axis = -glm::normalize(glm::dvec3(light));
+  glm::dvec3 axis = -UnitDirection(glm::dvec3(light));
   double spread = 0.0;
   if (light.w != 0.0)
   {

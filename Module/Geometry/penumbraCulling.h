@@ -15,10 +15,23 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace penumbra
 {
+
+/**
+ * `v` scaled to unit length, to rounding, for any finite non-zero `v`: glm::normalize squares
+ * the components, which fall into subnormals below about 1e-154 (a light direction of 1e-158 in
+ * each component came out 1.5e-8 short of unit length) and overflow above 1e154. Not finite for
+ * a zero or non-finite `v`.
+ */
+inline glm::dvec3 UnitDirection(const glm::dvec3& v)
+{
+  const double scale = std::max({ std::abs(v.x), std::abs(v.y), std::abs(v.z) });
+  return glm::normalize(v / scale);
+}
 
 /**
  * Whether a caster's shadow volume may reach the near-plane rectangle (McGuire et al.): true when

@@ -1,5 +1,6 @@
 #include "penumbraWedge.h"
 
+#include "penumbraCulling.h"
 #include "penumbraLightSamples.h"
 
 #include <cmath>
@@ -79,7 +80,7 @@ double EdgeOcclusion(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3&
   }
   else
   {
-    towards = glm::normalize(glm::dvec3(light));
+    towards = UnitDirection(glm::dvec3(light));
     distance = 1.0;
     diskRadius = std::tan(radius);
   }

@@ -30,6 +30,7 @@
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -858,6 +859,30 @@ void TestVolumeEndPlane(std::mt19937& rng)
 
 } // namespace
 
+/// A directional light's end plane does not depend on the length of its direction: components
+/// of 1e-158 (whose squares are subnormal) and of 1e200 (whose squares overflow) give the plane
+/// of unit ones (found by the fuzzer: a normal 1.5e-8 short of unit length).
+void TestEndPlaneOfAnyDirectionLength()
+{
+  Box scene;
+  scene.Extend(glm::dvec3(-4.0, -4.0, -1.0), glm::dvec3(4.0, 4.0, 3.0));
+  const glm::dvec3 lo(-1.0), hi(1.0);
+  const std::array<glm::dvec3, 4> nearCorners = { glm::dvec3(9.0, 9.0, 9.0),
+    glm::dvec3(9.5, 9.0, 9.0), glm::dvec3(9.5, 9.5, 9.0), glm::dvec3(9.0, 9.5, 9.0) };
+  const glm::dvec4 unit =
+    VolumeEndPlane(lo, hi, glm::dvec4(0.2, 0.3, 1.0, 0.0), scene, nearCorners);
+  Check(unit != glm::dvec4(0.0), "a directional light's volume ends on a plane");
+  for (const double length : { 1e-158, 1e-300, 1e200 })
+  {
+    const glm::dvec4 light(0.2 * length, 0.3 * length, 1.0 * length, 0.0);
+    const glm::dvec4 plane = VolumeEndPlane(lo, hi, light, scene, nearCorners);
+    char label[96];
+    std::snprintf(
+      label, sizeof(label), "the end plane of a direction %g long is the unit one's", length);
+    Check(glm::length(plane - unit) < 1e-12 * (1.0 + std::abs(unit.w)), label);
+  }
+}
+
 int main()
 {
   std::mt19937 rng(12345);
@@ -874,5 +899,6 @@ int main()
   TestOutwardWinding();
   FuzzRandomMeshes(rng);
   TestVolumeEndPlane(rng);
+  TestEndPlaneOfAnyDirectionLength();
   return penumbra_test::Finish();
 }

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -459,7 +460,14 @@ void CheckCounting(const CasterTopology& topo, const glm::dvec4& light, double r
 void CheckSweepCrossesEndPlane(
   const glm::dvec3& v, const glm::dvec4& light, const glm::dvec4& plane)
 {
-  const glm::dvec3 away = light.w != 0.0 ? v - glm::dvec3(light) : -glm::dvec3(light);
+  glm::dvec3 away = light.w != 0.0 ? v - glm::dvec3(light) : -glm::dvec3(light);
+  // Over its largest component: a directional light's direction may have any length, and the
+  // squares in glm::length overflow past 1e154 or vanish below 1e-154.
+  const double largest = std::max({ std::abs(away.x), std::abs(away.y), std::abs(away.z) });
+  if (largest > 0.0)
+  {
+    away /= largest;
+  }
   const double crossing = glm::dot(glm::dvec3(plane), away);
   Require(crossing >= (0.2 - 1e-9) * glm::length(away), "every sweep crosses the end plane");
   const double reach = -glm::dot(plane, glm::dvec4(v, 1.0)) / crossing;
