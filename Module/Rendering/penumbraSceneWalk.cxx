@@ -357,11 +357,16 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     auto slice = vtkImageSlice::SafeDownCast(leaf);
     if (volume && volume->GetMapper())
     {
-      this->Warn(owner, leaf, "is drawn but casts no shadow: volumes do not cast");
+      this->Warn(owner, leaf,
+        "is drawn but neither casts nor receives shadows: the pass does not edit volume "
+        "rendering");
     }
     else if (slice && slice->GetMapper())
     {
-      this->Warn(owner, leaf, "is drawn but casts no shadow: image slices do not cast");
+      // Drawn by the slice mapper's own internal actor, which the pass never sees, and unlit
+      // by default; a shadow on it would be the visibility image's only.
+      this->Warn(owner, leaf,
+        "is drawn but neither casts nor receives shadows: the pass does not edit image slices");
     }
     return; // 2D props and the like: overlays, nothing to cast
   }

@@ -1413,8 +1413,10 @@ void TestWarnings()
   Check(count("orientation is not finite") == 1,
     "glyphs with a NaN or infinite orientation: one warning");
   Check(count("Light::Impl tags") == 1, "custom light code: one warning");
-  Check(count("image slices do not cast") == 1, "an image slice: one warning");
-  Check(count("volumes do not cast") == 1, "a volume: one warning");
+  Check(count("neither casts nor receives shadows: the pass does not edit image slices") == 1,
+    "an image slice: one warning, that it is not shadowed either");
+  Check(count("neither casts nor receives shadows: the pass does not edit volume") == 1,
+    "a volume: one warning, that it is not shadowed either");
   Check(count("Lighting off") == 1, "an actor with Lighting off: one warning");
   Check(count("part of vtkAxesActor") == 1 && count("no surface triangles") == 1,
     "vtkAxesActor's line shafts: one warning, naming the axes");
