@@ -213,7 +213,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     const float uncertain = SmoothLimit(light.CountingSamples.size());
     drawn = this->CountWedges(frame, light, WedgePixels::Counted) &&
       this->Resolve(frame, light, ResolveInto::HalfResolution) &&
-      this->HalfResolutionTargets.Upsample(frame, light.Layer, uncertain);
+      this->HalfResolutionTargets.Upsample(frame, light.Layer, uncertain, this->CentreCount);
     if (drawn)
     {
       this->ClearCounters();

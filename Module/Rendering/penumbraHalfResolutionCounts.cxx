@@ -116,7 +116,8 @@ void HalfResolutionCounts::AttachVisibility()
   this->Framebuffer->ActivateDrawBuffer(0);
 }
 
-bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncertain)
+bool HalfResolutionCounts::Upsample(
+  ShadowFrame& frame, int layer, float uncertain, vtkTextureObject* centreCount)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkShaderProgram* mark = this->MarkProgram;
@@ -134,6 +135,7 @@ bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncerta
   ostate->vtkglDepthMask(GL_FALSE);
   frame.DepthCopy()->Activate();
   this->Visibility->Activate();
+  centreCount->Activate();
   // The mean at every geometry pixel, marked certain in the stencil; then uncertain where the
   // mark shader keeps the pixel. The background keeps 0.
   ostate->vtkglStencilMask(0xFF);
@@ -145,7 +147,7 @@ bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncerta
   const bool averaged = frame.Programs->Bind(window, upsample, "half-resolution upsample");
   if (averaged)
   {
-    this->SetUniforms(frame, upsample, uncertain);
+    this->SetUniforms(frame, upsample, uncertain, centreCount);
     frame.FullScreen->Draw(upsample, this->UpsampleVAO);
   }
   ostate->vtkglStencilFunc(GL_ALWAYS, UncertainStencil, 0xFF);
@@ -154,17 +156,19 @@ bool HalfResolutionCounts::Upsample(ShadowFrame& frame, int layer, float uncerta
     averaged && frame.Programs->Bind(window, mark, "half-resolution uncertain pixels");
   if (marked)
   {
-    this->SetUniforms(frame, mark, uncertain);
+    this->SetUniforms(frame, mark, uncertain, centreCount);
     frame.FullScreen->Draw(mark, this->MarkVAO);
   }
+  centreCount->Deactivate();
   this->Visibility->Deactivate();
   frame.DepthCopy()->Deactivate();
   return marked;
 }
 
 void HalfResolutionCounts::SetUniforms(
-  ShadowFrame& frame, vtkShaderProgram* program, float uncertain)
+  ShadowFrame& frame, vtkShaderProgram* program, float uncertain, vtkTextureObject* centreCount)
 {
+  program->SetUniformi("centreCount", centreCount->GetTextureUnit());
   program->SetUniformi("depthTexture", frame.DepthCopy()->GetTextureUnit());
   program->SetUniformi("countedVisibility", this->Visibility->GetTextureUnit());
   program->SetUniformf("uncertain", uncertain);

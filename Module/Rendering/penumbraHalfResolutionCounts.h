@@ -61,9 +61,11 @@ public:
   /// pixels' own, and between them the mean of their counted neighbours. Where that mean is
   /// uncertain (neighbours more than `uncertain` apart, or across a crease or a depth
   /// discontinuity; penumbraHalfUpsampleFS.glsl) the LI framebuffer's stencil is set to
-  /// UncertainStencil, for the caller to count those pixels at full resolution. The LI framebuffer
-  /// and the full viewport are bound on return.
-  bool Upsample(ShadowFrame& frame, int layer, float uncertain);
+  /// UncertainStencil, for the caller to count those pixels at full resolution; also where the
+  /// light's centre is hidden from the pixel and seen from a counted neighbour or the other way
+  /// round (`centreCount`, every pixel's count of its shadow volumes, is 0 at one of them). The LI
+  /// framebuffer and the full viewport are bound on return.
+  bool Upsample(ShadowFrame& frame, int layer, float uncertain, vtkTextureObject* centreCount);
 
   /// Bytes held: 4 per counter texel each for the depth-stencil and the visibility.
   std::size_t GraphicsMemoryBytes() const;
@@ -73,7 +75,8 @@ private:
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> DepthStencil;
   vtkNew<vtkTextureObject> Visibility;
-  void SetUniforms(ShadowFrame& frame, vtkShaderProgram* program, float uncertain);
+  void SetUniforms(
+    ShadowFrame& frame, vtkShaderProgram* program, float uncertain, vtkTextureObject* centreCount);
   /// Builds the three shaders, once: after one failed, never again for this context.
   bool ReadyPrograms(ShadowFrame& frame);
   vtkShaderProgram* DepthProgram = nullptr;

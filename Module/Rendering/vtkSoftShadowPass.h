@@ -314,10 +314,10 @@ public:
    * they are at most two samples' shares apart (with fewer than 8 samples: fewer shares, so that
    * no hard step is blended) and its depth does not stand out from theirs, and is counted again
    * at full resolution elsewhere (shadow edges, silhouettes, the background's edge, thin
-   * surfaces). A
-   * shadow narrower than two pixels between counted pixels that agree is lost. A light whose
+   * surfaces, thin hard shadows of the light's centre). A penumbra narrower than two pixels
+   * between counted pixels that agree, where the light's centre is seen, is lost. A light whose
    * translucent casters' shadows reach the view is counted at full resolution. Automatic's choice
-   * between counting and averaging does not take it into account. Off by default; up to 1.8 times
+   * between counting and averaging does not take it into account. Off by default; up to 1.7 times
    * faster on large lights and big casters, slower on small scenes (Documentation/wedges.md,
    * "Counting at half resolution").
    */

@@ -282,7 +282,9 @@ void TestHalfResolution(const SceneMaker& make)
     scene.Name.c_str(), 100.0 * counted.Step, 100.0 * all.Step, 100.0 * all.Half, maeFull, maeHalf);
   Check(counted.Shadowed > Width * Height / 400 && counted.Step <= 0.001,
     scene.Name + ": half resolution counts its pixels as the full count does");
-  Check(all.Step <= 0.01 && all.Half <= 0.003,
+  // Measured at most 0.24% and 0.00% (0.44% and 0.15% before pixels whose light centre is hidden
+  // by other surfaces than from their counted neighbours were counted again).
+  Check(all.Step <= 0.004 && all.Half <= 0.0005,
     scene.Name + ": half resolution differs from the full count on few pixels");
   Check(maeHalf <= maeFull + 0.005, scene.Name + ": half resolution as accurate as the full count");
   Check(halfBytes == fullBytes + halfTargets,

@@ -10,13 +10,18 @@
 // depth from both counted pixels of a pair (a surface narrower than two pixels, which neither
 // sees), and where a pair has only one counted pixel (the other shows the background or lies
 // beyond the window's border): one pixel alone bounds nothing, and beside a silhouette it often
-// lies on another surface than the pixel's.
+// lies on another surface than the pixel's. Also where the light's centre is hidden from the
+// pixel and seen from a counted neighbour, or the other way round (the centre's shadow-volume
+// count is 0 at one of them only): the hard shadow of a thin caster, a shaft or a wire, can pass
+// between two counted pixels that both see the light. Counts that differ but are both above 0
+// (one shadow inside another) are left to the visibility test.
 //
 // With PENUMBRA_MARK_UNCERTAIN defined it writes nothing and keeps only the uncertain pixels
 // (for the stencil); otherwise it writes every pixel's mean, which the full count then replaces
 // at the uncertain ones.
 uniform sampler2D depthTexture;
 uniform sampler2D countedVisibility; // at half resolution: texel t is pixel 2t's visibility
+uniform sampler2D centreCount; // every pixel's count of the light centre's shadow volumes, negated
 uniform float uncertain; // the largest difference of counted neighbours taken as smooth
 
 /// Steps of a 24-bit depth buffer within which depths are taken as equal.
@@ -28,6 +33,8 @@ float highest = 0.0;
 int counted = 0;
 bool standsOut = false;
 bool oneSided = false;
+bool centreDiffers = false;
+bool centreSeen = true;
 
 /// The depth at `pixel`; 1 (the background's) off the window.
 float depthAt(ivec2 pixel)
@@ -46,6 +53,9 @@ float add(ivec2 pixel)
   if (depth < 1.0)
   {
     float visibility = texelFetch(countedVisibility, pixel / 2, 0).r;
+#ifdef PENUMBRA_MARK_UNCERTAIN
+    centreDiffers = centreDiffers || (texelFetch(centreCount, pixel, 0).r == 0.0) != centreSeen;
+#endif
     sum += visibility;
     lowest = min(lowest, visibility);
     highest = max(highest, visibility);
@@ -78,13 +88,17 @@ void main()
 #endif
   }
   float depth = texelFetch(depthTexture, pixel, 0).r;
+#ifdef PENUMBRA_MARK_UNCERTAIN
+  centreSeen = texelFetch(centreCount, pixel, 0).r == 0.0;
+#endif
   addPair(pixel, depth, odd);
   if (odd.x == 1 && odd.y == 1)
   {
     addPair(pixel, depth, ivec2(1, -1));
   }
 #ifdef PENUMBRA_MARK_UNCERTAIN
-  if (counted > 0 && !oneSided && highest - lowest <= uncertain && !standsOut)
+  if (counted > 0 && !oneSided && !centreDiffers && highest - lowest <= uncertain &&
+    !standsOut)
   {
     discard; // certain
   }
