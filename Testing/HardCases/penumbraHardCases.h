@@ -20,7 +20,9 @@ enum MethodId
   AVERAGED = 1,  ///< METHOD_AVERAGED_HARD_SHADOWS with 16 samples
   WEDGES = 2,    ///< METHOD_PENUMBRA_WEDGES
   AUTOMATIC = 3, ///< METHOD_AUTOMATIC, what a user gets by default
-  METHOD_COUNT = 4
+  COUNTED = 4,   ///< METHOD_SOFT_SHADOW_VOLUMES with 16 samples, whatever Automatic would pick
+  HALF_RESOLUTION = 5, ///< the same with HalfResolutionCounting on
+  METHOD_COUNT = 6
 };
 const char* MethodName(int method);
 
