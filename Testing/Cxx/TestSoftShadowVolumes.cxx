@@ -245,25 +245,38 @@ std::vector<float> CountedPixels(const std::vector<float>& image)
   return counted;
 }
 
+/// A scene's window whose light is counted by soft shadow volumes, at full or half resolution.
+struct CountedView : SceneWindow
+{
+  explicit CountedView(const Scene& scene)
+    : SceneWindow(scene)
+  {
+    this->Pass->SetMethodToSoftShadowVolumes();
+  }
+  std::vector<float> Render(bool halfResolution)
+  {
+    this->Pass->SetHalfResolutionCounting(halfResolution);
+    this->Window->Render();
+    return Visibility(this->Pass);
+  }
+};
+
 /// HalfResolutionCounting: the counted pixels are the full count's (a counter texel offset by a
 /// pixel, or tested against another pixel's depth, differs at every penumbra's edge); the pixels
 /// between are the full count's where counted again and otherwise near the mean of their counted
-/// neighbours, so few differ from the full count by more than 1/N or 1/2 (a shadow or surface
-/// narrower than two pixels between two counted pixels that agree); against the truth the MAE
-/// stays within 0.005 of the full count's (measured: 0.0026 at most, the directional light's); the
-/// half-resolution depth-stencil and visibility are reported in the GPU memory.
+/// neighbours, so few differ from the full count by more than 1/N and almost none by more than
+/// 1/2 (a penumbra narrower than two pixels between two counted pixels that agree); against the
+/// truth the MAE stays within 0.005 of the full count's (measured: 0.0016 at most, the
+/// directional light's); the half-resolution depth-stencil and visibility are reported in the GPU
+/// memory.
 void TestHalfResolution(const SceneMaker& make)
 {
   const Scene scene = make();
-  SceneWindow view(scene);
+  CountedView view(scene);
   vtkSoftShadowPass* pass = view.Pass;
-  pass->SetMethodToSoftShadowVolumes();
-  view.Window->Render();
-  const std::vector<float> full = Visibility(pass);
+  const std::vector<float> full = view.Render(false);
   const vtkIdType fullBytes = pass->GetGraphicsMemoryBytes();
-  pass->HalfResolutionCountingOn();
-  view.Window->Render();
-  const std::vector<float> half = Visibility(pass);
+  const std::vector<float> half = view.Render(true);
   const vtkIdType halfBytes = pass->GetGraphicsMemoryBytes();
 
   vtkNew<vtkRayTracedVisibility> truth;
@@ -333,15 +346,8 @@ std::vector<std::size_t> OneSidedPixels(const std::vector<float>& zbuffer, int w
 void TestHalfResolutionEdges(const SceneMaker& make)
 {
   const Scene scene = make();
-  SceneWindow view(scene);
+  CountedView view(scene);
   vtkSoftShadowPass* pass = view.Pass;
-  pass->SetMethodToSoftShadowVolumes();
-  auto render = [&](bool half)
-  {
-    pass->SetHalfResolutionCounting(half);
-    view.Window->Render();
-    return Visibility(pass);
-  };
   // The last one in a viewport at an odd offset, which the pass's buffers do not see.
   for (const glm::ivec2 windowSize :
     { glm::ivec2(Width, Height), glm::ivec2(3, 3), glm::ivec2(5, 5), glm::ivec2(7, 9),
@@ -352,8 +358,8 @@ void TestHalfResolutionEdges(const SceneMaker& make)
     {
       view.Renderer->SetViewport(0.13, 0.21, 0.97, 0.9);
     }
-    const std::vector<float> full = render(false);
-    const std::vector<float> half = render(true);
+    const std::vector<float> full = view.Render(false);
+    const std::vector<float> half = view.Render(true);
     glm::ivec2 size, origin;
     view.Renderer->GetTiledSizeAndOrigin(&size.x, &size.y, &origin.x, &origin.y);
     const std::vector<std::size_t> oneSided =
@@ -370,7 +376,7 @@ void TestHalfResolutionEdges(const SceneMaker& make)
   view.Renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
   view.Window->SetSize(Width, Height);
   pass->SetLightSamples(2);
-  const std::vector<float> half = render(true);
+  const std::vector<float> half = view.Render(true);
   const auto between = std::count_if(half.begin(), half.end(),
     [](float visibility)
     { return std::abs(2.0f * visibility - std::round(2.0f * visibility)) > 1e-3f; });
