@@ -5,7 +5,7 @@ the same isosurface unchanged from frame to frame, which leaves the pass only it
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
         /usr/bin/python3 Benchmarks/time_varying.py [--extent E] [--frames F]
 
-The contour (vtkFlyingEdges3D) runs before each timed frame in both cases, outside its timing;
+With new data, the contour (vtkFlyingEdges3D) runs before each timed frame, outside its timing;
 what the pass adds is its per-frame CPU work (welding, topology, silhouettes, uploads) and its
 GPU passes.
 """

@@ -859,11 +859,19 @@ void TestVolumeEndPlane(std::mt19937& rng)
 
 } // namespace
 
-/// A directional light's end plane does not depend on the length of its direction: components
-/// of 1e-158 (whose squares are subnormal) and of 1e200 (whose squares overflow) give the plane
-/// of unit ones (found by the fuzzer: a normal 1.5e-8 short of unit length).
+/// Light directions of any length are made unit: UnitDirection at 1e-158 (whose squares are
+/// subnormal: glm::normalize left the fuzzer's end-plane normal 1.5e-8 short of unit length),
+/// 1e-300 and 1e200 (whose squares overflow), and a directional light's end plane, which for
+/// the last two did not exist or was not the unit direction's before.
 void TestEndPlaneOfAnyDirectionLength()
 {
+  for (const double length : { 1e-158, 1e-300, 1e200 })
+  {
+    const glm::dvec3 unit = UnitDirection(glm::dvec3(length, length, length));
+    char label[64];
+    std::snprintf(label, sizeof(label), "a direction %g long made unit", length);
+    Check(std::abs(glm::length(unit) - 1.0) < 1e-15 && std::abs(unit.x - unit.z) < 1e-15, label);
+  }
   Box scene;
   scene.Extend(glm::dvec3(-4.0, -4.0, -1.0), glm::dvec3(4.0, 4.0, 3.0));
   const glm::dvec3 lo(-1.0), hi(1.0);

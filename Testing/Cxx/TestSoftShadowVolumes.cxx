@@ -295,8 +295,8 @@ void TestHalfResolution(const SceneMaker& make)
     scene.Name.c_str(), 100.0 * counted.Step, 100.0 * all.Step, 100.0 * all.Half, maeFull, maeHalf);
   Check(counted.Shadowed > Width * Height / 400 && counted.Step <= 0.001,
     scene.Name + ": half resolution counts its pixels as the full count does");
-  // Measured at most 0.24% and 0.00% (0.44% and 0.15% before pixels whose light centre is hidden
-  // by other surfaces than from their counted neighbours were counted again).
+  // Measured at most 0.29% and 0.00% (0.44% and 0.15% before pixels whose light centre is hidden
+  // while a counted neighbour's is seen, or the other way round, were counted again).
   Check(all.Step <= 0.004 && all.Half <= 0.0005,
     scene.Name + ": half resolution differs from the full count on few pixels");
   Check(maeHalf <= maeFull + 0.005, scene.Name + ": half resolution as accurate as the full count");
@@ -362,6 +362,13 @@ void TestHalfResolutionEdges(const SceneMaker& make)
     const std::vector<float> half = view.Render(true);
     glm::ivec2 size, origin;
     view.Renderer->GetTiledSizeAndOrigin(&size.x, &size.y, &origin.x, &origin.y);
+    const std::size_t pixels = std::size_t(size.x) * size.y;
+    const bool sized = full.size() == pixels && half.size() == pixels;
+    Check(sized, scene.Name + ": visibility images of the viewport's size");
+    if (!sized)
+    {
+      continue;
+    }
     const std::vector<std::size_t> oneSided =
       OneSidedPixels(WindowDepth(view.Window, view.Renderer), size.x, size.y);
     const auto differing = std::count_if(oneSided.begin(), oneSided.end(),
@@ -370,7 +377,7 @@ void TestHalfResolutionEdges(const SceneMaker& make)
       std::to_string(origin.x) + "," + std::to_string(origin.y);
     std::printf("half resolution %-34s %s: %zu one-sided pixels, %d differ from the full count\n",
       scene.Name.c_str(), viewport.c_str(), oneSided.size(), static_cast<int>(differing));
-    Check(full.size() == std::size_t(size.x) * size.y && !oneSided.empty() && differing == 0,
+    Check(!oneSided.empty() && differing == 0,
       scene.Name + ": half resolution counts one-sided pixels again, viewport " + viewport);
   }
   view.Renderer->SetViewport(0.0, 0.0, 1.0, 1.0);

@@ -560,7 +560,7 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
     }
   }
 
-  // The regression image: the three methods' frames and the truth's visibility, side by side;
+  // The regression image: every method's frame and the truth's visibility, side by side;
   // and, for looking, the methods' visibility beside the truth's.
   const int w = scene.Window->GetSize()[0], h = scene.Window->GetSize()[1];
   const int Columns = METHOD_COUNT + 1;
