@@ -77,7 +77,9 @@ private:
   vtkNew<vtkTextureObject> Visibility;
   void SetUniforms(
     ShadowFrame& frame, vtkShaderProgram* program, float uncertain, vtkTextureObject* centreCount);
-  /// Builds the three shaders, once: after one failed, never again for this context.
+  /// Readies the three shaders from the window's shader cache (which compiles each once), as
+  /// every technique does before it draws; after one failed to build, never again until
+  /// ReleaseGraphicsResources.
   bool ReadyPrograms(ShadowFrame& frame);
   vtkShaderProgram* DepthProgram = nullptr;
   vtkShaderProgram* UpsampleProgram = nullptr;

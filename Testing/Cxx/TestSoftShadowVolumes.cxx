@@ -348,15 +348,23 @@ void TestHalfResolutionEdges(const SceneMaker& make)
   const Scene scene = make();
   CountedView view(scene);
   vtkSoftShadowPass* pass = view.Pass;
-  // The last one in a viewport at an odd offset, which the pass's buffers do not see.
-  for (const glm::ivec2 windowSize :
-    { glm::ivec2(Width, Height), glm::ivec2(3, 3), glm::ivec2(5, 5), glm::ivec2(7, 9),
-      glm::ivec2(11, 6), glm::ivec2(16, 12), glm::ivec2(101, 77) })
+  struct Layout
   {
-    view.Window->SetSize(windowSize.x, windowSize.y);
-    if (windowSize.x == 101)
+    glm::ivec2 Size;
+    bool OddViewport; ///< the renderer in part of the window, at an origin the buffers do not see
+  };
+  for (const Layout& layout : { Layout{ { Width, Height }, false }, Layout{ { 3, 3 }, false },
+         Layout{ { 5, 5 }, false }, Layout{ { 7, 9 }, false }, Layout{ { 11, 6 }, false },
+         Layout{ { 16, 12 }, false }, Layout{ { 101, 77 }, true } })
+  {
+    view.Window->SetSize(layout.Size.x, layout.Size.y);
+    if (layout.OddViewport)
     {
       view.Renderer->SetViewport(0.13, 0.21, 0.97, 0.9);
+    }
+    else
+    {
+      view.Renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
     }
     const std::vector<float> full = view.Render(false);
     const std::vector<float> half = view.Render(true);
