@@ -10,6 +10,7 @@
 #include "penumbraPropWarnings.h"
 #include "penumbraReceiverShader.h"
 #include "penumbraSceneWalk.h"
+#include "penumbraShadowInputs.h"
 #include "penumbraStageTimes.h"
 
 #include "vtkActor.h"
@@ -148,6 +149,10 @@ public:
   /// The shader edits warned about: once per live prop, mapper class and problem.
   penumbra::PropWarnings WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
+  /// What the kept light-intensity layers were drawn from (ReuseUnchangedShadows), and whether
+  /// this frame's inputs could all be recorded.
+  penumbra::ShadowInputs Inputs;
+  bool InputsRecorded = false;
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
   /// Holds every receiver (penumbra::StableReceiverBox): wedges are cut to it.
@@ -273,6 +278,8 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseTightDepthRange: " << this->UseTightDepthRange << "\n";
   os << indent << "HalfResolutionCounting: " << this->HalfResolutionCounting << "\n";
   os << indent << "DepthFromCasterMeshes: " << this->DepthFromCasterMeshes << "\n";
+  os << indent << "ReuseUnchangedShadows: " << this->ReuseUnchangedShadows << "\n";
+  os << indent << "NumberOfReusedFrames: " << this->NumberOfReusedFrames << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
   os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
@@ -412,17 +419,6 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   vtkInternals& internals = *this->Internals;
   this->NumberOfRenderedProps = 0;
-  this->NumberOfShadowingLights = 0;
-  this->NumberOfShadowVolumeTriangles = 0;
-  this->NumberOfZFailVolumes = 0;
-  this->NumberOfPenumbraWedges = 0;
-  this->NumberOfFullViewportWedges = 0;
-  this->NumberOfCulledShadows = 0;
-  this->NumberOfPlateauTriangles = 0;
-  this->NumberOfCountedLights = 0;
-  this->NumberOfAveragedLights = 0;
-  this->NumberOfPropsWithDepthFromMeshes = 0;
-  this->NumberOfPropsWithCulledDepth = 0;
 
   using Stage = penumbra::StageTimes::Stage;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
@@ -431,8 +427,10 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
   internals.Lights.clear();
   internals.ApplyShadows = false;
-  // A selection render (picking) draws ids, not light: the delegate draws it, unshadowed.
-  if (this->ShadowsEnabled && window && !renderer->GetSelector())
+  // A selection render (picking) draws ids, not light: the delegate draws it, unshadowed. It
+  // leaves the last frame's shadows, and their statistics, to the next frame.
+  const bool selecting = renderer && renderer->GetSelector();
+  if (this->ShadowsEnabled && window && !selecting)
   {
     this->FollowWindow(window);
     internals.Window = window;
@@ -455,6 +453,11 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   if (internals.Lights.empty() || internals.Size[0] <= 0 || internals.Size[1] <= 0)
   {
     internals.Lights.clear();
+    if (!selecting)
+    {
+      this->ResetShadowStatistics();
+      internals.Inputs.Forget();
+    }
     {
       penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
       this->RenderDelegate(s);
@@ -464,40 +467,18 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   this->AddReceiverKeys(s);
+  bool reused = false;
   {
     // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
     internals.UpdateSceneBox(renderer);
     this->WarnOfLightsReachingTheScene(renderer);
     ScopedShadowDepthRange depthRange(renderer, internals.SceneBox, this->UseTightDepthRange);
     internals.UpdateCamera(renderer);
-    this->PrepareFramebuffer(window);
+    reused = this->ShadowsUnchanged(s);
+    if (!reused)
     {
-      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-      internals.LI.GetLayers()->Activate();
-      this->RenderDepth(s);
-      internals.LI.GetLayers()->Deactivate();
+      this->DrawShadows(s, window);
     }
-    {
-      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
-      this->UpdateCasters(s);
-    }
-    if (!internals.DepthFromMeshes.empty())
-    {
-      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-      internals.LI.GetLayers()->Activate();
-      this->RenderCasterDepth(s);
-      internals.LI.GetLayers()->Deactivate();
-    }
-    // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
-    // plateaus without a receiver plane fall back to hard shadows.
-    if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-          [&](const vtkInternals::ShadowLight& light)
-          { return light.Technique->ReadsDepthCopy(); }))
-    {
-      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
-      internals.LI.CopyDepth(window->GetState());
-    }
-    this->RenderLightIntensity(window);
   }
   internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
@@ -512,9 +493,107 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   internals.ApplyShadows = false;
   internals.LI.GetLayers()->Deactivate();
   this->RemoveReceiverKeys();
-  internals.Caches.PurgeUnused();
+  if (reused)
+  {
+    ++this->NumberOfReusedFrames;
+  }
+  else
+  {
+    internals.Caches.PurgeUnused(); // a reused frame used none: they are the drawn frame's
+  }
   this->GraphicsMemoryBytes = static_cast<vtkIdType>(internals.GraphicsMemoryBytes());
   vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+void vtkSoftShadowPass::ResetShadowStatistics()
+{
+  this->NumberOfShadowingLights = 0;
+  this->NumberOfShadowVolumeTriangles = 0;
+  this->NumberOfZFailVolumes = 0;
+  this->NumberOfPenumbraWedges = 0;
+  this->NumberOfFullViewportWedges = 0;
+  this->NumberOfCulledShadows = 0;
+  this->NumberOfPlateauTriangles = 0;
+  this->NumberOfCountedLights = 0;
+  this->NumberOfAveragedLights = 0;
+  this->NumberOfPropsWithDepthFromMeshes = 0;
+  this->NumberOfPropsWithCulledDepth = 0;
+}
+
+bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  penumbra::ShadowInputs& inputs = internals.Inputs;
+  inputs.Begin();
+  internals.InputsRecorded = false;
+  if (!this->ReuseUnchangedShadows)
+  {
+    return false;
+  }
+  vtkRenderer* renderer = s->GetRenderer();
+  inputs.Add(renderer);
+  inputs.Add(internals.Window.GetPointer());
+  inputs.Add(s->GetFrameBuffer());
+  inputs.Add(
+    glm::dvec4(internals.Size[0], internals.Size[1], internals.Origin[0], internals.Origin[1]));
+  inputs.AddTime(this->GetMTime());
+  // Values: vtkCamera::DeepCopy does not modify the camera, and the tight depth range modifies
+  // it twice a frame.
+  inputs.Add(internals.WorldToClip);
+  for (const vtkInternals::ShadowLight& light : internals.Lights)
+  {
+    inputs.Add(light.Light);
+    inputs.AddTime(light.Light->GetMTime());
+    inputs.Add(light.World);
+    inputs.Add(glm::dvec4(light.SampleTarget, light.SoftRadius));
+    inputs.Add(glm::dvec4(light.SampleRadius, static_cast<double>(light.Samples.size()),
+      static_cast<double>(light.CountingSamples.size()), light.Layer));
+    inputs.Add(light.Technique);
+  }
+  internals.InputsRecorded = inputs.AddProps(renderer);
+  return internals.InputsRecorded && inputs.MatchKept();
+}
+
+void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  using Stage = penumbra::StageTimes::Stage;
+  this->ResetShadowStatistics();
+  this->PrepareFramebuffer(window);
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+    internals.LI.GetLayers()->Activate();
+    this->RenderDepth(s);
+    internals.LI.GetLayers()->Deactivate();
+  }
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
+    this->UpdateCasters(s);
+  }
+  if (!internals.DepthFromMeshes.empty())
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+    internals.LI.GetLayers()->Activate();
+    this->RenderCasterDepth(s);
+    internals.LI.GetLayers()->Deactivate();
+  }
+  // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
+  // plateaus without a receiver plane fall back to hard shadows.
+  if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
+        [&](const vtkInternals::ShadowLight& light) { return light.Technique->ReadsDepthCopy(); }))
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
+    internals.LI.CopyDepth(window->GetState());
+  }
+  this->RenderLightIntensity(window);
+  if (internals.InputsRecorded)
+  {
+    internals.Inputs.Keep();
+  }
+  else
+  {
+    internals.Inputs.Forget();
+  }
 }
 
 void vtkSoftShadowPass::RenderDelegate(const vtkRenderState* s)
@@ -1276,6 +1355,7 @@ void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;
+  internals.Inputs.Forget();
   internals.StageTimes.ReleaseGraphicsResources();
   internals.Caches.ReleaseGraphicsResources();
   internals.LI.ReleaseGraphicsResources(w);

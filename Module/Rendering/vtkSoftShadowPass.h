@@ -344,6 +344,28 @@ public:
   vtkGetMacro(NumberOfPropsWithDepthFromMeshes, vtkIdType);
   vtkGetMacro(NumberOfPropsWithCulledDepth, vtkIdType);
 
+  ///@{
+  /**
+   * Whether a frame whose shadows cannot have changed composites the light-intensity layers of
+   * the last frame the pass drew instead of drawing them again: the same renderer, viewport and
+   * camera matrices, the same shadowing lights at the same places and radii, the same settings,
+   * and no prop, mapper, clipping plane, shader property or input data object (each block of
+   * composite data) modified since (penumbraShadowInputs.h). Text, scalar bars and other 2D
+   * props may change freely; a colour change of a 3D prop redraws the shadows. On by default. A
+   * frame is always drawn while a visible prop is neither a vtkProp3D nor a vtkPropAssembly (a
+   * widget's representation) or has a mapper with an UpdateShaderEvent observer. Geometry that
+   * changes without any VTK object being modified (data arrays edited in place without
+   * Modified(), which VTK's mappers do not redraw either) keeps its old shadows: call Modified()
+   * on the data, or on this pass to redraw.
+   */
+  vtkSetMacro(ReuseUnchangedShadows, bool);
+  vtkGetMacro(ReuseUnchangedShadows, bool);
+  vtkBooleanMacro(ReuseUnchangedShadows, bool);
+  ///@}
+  /// Frames so far that reused the last drawn frame's shadows (ReuseUnchangedShadows). The
+  /// other statistics then describe that drawn frame.
+  vtkGetMacro(NumberOfReusedFrames, vtkIdType);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -375,6 +397,8 @@ protected:
   bool UseTightDepthRange = true;
   bool HalfResolutionCounting = false;
   bool DepthFromCasterMeshes = true;
+  bool ReuseUnchangedShadows = true;
+  vtkIdType NumberOfReusedFrames = 0;
   vtkIdType NumberOfPropsWithDepthFromMeshes = 0;
   vtkIdType NumberOfPropsWithCulledDepth = 0;
   vtkIdType NumberOfPlateauTriangles = 0;
@@ -394,6 +418,13 @@ private:
   void operator=(const vtkSoftShadowPass&) = delete;
 
   void RenderDelegate(const vtkRenderState* s);
+  /// Zeroes the statistics of the shadows drawn (a reused frame keeps the drawn frame's).
+  void ResetShadowStatistics();
+  /// Records this frame's shadow inputs; true when the layers kept from the last drawn frame
+  /// were drawn from the same (ReuseUnchangedShadows).
+  bool ShadowsUnchanged(const vtkRenderState* s);
+  /// Depth, casters and every light's layer, then keeps the inputs they were drawn from.
+  void DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /// Warns once per positional light whose sphere reaches a visible prop's box.
   void WarnOfLightsReachingTheScene(vtkRenderer* renderer);
   /// Before drawing into `window`: releases the GPU resources made in another window's context.

@@ -3,12 +3,15 @@
 // input and picking.
 #include "penumbraTestHarness.h"
 
+#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkCoordinate.h"
 #include "vtkCubeSource.h"
 #include "vtkDataObject.h"
@@ -16,26 +19,32 @@
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightsPass.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
 #include "vtkOverlayPass.h"
+#include "vtkPlane.h"
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkPropPicker.h"
+#include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSequencePass.h"
 #include "vtkSphereSource.h"
+#include "vtkTextActor.h"
+#include "vtkTransform.h"
 #include "vtkTranslucentPass.h"
 #include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 #include <vector>
@@ -525,6 +534,183 @@ void TestLightReachingScene()
     "a negative light index: no image, one error");
 }
 
+/// A frame whose shadows cannot have changed reuses the last drawn frame's layers
+/// (ReuseUnchangedShadows), and every change that moves a shadow or a visible point draws them
+/// again. After each change the frame must equal a fresh pass's frame of the same scene.
+class ReuseScene
+{
+public:
+  PassScene View{ 200, 150 };
+  vtkNew<vtkSphereSource> SphereShape;
+  vtkNew<vtkPlane> ClipPlane;
+  vtkNew<vtkTransform> UserTransform;
+  vtkNew<vtkTextActor> Text;
+  vtkNew<vtkPolyData> BlockBox;
+  vtkActor* Sphere = nullptr;
+  vtkActor* Box = nullptr;
+  vtkActor* Part = nullptr;
+
+  ReuseScene()
+  {
+    this->View.Ground();
+    this->SphereShape->SetCenter(0, 1, 0);
+    this->SphereShape->SetRadius(0.6);
+    this->SphereShape->SetThetaResolution(32);
+    this->SphereShape->SetPhiResolution(16);
+    this->Sphere = this->View.Add(this->SphereShape, 0.9, 0.3, 0.3);
+    this->Box = this->View.Box(1.6, 0.5, 0.8, 0.5, 1.0, 0.5);
+    this->Box->SetUserTransform(this->UserTransform);
+    this->ClipPlane->SetOrigin(0, 0, 5); // cuts nothing until moved
+    this->ClipPlane->SetNormal(0, 0, -1);
+    this->Sphere->GetMapper()->AddClippingPlane(this->ClipPlane);
+
+    // A multiblock leaf and an assembly part: changes below the top-level prop.
+    vtkSmartPointer<vtkCubeSource> blockSource = BoxSource(-1.6, 0.4, 0.6, 0.5, 0.8, 0.5);
+    blockSource->Update();
+    this->BlockBox->DeepCopy(blockSource->GetOutput());
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(1);
+    blocks->SetBlock(0, this->BlockBox);
+    vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+    compositeMapper->SetInputDataObject(blocks);
+    vtkNew<vtkActor> composite;
+    composite->SetMapper(compositeMapper);
+    this->View.Renderer->AddActor(composite);
+    vtkNew<vtkAssembly> assembly;
+    this->Part = AddActor(this->View.Renderer, SphereSource(-0.6, 0.35, 1.6, 0.35, 24, 12), 0.3,
+      0.8, 0.4, this->View.Keep);
+    this->View.Keep.push_back(this->Part); // the renderer lets go of it
+    this->View.Renderer->RemoveActor(this->Part);
+    assembly->AddPart(this->Part);
+    this->View.Renderer->AddActor(assembly);
+    this->View.Keep.push_back(blocks.GetPointer());
+    this->View.Keep.push_back(composite.GetPointer());
+    this->View.Keep.push_back(assembly.GetPointer());
+
+    this->Text->SetInput("frame 0");
+    this->View.Renderer->AddActor2D(this->Text);
+    vtkSoftShadowPass::SetLightRadius(this->View.Light, 0.3);
+    this->View.Pass->SetLightSamples(16);
+    this->View.Camera(3, 4, 7, 0, 0.5, 0);
+  }
+
+  /// Renders; true when the frame reused the last drawn frame's shadows.
+  bool Render()
+  {
+    const vtkIdType before = this->View.Pass->GetNumberOfReusedFrames();
+    this->View.Window->Render();
+    return this->View.Pass->GetNumberOfReusedFrames() > before;
+  }
+
+  /// Pixels of the renderer's viewport that differ from a fresh pass's frame of the scene.
+  int PixelsOffFresh()
+  {
+    const std::vector<unsigned char> shown = WindowColours(this->View.Window, this->View.Renderer);
+    vtkNew<vtkSoftShadowPass> fresh;
+    fresh->SetLightSamples(this->View.Pass->GetLightSamples());
+    fresh->SetMethod(this->View.Pass->GetMethod());
+    this->View.Renderer->SetPass(fresh);
+    this->View.Window->Render();
+    const std::vector<unsigned char> drawn = WindowColours(this->View.Window, this->View.Renderer);
+    this->View.Renderer->SetPass(this->View.Pass);
+    fresh->ReleaseGraphicsResources(this->View.Window);
+    if (shown.size() != drawn.size())
+    {
+      return -1;
+    }
+    int off = 0;
+    for (std::size_t i = 0; i < shown.size(); i += 3)
+    {
+      off += shown[i] != drawn[i] || shown[i + 1] != drawn[i + 1] || shown[i + 2] != drawn[i + 2];
+    }
+    return off;
+  }
+};
+
+void TestReuseUnchangedShadows()
+{
+  ReuseScene scene;
+  vtkSoftShadowPass* pass = scene.View.Pass;
+  vtkRenderer* renderer = scene.View.Renderer;
+  vtkNew<vtkCamera> elsewhere;
+  elsewhere->DeepCopy(renderer->GetActiveCamera());
+  elsewhere->Azimuth(25);
+  vtkNew<vtkHardwareSelector> selector;
+  selector->SetRenderer(renderer);
+  selector->SetArea(0, 0, 199, 149);
+
+  struct Change
+  {
+    const char* What;
+    bool Reuses;
+    std::function<void()> Apply;
+  };
+  const std::vector<Change> changes = {
+    { "nothing", true, [] {} },
+    { "a 2D text actor's text", true, [&] { scene.Text->SetInput("frame 1"); } },
+    { "a pick between frames (selection render)", true,
+      [&]
+      {
+        vtkSmartPointer<vtkSelection> picked;
+        picked.TakeReference(selector->Select());
+      } },
+    { "the camera deep-copied, not modified", false,
+      [&] { renderer->GetActiveCamera()->DeepCopy(elsewhere); } },
+    { "the light moved", false, [&] { scene.View.Light->SetPosition(-1.5, 6, 2.5); } },
+    { "the light's radius", false,
+      [&] { vtkSoftShadowPass::SetLightRadius(scene.View.Light, 0.6); } },
+    { "an actor moved", false, [&] { scene.Sphere->SetPosition(0.3, 0, 0); } },
+    { "a user transform changed in place", false,
+      [&] { scene.UserTransform->Translate(0, 0, -0.5); } },
+    { "a source's parameter (pipeline not yet updated)", false,
+      [&] { scene.SphereShape->SetRadius(0.45); } },
+    { "a clipping plane moved", false, [&] { scene.ClipPlane->SetOrigin(0, 1.2, 0); } },
+    { "a multiblock leaf's points", false,
+      [&]
+      {
+        vtkPoints* points = scene.BlockBox->GetPoints();
+        for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+        {
+          double p[3];
+          points->GetPoint(i, p);
+          points->SetPoint(i, p[0] + 0.4, p[1], p[2]);
+        }
+        points->Modified();
+      } },
+    { "an assembly part moved", false, [&] { scene.Part->SetPosition(0.2, 0, -0.3); } },
+    { "an actor's opacity", false, [&] { scene.Box->GetProperty()->SetOpacity(0.5); } },
+    { "an actor hidden", false, [&] { scene.Box->VisibilityOff(); } },
+    { "an actor removed", false, [&] { renderer->RemoveActor(scene.Box); } },
+    { "the window resized", false, [&] { scene.View.Window->SetSize(180, 140); } },
+    { "the pass's samples", false, [&] { pass->SetLightSamples(24); } },
+  };
+  scene.Render();
+  scene.Render(); // the first frame gives the props their keys, which modifies them
+  for (const Change& change : changes)
+  {
+    const bool settled = scene.Render();
+    change.Apply();
+    const bool reused = scene.Render();
+    const int off = scene.PixelsOffFresh();
+    std::printf("     %s: %s, %d px off a fresh pass's frame\n", change.What,
+      reused ? "reused" : "drawn", off);
+    Check(settled, "an unchanged frame reuses the shadows before: " + std::string(change.What));
+    Check(reused == change.Reuses,
+      std::string(change.What) + (change.Reuses ? ": shadows reused" : ": shadows drawn"));
+    Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
+  }
+
+  // Whatever an UpdateShaderEvent observer does to the vertices, no pass can see it: drawn.
+  vtkNew<vtkCallbackCommand> uniforms;
+  scene.Sphere->GetMapper()->AddObserver(vtkCommand::UpdateShaderEvent, uniforms);
+  scene.Render();
+  Check(!scene.Render(), "a mapper with an UpdateShaderEvent observer: shadows drawn every frame");
+  scene.Sphere->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
+
+  pass->ReuseUnchangedShadowsOff();
+  scene.Render();
+  Check(!scene.Render(), "ReuseUnchangedShadows off: shadows drawn every frame");
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -538,6 +724,7 @@ int main(int argc, char* argv[])
     { "Picking", TestPicking },
     { "TwoWindows", TestTwoWindows },
     { "LightReachingScene", TestLightReachingScene },
+    { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
   };
   return RunFeatures(argc, argv, features);
 }

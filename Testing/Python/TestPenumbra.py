@@ -150,4 +150,18 @@ check(shadows.GetNumberOfPlateauTriangles() > 0, "plateau triangles drawn")
 # Measured MAE 0.1106: the umbra is too large by design and off the plane shadows are hard.
 check(np.isfinite(ours).all() and error.mean() < 0.13, "plateaus near the truth")
 
+# A frame that changes nothing composites the last frame's shadows; a moved light draws them.
+check(shadows.GetReuseUnchangedShadows(), "ReuseUnchangedShadows is on by default")
+window.Render()
+reused = shadows.GetNumberOfReusedFrames()
+window.Render()
+check(shadows.GetNumberOfReusedFrames() == reused + 1, "an unchanged frame reuses the shadows")
+check(np.array_equal(image(shadows.GetVisibilityImage(0), w, h), ours), "reused shadows are the drawn ones")
+position = light.GetPosition()
+light.SetPosition(position[0] + 0.5, position[1], position[2])
+window.Render()
+check(shadows.GetNumberOfReusedFrames() == reused + 1, "a moved light draws the shadows again")
+check(not np.array_equal(image(shadows.GetVisibilityImage(0), w, h), ours), "and they moved")
+light.SetPosition(position)
+
 finish()

@@ -1,0 +1,252 @@
+#include "penumbraShadowInputs.h"
+
+#include "vtkActor.h"
+#include "vtkActor2D.h"
+#include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataObject.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageMapper3D.h"
+#include "vtkImageSlice.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkProp3D.h"
+#include "vtkPropAssembly.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
+#include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h"
+#include "vtkUniforms.h"
+
+#include <cstring>
+
+namespace penumbra
+{
+
+namespace
+{
+vtkAbstractMapper* MapperOf(vtkProp* leaf)
+{
+  if (auto actor = vtkActor::SafeDownCast(leaf))
+  {
+    return actor->GetMapper();
+  }
+  if (auto slice = vtkImageSlice::SafeDownCast(leaf))
+  {
+    return slice->GetMapper();
+  }
+  return nullptr;
+}
+} // namespace
+
+void ShadowInputs::Begin()
+{
+  this->Current.clear();
+}
+
+void ShadowInputs::Add(const void* object)
+{
+  this->Current.push_back(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(object)));
+}
+
+void ShadowInputs::Add(double value)
+{
+  // The bits, not the value: -0 and NaN compare as themselves.
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  this->Current.push_back(bits);
+}
+
+void ShadowInputs::Add(const glm::dmat4& matrix)
+{
+  for (int column = 0; column < 4; ++column)
+  {
+    this->Add(matrix[column]);
+  }
+}
+
+void ShadowInputs::Add(const glm::dvec4& vector)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    this->Add(vector[i]);
+  }
+}
+
+void ShadowInputs::AddTime(vtkMTimeType time)
+{
+  this->Current.push_back(static_cast<std::uint64_t>(time));
+}
+
+bool ShadowInputs::AddProps(vtkRenderer* renderer)
+{
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (vtkActor2D::SafeDownCast(prop))
+    {
+      continue; // drawn over the scene, never into its depth
+    }
+    this->Add(prop);
+    this->Add(static_cast<double>(prop->GetVisibility()));
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    if (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop))
+    {
+      return false; // a widget's representation, for one: its geometry is its own business
+    }
+    prop->InitPathTraversal();
+    while (vtkAssemblyPath* path = prop->GetNextPath())
+    {
+      vtkAssemblyNode* node = path->GetLastNode();
+      vtkMatrix4x4* matrix = node->GetMatrix();
+      if (!this->AddLeaf(node->GetViewProp(), matrix ? matrix->GetData() : nullptr,
+            path->GetNumberOfItems() > 1))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
+{
+  this->Add(leaf);
+  this->Add(static_cast<double>(leaf->GetVisibility()));
+  this->Add(static_cast<double>(vtkSoftShadowPass::GetCastsShadows(leaf)));
+  this->Add(static_cast<double>(vtkSoftShadowPass::GetReceivesShadows(leaf)));
+  this->Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(leaf)));
+  // An assembly modifies its parts as it draws them (vtkProp3D::PokeMatrix): a part's time moves
+  // every frame, so its parts are recorded by what they are made of instead.
+  if (!part)
+  {
+    this->AddTime(leaf->GetMTime());
+  }
+  if (auto prop3D = vtkProp3D::SafeDownCast(leaf))
+  {
+    // Values: a user transform or matrix may change without the prop's time moving.
+    const double* matrix = pathMatrix ? pathMatrix : prop3D->GetMatrix()->GetData();
+    for (int i = 0; i < 16; ++i)
+    {
+      this->Add(matrix[i]);
+    }
+  }
+  if (auto actor = vtkActor::SafeDownCast(leaf))
+  {
+    if (part)
+    {
+      this->AddTime(actor->GetProperty()->GetMTime());
+      this->AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
+      this->Add(static_cast<double>(actor->GetForceOpaque() + 2 * actor->GetForceTranslucent()));
+    }
+    vtkShaderProperty* shaders = actor->GetShaderProperty();
+    this->AddTime(shaders->GetMTime());
+    this->AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
+    this->AddTime(shaders->GetGeometryCustomUniforms()->GetMTime());
+    this->AddTime(shaders->GetFragmentCustomUniforms()->GetMTime());
+  }
+  vtkAbstractMapper* mapper = MapperOf(leaf);
+  if (!mapper)
+  {
+    return true;
+  }
+  if (mapper->HasObserver(vtkCommand::UpdateShaderEvent))
+  {
+    return false; // its observer may move vertices through uniforms, frame by frame
+  }
+  this->Add(mapper);
+  this->AddTime(mapper->GetMTime());
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    // The collection's time does not follow its planes'.
+    vtkCollectionSimpleIterator planeIt;
+    planes->InitTraversal(planeIt);
+    while (vtkPlane* plane = planes->GetNextPlane(planeIt))
+    {
+      this->AddTime(plane->GetMTime());
+    }
+  }
+  if (auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
+  {
+    if (vtkCompositeDataDisplayAttributes* blocks = composite->GetCompositeDataDisplayAttributes())
+    {
+      this->AddTime(blocks->GetMTime());
+    }
+  }
+  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    if (vtkCompositeDataDisplayAttributes* blocks = glyphs->GetBlockAttributes())
+    {
+      this->AddTime(blocks->GetMTime());
+    }
+  }
+  auto staticMapper = vtkMapper::SafeDownCast(mapper);
+  const bool update = !(staticMapper && staticMapper->GetStatic());
+  for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+  {
+    for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port); ++connection)
+    {
+      // As VTK's render would, before the data's time is read: a source changed since the last
+      // frame has not run yet.
+      vtkAlgorithmOutput* output = mapper->GetInputConnection(port, connection);
+      if (update && output && output->GetProducer())
+      {
+        output->GetProducer()->Update(output->GetIndex());
+      }
+      vtkDataObject* data = mapper->GetInputDataObject(port, connection);
+      this->Add(data);
+      if (!data)
+      {
+        continue;
+      }
+      this->AddTime(data->GetMTime());
+      if (auto composite = vtkCompositeDataSet::SafeDownCast(data))
+      {
+        vtkSmartPointer<vtkCompositeDataIterator> block;
+        block.TakeReference(composite->NewIterator());
+        for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+        {
+          vtkDataObject* leafData = block->GetCurrentDataObject();
+          this->Add(leafData);
+          this->AddTime(leafData ? leafData->GetMTime() : 0);
+        }
+      }
+    }
+  }
+  return true;
+}
+
+bool ShadowInputs::MatchKept() const
+{
+  return this->HaveKept && this->Current == this->Kept;
+}
+
+void ShadowInputs::Keep()
+{
+  this->Kept = this->Current;
+  this->HaveKept = true;
+}
+
+void ShadowInputs::Forget()
+{
+  this->HaveKept = false;
+  this->Kept.clear();
+}
+
+} // namespace penumbra

@@ -1,0 +1,67 @@
+/**
+ * @file    penumbraShadowInputs.h
+ * @brief   A record of what one frame's light-intensity layers were drawn from, so that a frame
+ *          in which none of it changed composites those layers again instead of redrawing them
+ *          (vtkSoftShadowPass::ReuseUnchangedShadows).
+ *
+ * The layers depend on the viewport, the camera the shadows are drawn with, each shadowing light
+ * and its samples, the pass's settings, and the depth and shape of every prop that the depth pass
+ * draws or that casts. Values are recorded where VTK does not mark a change (vtkCamera::DeepCopy
+ * does not modify the camera; a prop's matrix can change through its user transform), and
+ * modification times elsewhere: each prop, its mapper with its clipping planes and shader
+ * property, and every input data object of the mapper (each block of composite data), after
+ * bringing the mapper's inputs up to date as VTK's own render would. 2D props (vtkActor2D) are
+ * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
+ * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a widget's
+ * representation, or a mapper with an UpdateShaderEvent observer, which may move vertices
+ * through uniforms) makes every frame draw its shadows.
+ */
+#ifndef penumbraShadowInputs_h
+#define penumbraShadowInputs_h
+
+#include "vtkType.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+class vtkProp;
+class vtkRenderer;
+
+namespace penumbra
+{
+
+class ShadowInputs
+{
+public:
+  /// Starts recording a frame's inputs.
+  void Begin();
+  void Add(const void* object);
+  void Add(double value);
+  void Add(const glm::dmat4& matrix);
+  void Add(const glm::dvec4& vector);
+  void AddTime(vtkMTimeType time);
+  /// Adds every prop of `renderer`'s that can draw depth or cast, with its matrices, mapper and
+  /// input data (brought up to date). False when one of them can change without any of that
+  /// changing: the frame must then be drawn.
+  bool AddProps(vtkRenderer* renderer);
+
+  /// Whether the inputs recorded since Begin equal those of the last frame passed to Keep.
+  bool MatchKept() const;
+  /// The frame recorded since Begin was drawn: its layers are the ones a later frame may reuse.
+  void Keep();
+  /// The kept layers are gone or stale (graphics resources released, a frame without shadows).
+  void Forget();
+
+private:
+  /// `part`: the leaf of an assembly's path, drawn with the path's matrix.
+  bool AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part);
+  std::vector<std::uint64_t> Current;
+  std::vector<std::uint64_t> Kept;
+  bool HaveKept = false;
+};
+
+} // namespace penumbra
+
+#endif
