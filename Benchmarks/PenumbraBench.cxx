@@ -2,8 +2,8 @@
 //
 //   PenumbraBench [--output DIR] [--width W --height H] [--frames N] [--scenes a,b,...]
 //                 [--methods a,b,...] [--radii r1,r2,...] [--truth-samples N]
-//                 [--max-seconds S] [--images classic|all|none] [--no-noise-check] [--no-plot]
-//                 [--quick]
+//                 [--max-seconds S] [--azimuth-step DEG] [--images classic|all|none]
+//                 [--no-noise-check] [--no-plot] [--quick]
 //
 // For every scene and light radius it ray-traces the true light visibility (vtkRayTracedVisibility)
 // once, then renders the scene with each method: the error at the starting camera (against the
@@ -145,6 +145,10 @@ void Usage(const char* program)
     "                        the error is measured on included)\n"
     "  --max-seconds S       stop a method's timing once its timed frames pass S seconds\n"
     "                        (default 10; at least 1 frame; the frames column says how many)\n"
+    "  --azimuth-step DEG    degrees the camera orbits before each warm-up and timed frame\n"
+    "                        (default 0.5); 0 keeps it still, so that the pass composites\n"
+    "                        the shadows it drew last (ReuseUnchangedShadows) wherever\n"
+    "                        nothing else changes\n"
     "  --scenes a,b,...      among classic,isosurface,glyphs,large (default all of these)\n"
     "                        and streamtubes (open stream tubes), timevarying (a 241k-\n"
     "                        triangle isosurface whose data changes every frame); not in\n"
@@ -182,6 +186,7 @@ bool ParseArguments(int argc, char* argv[], Options& options)
     IntOption("--height", 16, 8192, options.Height, &options.SizeGiven),
     IntOption("--frames", 1, 100000, options.Frames, &options.FramesGiven),
     DoubleOption("--max-seconds", 0.0, options.MaxSeconds, &options.MaxGiven),
+    DoubleOption("--azimuth-step", 0.0, options.AzimuthStep),
     IntOption("--truth-samples", 1, 65536, options.TruthSamples, &options.TruthGiven),
     ListOption("--scenes", options.Scenes), ListOption("--methods", options.Methods),
     ValueOption("--radii",

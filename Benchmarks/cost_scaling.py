@@ -64,6 +64,8 @@ class Scene:
         camera.SetViewUp(0, 0, 1)
         self.shadows = penumbra.vtkSoftShadowPass()
         self.shadows.SetLightSamples(16)
+        # The same frame is timed again and again: every one must draw its shadows.
+        self.shadows.ReuseUnchangedShadowsOff()
 
     def configure(self, size, radius, resolution):
         self.window.SetSize(*size)
