@@ -149,10 +149,19 @@ public:
   /// The shader edits warned about: once per live prop, mapper class and problem.
   penumbra::PropWarnings WarnedShaderEdits;
   std::vector<ShadowLight> Lights;
-  /// What the kept light-intensity layers were drawn from (ReuseUnchangedShadows), and whether
-  /// this frame's inputs could all be recorded.
-  penumbra::ShadowInputs Inputs;
+  /// What the kept depth and light-intensity layers were drawn from (ReuseUnchangedShadows):
+  /// the scene (viewport, camera, props, settings) and each layer's light; whether this frame's
+  /// could all be recorded; and what this frame keeps of the last drawn frame's.
+  penumbra::ShadowInputs SceneInputs;
+  std::vector<penumbra::ShadowInputs> LayerInputs;
   bool InputsRecorded = false;
+  bool DepthKept = false;
+  std::vector<bool> LayersKept;
+  void ForgetInputs()
+  {
+    this->SceneInputs.Forget();
+    this->LayerInputs.clear();
+  }
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
   /// Holds every receiver (penumbra::StableReceiverBox): wedges are cut to it.
@@ -280,6 +289,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthFromCasterMeshes: " << this->DepthFromCasterMeshes << "\n";
   os << indent << "ReuseUnchangedShadows: " << this->ReuseUnchangedShadows << "\n";
   os << indent << "NumberOfReusedFrames: " << this->NumberOfReusedFrames << "\n";
+  os << indent << "NumberOfRedrawnLights: " << this->NumberOfRedrawnLights << "\n";
   os << indent << "PlateauFalloff: "
      << (this->PlateauFalloff == PLATEAU_FALLOFF_LINEAR ? "Linear" : "Sinusoidal") << "\n";
   os << indent << "PlateauResolution: " << this->PlateauResolution << "\n";
@@ -456,7 +466,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     if (!selecting)
     {
       this->ResetShadowStatistics();
-      internals.Inputs.Forget();
+      internals.ForgetInputs();
     }
     {
       penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
@@ -508,6 +518,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
 void vtkSoftShadowPass::ResetShadowStatistics()
 {
   this->NumberOfShadowingLights = 0;
+  this->NumberOfRedrawnLights = 0;
   this->NumberOfShadowVolumeTriangles = 0;
   this->NumberOfZFailVolumes = 0;
   this->NumberOfPenumbraWedges = 0;
@@ -523,35 +534,51 @@ void vtkSoftShadowPass::ResetShadowStatistics()
 bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
-  penumbra::ShadowInputs& inputs = internals.Inputs;
-  inputs.Begin();
+  internals.DepthKept = false;
+  internals.LayersKept.assign(internals.Lights.size(), false);
   internals.InputsRecorded = false;
   if (!this->ReuseUnchangedShadows)
   {
     return false;
   }
   vtkRenderer* renderer = s->GetRenderer();
-  inputs.Add(renderer);
-  inputs.Add(internals.Window.GetPointer());
-  inputs.Add(s->GetFrameBuffer());
-  inputs.Add(
+  penumbra::ShadowInputs& scene = internals.SceneInputs;
+  scene.Begin();
+  scene.Add(renderer);
+  scene.Add(internals.Window.GetPointer());
+  scene.Add(s->GetFrameBuffer());
+  scene.Add(
     glm::dvec4(internals.Size[0], internals.Size[1], internals.Origin[0], internals.Origin[1]));
-  inputs.AddTime(this->GetMTime());
+  scene.Add(static_cast<double>(internals.Lights.size())); // the layers' count
+  scene.AddTime(this->GetMTime());
   // Values: vtkCamera::DeepCopy does not modify the camera, and the tight depth range modifies
   // it twice a frame.
-  inputs.Add(internals.WorldToClip);
+  scene.Add(internals.WorldToClip);
+  internals.InputsRecorded = scene.AddProps(renderer);
+  if (!internals.InputsRecorded)
+  {
+    return false;
+  }
+  // The depth is the scene's alone: with the scene unchanged, only lights that changed are drawn.
+  internals.DepthKept = scene.MatchKept();
+  internals.LayerInputs.resize(internals.Lights.size());
+  bool allKept = internals.DepthKept;
   for (const vtkInternals::ShadowLight& light : internals.Lights)
   {
-    inputs.Add(light.Light);
-    inputs.AddTime(light.Light->GetMTime());
-    inputs.Add(light.World);
-    inputs.Add(glm::dvec4(light.SampleTarget, light.SoftRadius));
-    inputs.Add(glm::dvec4(light.SampleRadius, static_cast<double>(light.Samples.size()),
+    penumbra::ShadowInputs& layer = internals.LayerInputs[light.Layer];
+    layer.Begin();
+    layer.Add(light.Light);
+    layer.AddTime(light.Light->GetMTime());
+    layer.Add(light.World);
+    layer.Add(glm::dvec4(light.SampleTarget, light.SoftRadius));
+    layer.Add(glm::dvec4(light.SampleRadius, static_cast<double>(light.Samples.size()),
       static_cast<double>(light.CountingSamples.size()), light.Layer));
-    inputs.Add(light.Technique);
+    layer.Add(light.Technique);
+    const bool kept = internals.DepthKept && layer.MatchKept();
+    internals.LayersKept[light.Layer] = kept;
+    allKept = allKept && kept;
   }
-  internals.InputsRecorded = inputs.AddProps(renderer);
-  return internals.InputsRecorded && inputs.MatchKept();
+  return allKept;
 }
 
 void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
@@ -560,6 +587,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
   using Stage = penumbra::StageTimes::Stage;
   this->ResetShadowStatistics();
   this->PrepareFramebuffer(window);
+  if (!internals.DepthKept)
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.LI.GetLayers()->Activate();
@@ -570,7 +598,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Casters);
     this->UpdateCasters(s);
   }
-  if (!internals.DepthFromMeshes.empty())
+  if (!internals.DepthKept && !internals.DepthFromMeshes.empty())
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.LI.GetLayers()->Activate();
@@ -580,19 +608,22 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
   // After UpdateCasters: Automatic may have traded a light's wedges for averaged shadows, and
   // plateaus without a receiver plane fall back to hard shadows.
   if (std::any_of(internals.Lights.begin(), internals.Lights.end(),
-        [&](const vtkInternals::ShadowLight& light) { return light.Technique->ReadsDepthCopy(); }))
+        [&](const vtkInternals::ShadowLight& light)
+        { return !internals.LayersKept[light.Layer] && light.Technique->ReadsDepthCopy(); }))
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.LI.CopyDepth(window->GetState());
   }
   this->RenderLightIntensity(window);
-  if (internals.InputsRecorded)
+  if (!internals.InputsRecorded)
   {
-    internals.Inputs.Keep();
+    internals.ForgetInputs();
+    return;
   }
-  else
+  internals.SceneInputs.Keep();
+  for (penumbra::ShadowInputs& layer : internals.LayerInputs)
   {
-    internals.Inputs.Forget();
+    layer.Keep();
   }
 }
 
@@ -1056,6 +1087,11 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
   for (const auto& light : internals.Lights)
   {
+    if (internals.LayersKept[light.Layer])
+    {
+      continue; // drawn by the last frame from the same light and scene
+    }
+    ++this->NumberOfRedrawnLights;
     // Each light's volumes and technique leave the state as they found it.
     penumbra::ScopedDrawState savedForLight(ostate);
     // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
@@ -1355,7 +1391,7 @@ void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;
-  internals.Inputs.Forget();
+  internals.ForgetInputs();
   internals.StageTimes.ReleaseGraphicsResources();
   internals.Caches.ReleaseGraphicsResources();
   internals.LI.ReleaseGraphicsResources(w);

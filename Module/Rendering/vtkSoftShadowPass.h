@@ -362,9 +362,12 @@ public:
   vtkGetMacro(ReuseUnchangedShadows, bool);
   vtkBooleanMacro(ReuseUnchangedShadows, bool);
   ///@}
-  /// Frames so far that reused the last drawn frame's shadows (ReuseUnchangedShadows). The
-  /// other statistics then describe that drawn frame.
+  /// Frames so far that reused every light's shadows from the last drawn frame
+  /// (ReuseUnchangedShadows). The other statistics then describe that drawn frame.
   vtkGetMacro(NumberOfReusedFrames, vtkIdType);
+  /// Lights whose shadows the last drawn frame drew: with ReuseUnchangedShadows, a frame in which
+  /// only some lights changed draws those alone, against the depth it kept.
+  vtkGetMacro(NumberOfRedrawnLights, int);
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -399,6 +402,7 @@ protected:
   bool DepthFromCasterMeshes = true;
   bool ReuseUnchangedShadows = true;
   vtkIdType NumberOfReusedFrames = 0;
+  int NumberOfRedrawnLights = 0;
   vtkIdType NumberOfPropsWithDepthFromMeshes = 0;
   vtkIdType NumberOfPropsWithCulledDepth = 0;
   vtkIdType NumberOfPlateauTriangles = 0;
@@ -420,10 +424,11 @@ private:
   void RenderDelegate(const vtkRenderState* s);
   /// Zeroes the statistics of the shadows drawn (a reused frame keeps the drawn frame's).
   void ResetShadowStatistics();
-  /// Records this frame's shadow inputs; true when the layers kept from the last drawn frame
-  /// were drawn from the same (ReuseUnchangedShadows).
+  /// Records this frame's shadow inputs and finds what it keeps of the last drawn frame's
+  /// (ReuseUnchangedShadows): the depth when the scene is unchanged, and the layers of the lights
+  /// that are unchanged too. True when every layer is kept.
   bool ShadowsUnchanged(const vtkRenderState* s);
-  /// Depth, casters and every light's layer, then keeps the inputs they were drawn from.
+  /// Depth, casters and the light layers not kept, then keeps the inputs they were drawn from.
   void DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /// Warns once per positional light whose sphere reaches a visible prop's box.
   void WarnOfLightsReachingTheScene(vtkRenderer* renderer);

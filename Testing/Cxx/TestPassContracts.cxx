@@ -700,6 +700,29 @@ void TestReuseUnchangedShadows()
     Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
   }
 
+  // Two lights: moving one draws its shadows alone, against the depth kept from the last frame.
+  vtkLight* second = scene.View.PointLight(2.5, 5, -1, 0.2);
+  scene.Render();
+  scene.Render();
+  second->SetPosition(2.0, 5, -1.6);
+  const bool allReused = scene.Render();
+  const int oneMoved = pass->GetNumberOfRedrawnLights();
+  const int oneMovedOff = scene.PixelsOffFresh();
+  std::printf("     one of two lights moved: %d drawn, %d px off a fresh pass's frame\n", oneMoved,
+    oneMovedOff);
+  Check(!allReused && oneMoved == 1 && oneMovedOff == 0,
+    "one of two lights moved: its shadows alone drawn, the frame a fresh pass's");
+  renderer->GetActiveCamera()->Azimuth(5);
+  scene.Render();
+  const int cameraMoved = pass->GetNumberOfRedrawnLights();
+  Check(cameraMoved == 2 && scene.PixelsOffFresh() == 0,
+    "the camera moved: both lights' shadows drawn, the frame a fresh pass's");
+  scene.Render();
+  scene.Sphere->SetPosition(-0.3, 0, 0.2);
+  scene.Render();
+  Check(pass->GetNumberOfRedrawnLights() == 2 && scene.PixelsOffFresh() == 0,
+    "an actor moved: both lights' shadows drawn, the frame a fresh pass's");
+
   // Whatever an UpdateShaderEvent observer does to the vertices, no pass can see it: drawn.
   vtkNew<vtkCallbackCommand> uniforms;
   scene.Sphere->GetMapper()->AddObserver(vtkCommand::UpdateShaderEvent, uniforms);
