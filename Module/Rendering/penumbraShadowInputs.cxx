@@ -15,6 +15,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
+#include "vtkLODProp3D.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlane.h"
@@ -127,6 +128,11 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
 
 bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
 {
+  if (leaf->IsA("vtkLODActor") || vtkLODProp3D::SafeDownCast(leaf))
+  {
+    return false; // they pick their level by render time, which modifies nothing (RenderingLOD is
+                  // not linked: by name)
+  }
   this->Add(leaf);
   this->Add(static_cast<double>(leaf->GetVisibility()));
   this->Add(static_cast<double>(vtkSoftShadowPass::GetCastsShadows(leaf)));

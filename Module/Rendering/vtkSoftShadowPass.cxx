@@ -554,6 +554,9 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   // Values: vtkCamera::DeepCopy does not modify the camera, and the tight depth range modifies
   // it twice a frame.
   scene.Add(internals.WorldToClip);
+  // Image slices follow the focal point, which SetDistance moves without changing the matrix.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
   internals.InputsRecorded = scene.AddProps(renderer);
   if (!internals.InputsRecorded)
   {

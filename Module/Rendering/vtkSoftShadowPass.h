@@ -353,7 +353,8 @@ public:
    * composite data) modified since (penumbraShadowInputs.h). Text, scalar bars and other 2D
    * props may change freely; a colour change of a 3D prop redraws the shadows. On by default. A
    * frame is always drawn while a visible prop is neither a vtkProp3D nor a vtkPropAssembly (a
-   * widget's representation) or has a mapper with an UpdateShaderEvent observer. Geometry that
+   * widget's representation), is a vtkLODActor or vtkLODProp3D (they pick their level by
+   * render time) or has a mapper with an UpdateShaderEvent observer. Geometry that
    * changes without any VTK object being modified (data arrays edited in place without
    * Modified(), which VTK's mappers do not redraw either) keeps its old shadows: call Modified()
    * on the data, or on this pass to redraw.
