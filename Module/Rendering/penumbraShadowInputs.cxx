@@ -30,6 +30,8 @@
 #include "vtkSoftShadowPass.h"
 #include "vtkUniforms.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <cstring>
 
 namespace penumbra
@@ -130,8 +132,9 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
 {
   if (leaf->IsA("vtkLODActor") || vtkLODProp3D::SafeDownCast(leaf))
   {
-    return false; // they pick their level by render time, which modifies nothing (RenderingLOD is
-                  // not linked: by name)
+    // They pick their level by render time, which modifies nothing. (vtkLODActor by name: this
+    // module does not link RenderingLOD.)
+    return false;
   }
   this->Add(leaf);
   this->Add(static_cast<double>(leaf->GetVisibility()));
@@ -147,11 +150,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   if (auto prop3D = vtkProp3D::SafeDownCast(leaf))
   {
     // Values: a user transform or matrix may change without the prop's time moving.
-    const double* matrix = pathMatrix ? pathMatrix : prop3D->GetMatrix()->GetData();
-    for (int i = 0; i < 16; ++i)
-    {
-      this->Add(matrix[i]);
-    }
+    this->Add(glm::make_mat4(pathMatrix ? pathMatrix : prop3D->GetMatrix()->GetData()));
   }
   if (auto actor = vtkActor::SafeDownCast(leaf))
   {

@@ -13,8 +13,9 @@
  * bringing the mapper's inputs up to date as VTK's own render would. 2D props (vtkActor2D) are
  * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
  * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a widget's
- * representation, or a mapper with an UpdateShaderEvent observer, which may move vertices
- * through uniforms) makes every frame draw its shadows.
+ * representation, a vtkLODActor or vtkLODProp3D, which pick their level by render time, or a
+ * mapper with an UpdateShaderEvent observer, which may move vertices through uniforms) makes
+ * every frame draw its shadows.
  */
 #ifndef penumbraShadowInputs_h
 #define penumbraShadowInputs_h

@@ -617,8 +617,8 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
     internals.LI.CopyDepth(window->GetState());
   }
-  this->RenderLightIntensity(window);
-  if (!internals.InputsRecorded)
+  const bool drawn = this->RenderLightIntensity(window);
+  if (!drawn || !internals.InputsRecorded)
   {
     internals.ForgetInputs();
     return;
@@ -1067,14 +1067,14 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateTranslucentVolumes(const Shadow
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
+bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& internals = *this->Internals;
   vtkOpenGLState* ostate = window->GetState();
   penumbra::ShadowFrame frame = internals.MakeFrame();
   if (!internals.Volumes.Begin(frame))
   {
-    return;
+    return false;
   }
 
   ostate->PushFramebufferBindings();
@@ -1124,6 +1124,7 @@ void vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   this->NumberOfPlateauTriangles = frame.Counts.PlateauTriangles;
   this->NumberOfCountedLights = frame.Counts.CountedLights;
   ostate->PopFramebufferBindings();
+  return true;
 }
 
 penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()

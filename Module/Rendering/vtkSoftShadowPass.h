@@ -449,7 +449,8 @@ private:
   /// Draws `props`' depth through VTK's opaque pass into the LI framebuffer.
   void RenderDepthWithVTK(const vtkRenderState* s, std::vector<vtkProp*>& props);
   void UpdateCasters(const vtkRenderState* s);
-  void RenderLightIntensity(vtkOpenGLRenderWindow* window);
+  /// Draws the layers of the lights not kept; false when the volumes' shader did not build.
+  bool RenderLightIntensity(vtkOpenGLRenderWindow* window);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
