@@ -6,6 +6,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkCaptionActor2D.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
@@ -14,6 +15,7 @@
 #include "vtkDataObject.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
+#include "vtkImageProperty.h"
 #include "vtkImageSlice.h"
 #include "vtkLODProp3D.h"
 #include "vtkMapper.h"
@@ -28,6 +30,7 @@
 #include "vtkShaderProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
+#include "vtkTexture.h"
 #include "vtkUniforms.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -50,6 +53,30 @@ vtkAbstractMapper* MapperOf(vtkProp* leaf)
     return slice->GetMapper();
   }
   return nullptr;
+}
+
+/// Props VTK draws over the scene and never into its depth: 2D actors, and the widget
+/// representations made of them (scalar bar, text, logo and 2D slider widgets; by name, as this
+/// module does not link the widgets). A caption's 3D leader is drawn into the depth.
+bool DrawnOverTheScene(vtkProp* prop)
+{
+  if (auto caption = vtkCaptionActor2D::SafeDownCast(prop))
+  {
+    return !(caption->GetLeader() && caption->GetThreeDimensionalLeader());
+  }
+  if (vtkActor2D::SafeDownCast(prop))
+  {
+    return true;
+  }
+  return (prop->IsA("vtkBorderRepresentation") && !prop->IsA("vtkCaptionRepresentation")) ||
+    prop->IsA("vtkSliderRepresentation2D");
+}
+
+void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
+{
+  inputs.Add(static_cast<double>(vtkSoftShadowPass::GetCastsShadows(prop)));
+  inputs.Add(static_cast<double>(vtkSoftShadowPass::GetReceivesShadows(prop)));
+  inputs.Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(prop)));
 }
 } // namespace
 
@@ -92,6 +119,19 @@ void ShadowInputs::AddTime(vtkMTimeType time)
   this->Current.push_back(static_cast<std::uint64_t>(time));
 }
 
+void ShadowInputs::AddCoincidentTopologySettings()
+{
+  // Static, so in no object's time; they offset the depth of every mapper's polygons and lines.
+  double polygonFactor, polygonUnits, lineFactor, lineUnits, pointUnits;
+  vtkMapper::GetResolveCoincidentTopologyPolygonOffsetParameters(polygonFactor, polygonUnits);
+  vtkMapper::GetResolveCoincidentTopologyLineOffsetParameters(lineFactor, lineUnits);
+  vtkMapper::GetResolveCoincidentTopologyPointOffsetParameter(pointUnits);
+  this->Add(glm::dvec4(vtkMapper::GetResolveCoincidentTopology(),
+    vtkMapper::GetResolveCoincidentTopologyPolygonOffsetFaces(),
+    vtkMapper::GetResolveCoincidentTopologyZShift(), pointUnits));
+  this->Add(glm::dvec4(polygonFactor, polygonUnits, lineFactor, lineUnits));
+}
+
 bool ShadowInputs::AddProps(vtkRenderer* renderer)
 {
   vtkPropCollection* props = renderer->GetViewProps();
@@ -99,9 +139,9 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    if (vtkActor2D::SafeDownCast(prop))
+    if (DrawnOverTheScene(prop))
     {
-      continue; // drawn over the scene, never into its depth
+      continue;
     }
     this->Add(prop);
     this->Add(static_cast<double>(prop->GetVisibility()));
@@ -111,8 +151,10 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
     }
     if (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop))
     {
-      return false; // a widget's representation, for one: its geometry is its own business
+      return false; // a 3D widget's representation, for one: its geometry is its own business
     }
+    // The scene walk reads an assembly's keys on the assembly, not on its parts.
+    AddShadowKeys(*this, prop);
     prop->InitPathTraversal();
     while (vtkAssemblyPath* path = prop->GetNextPath())
     {
@@ -138,9 +180,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   }
   this->Add(leaf);
   this->Add(static_cast<double>(leaf->GetVisibility()));
-  this->Add(static_cast<double>(vtkSoftShadowPass::GetCastsShadows(leaf)));
-  this->Add(static_cast<double>(vtkSoftShadowPass::GetReceivesShadows(leaf)));
-  this->Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(leaf)));
+  AddShadowKeys(*this, leaf);
   // An assembly modifies its parts as it draws them (vtkProp3D::PokeMatrix): a part's time moves
   // every frame, so its parts are recorded by what they are made of instead.
   if (!part)
@@ -159,12 +199,18 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
       this->AddTime(actor->GetProperty()->GetMTime());
       this->AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
       this->Add(static_cast<double>(actor->GetForceOpaque() + 2 * actor->GetForceTranslucent()));
+      this->AddTime(actor->GetTexture() ? actor->GetTexture()->GetMTime() : 0);
     }
     vtkShaderProperty* shaders = actor->GetShaderProperty();
     this->AddTime(shaders->GetMTime());
     this->AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
     this->AddTime(shaders->GetGeometryCustomUniforms()->GetMTime());
     this->AddTime(shaders->GetFragmentCustomUniforms()->GetMTime());
+  }
+  auto slice = vtkImageSlice::SafeDownCast(leaf);
+  if (part && slice)
+  {
+    this->AddTime(slice->GetProperty()->GetMTime());
   }
   vtkAbstractMapper* mapper = MapperOf(leaf);
   if (!mapper)

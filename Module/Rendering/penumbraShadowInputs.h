@@ -12,7 +12,7 @@
  * property, and every input data object of the mapper (each block of composite data), after
  * bringing the mapper's inputs up to date as VTK's own render would. 2D props (vtkActor2D) are
  * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
- * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a widget's
+ * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a 3D widget's
  * representation, a vtkLODActor or vtkLODProp3D, which pick their level by render time, or a
  * mapper with an UpdateShaderEvent observer, which may move vertices through uniforms) makes
  * every frame draw its shadows.
@@ -43,6 +43,8 @@ public:
   void Add(const glm::dmat4& matrix);
   void Add(const glm::dvec4& vector);
   void AddTime(vtkMTimeType time);
+  /// vtkMapper's static coincident-topology settings.
+  void AddCoincidentTopologySettings();
   /// Adds every prop of `renderer`'s that can draw depth or cast, with its matrices, mapper and
   /// input data (brought up to date). False when one of them can change without any of that
   /// changing: the frame must then be drawn.

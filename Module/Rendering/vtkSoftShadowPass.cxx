@@ -557,6 +557,7 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   // Image slices follow the focal point, which SetDistance moves without changing the matrix.
   vtkCamera* camera = renderer->GetActiveCamera();
   scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
+  scene.AddCoincidentTopologySettings();
   internals.InputsRecorded = scene.AddProps(renderer);
   if (!internals.InputsRecorded)
   {

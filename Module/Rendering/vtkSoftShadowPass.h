@@ -351,9 +351,10 @@ public:
    * camera matrices, the same shadowing lights at the same places and radii, the same settings,
    * and no prop, mapper, clipping plane, shader property or input data object (each block of
    * composite data) modified since (penumbraShadowInputs.h). Text, scalar bars and other 2D
-   * props may change freely; a colour change of a 3D prop redraws the shadows. On by default. A
-   * frame is always drawn while a visible prop is neither a vtkProp3D nor a vtkPropAssembly (a
-   * widget's representation), is a vtkLODActor or vtkLODProp3D (they pick their level by
+   * props, and the 2D widgets (scalar bar, text, logo, 2D slider), may change freely; a colour
+   * change of a 3D prop redraws the shadows. On by default. A frame is always drawn while a
+   * visible prop is neither a vtkProp3D nor a vtkPropAssembly (a 3D widget's representation, a
+   * caption with a 3D leader), is a vtkLODActor or vtkLODProp3D (they pick their level by
    * render time) or has a mapper with an UpdateShaderEvent observer. Geometry that
    * changes without any VTK object being modified (data arrays edited in place without
    * Modified(), which VTK's mappers do not redraw either) keeps its old shadows: call Modified()

@@ -16,9 +16,12 @@
 #include "vtkCubeSource.h"
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightsPass.h"
+#include "vtkLookupTable.h"
+#include "vtkMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
@@ -32,11 +35,14 @@
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkScalarBarActor.h"
+#include "vtkScalarBarRepresentation.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSequencePass.h"
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
+#include "vtkTexture.h"
 #include "vtkTransform.h"
 #include "vtkTranslucentPass.h"
 #include "vtkTrivialProducer.h"
@@ -545,7 +551,10 @@ public:
   vtkNew<vtkPlane> ClipPlane;
   vtkNew<vtkTransform> UserTransform;
   vtkNew<vtkTextActor> Text;
+  vtkNew<vtkScalarBarRepresentation> ScalarBar; // what vtkScalarBarWidget adds to the renderer
   vtkNew<vtkPolyData> BlockBox;
+  vtkNew<vtkTexture> PartTexture;
+  vtkNew<vtkAssembly> Assembly;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
   vtkActor* Part = nullptr;
@@ -576,22 +585,41 @@ public:
     vtkNew<vtkActor> composite;
     composite->SetMapper(compositeMapper);
     this->View.Renderer->AddActor(composite);
-    vtkNew<vtkAssembly> assembly;
     this->Part = AddActor(this->View.Renderer, SphereSource(-0.6, 0.35, 1.6, 0.35, 24, 12), 0.3,
       0.8, 0.4, this->View.Keep);
     this->View.Keep.push_back(this->Part); // the renderer lets go of it
     this->View.Renderer->RemoveActor(this->Part);
-    assembly->AddPart(this->Part);
-    this->View.Renderer->AddActor(assembly);
+    this->PartTexture->SetInputData(TextureImage());
+    this->Part->SetTexture(this->PartTexture);
+    this->Assembly->AddPart(this->Part);
+    this->View.Renderer->AddActor(this->Assembly);
     this->View.Keep.push_back(blocks.GetPointer());
     this->View.Keep.push_back(composite.GetPointer());
-    this->View.Keep.push_back(assembly.GetPointer());
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
+    vtkNew<vtkLookupTable> colours;
+    this->ScalarBar->GetScalarBarActor()->SetLookupTable(colours);
+    this->ScalarBar->GetScalarBarActor()->SetTitle("frame 0");
+    this->View.Renderer->AddViewProp(this->ScalarBar);
     vtkSoftShadowPass::SetLightRadius(this->View.Light, 0.3);
     this->View.Pass->SetLightSamples(16);
     this->View.Camera(3, 4, 7, 0, 0.5, 0);
+  }
+
+  /// A 2x2 texture of one light grey: RGB (opaque), or RGBA with the given alpha.
+  static vtkSmartPointer<vtkImageData> TextureImage(int alpha = -1)
+  {
+    const int components = alpha < 0 ? 3 : 4;
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(2, 2, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+    auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int i = 0; i < 4 * components; ++i)
+    {
+      texels[i] = (i % components == 3) ? static_cast<unsigned char>(alpha) : 230;
+    }
+    return image;
   }
 
   /// Renders; true when the frame reused the last drawn frame's shadows.
@@ -639,6 +667,9 @@ void TestReuseUnchangedShadows()
   selector->SetRenderer(renderer);
   selector->SetArea(0, 0, 199, 149);
 
+  double offsetFactor, offsetUnits;
+  vtkMapper::GetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
+
   struct Change
   {
     const char* What;
@@ -648,6 +679,12 @@ void TestReuseUnchangedShadows()
   const std::vector<Change> changes = {
     { "nothing", true, [] {} },
     { "a 2D text actor's text", true, [&] { scene.Text->SetInput("frame 1"); } },
+    { "a scalar bar widget's title and place", true,
+      [&]
+      {
+        scene.ScalarBar->GetScalarBarActor()->SetTitle("frame 1");
+        scene.ScalarBar->SetPosition(0.1, 0.2);
+      } },
     { "a pick between frames (selection render)", true,
       [&]
       {
@@ -678,6 +715,18 @@ void TestReuseUnchangedShadows()
         points->Modified();
       } },
     { "an assembly part moved", false, [&] { scene.Part->SetPosition(0.2, 0, -0.3); } },
+    { "an assembly part's texture made translucent", false,
+      [&] { scene.PartTexture->SetInputData(ReuseScene::TextureImage(100)); } },
+    { "an assembly's shadow keys", false,
+      [&] { vtkSoftShadowPass::SetCastsShadows(scene.Assembly, false); } },
+    { "an assembly's shadow keys set in place (the assembly not modified)", false,
+      [&] { scene.Assembly->GetPropertyKeys()->Set(vtkSoftShadowPass::CASTS_SHADOWS(), 1); } },
+    { "the coincident-topology offsets (static)", false,
+      [] { vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(4, 400); } },
+    { "the coincident-topology offsets back", false,
+      [&] {
+        vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
+      } },
     { "an actor's opacity", false, [&] { scene.Box->GetProperty()->SetOpacity(0.5); } },
     { "an actor hidden", false, [&] { scene.Box->VisibilityOff(); } },
     { "an actor removed", false, [&] { renderer->RemoveActor(scene.Box); } },
