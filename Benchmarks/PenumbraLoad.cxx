@@ -2,7 +2,7 @@
 // has the figures and how they are measured.
 //
 //   PenumbraLoad [--scenes a,b] [--methods a,b] [--frames N] [--size WxH] [--max-seconds S]
-//                [--jobs N] [--smoke] [--output DIR]
+//                [--jobs N] [--smoke] [--no-reuse] [--output DIR]
 //
 // Three scenes on a ground plane:
 //   actors1000  1000 small actors (spheres, cubes, cones; some share one source's output, some
@@ -151,6 +151,7 @@ struct Options
   int Width = 1024, Height = 768;
   double MaxSeconds = 45.0; ///< per timed phase; at least one frame is always timed
   bool Smoke = false;
+  bool Reuse = true;  ///< vtkSoftShadowPass::ReuseUnchangedShadows
   int Jobs = 1;       ///< child processes at once (more than 1 distorts the timings)
   std::string Output; ///< empty: no files
 };
@@ -167,6 +168,8 @@ void Usage(const char* program)
     "  --jobs N         run N scene/method processes at once (default 1; 2 with --smoke):\n"
     "                   faster, but the timings are then not worth reporting\n"
     "  --smoke          reduced scale: mesh4m at 1M triangles, 2 frames, 320x240, 2 jobs\n"
+    "  --no-reuse       draw every frame's shadows (ReuseUnchangedShadows off): in the moving-\n"
+    "                   light phase the scene is still, so the pass otherwise keeps its depth\n"
     "  --output DIR     write DIR/load.csv and DIR/<scene>.png (automatic's first frame)\n",
     program);
 }
@@ -176,6 +179,7 @@ bool ParseArguments(int argc, char* argv[], Options& options)
   using namespace penumbra::bench;
   bool sizeGiven = false, framesGiven = false, jobsGiven = false;
   const std::vector<Option> table = { FlagOption("--smoke", [&] { options.Smoke = true; }),
+    FlagOption("--no-reuse", [&] { options.Reuse = false; }),
     ListOption("--scenes", options.Scenes, &AllScenes),
     ListOption("--methods", options.Methods, &AllMethods),
     IntOption("--frames", 1, 1000000, options.Frames, &framesGiven),
@@ -568,9 +572,10 @@ long long CountIsolatedPixels(const float* v, int width, int height)
   return count;
 }
 
-vtkSmartPointer<vtkSoftShadowPass> MakePass(const std::string& method)
+vtkSmartPointer<vtkSoftShadowPass> MakePass(const std::string& method, bool reuse)
 {
   auto pass = vtkSmartPointer<vtkSoftShadowPass>::New();
+  pass->SetReuseUnchangedShadows(reuse);
   if (method == "none")
     pass->SetShadowsEnabled(false);
   else if (method == "hard_volumes")
@@ -619,7 +624,7 @@ Row RunMethod(const std::string& method, const Scene& scene, vtkRenderWindow* wi
   row.ExpectedLights = method == "none" ? 0 : static_cast<int>(scene.Lights.size());
   row.ShadowsOn = method != "none";
 
-  auto pass = MakePass(method);
+  auto pass = MakePass(method, options.Reuse);
   renderer->SetPass(pass);
   scene.ResetLights();
   scene.ResetCamera(renderer);
