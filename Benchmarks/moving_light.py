@@ -4,8 +4,8 @@ of the lights that did not move (ReuseUnchangedShadows), against drawing every f
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
         /usr/bin/python3 Benchmarks/moving_light.py [--extent E] [--frames F]
 
-The scene is time_varying.py's isosurface (about 969,500 triangles at extent 120, open where the
-extent clips it) on a ground plane, unchanged, the camera still, hard shadows. Two cases: one
+The scene is time_varying.py's (make_scene): its isosurface (about 969,500 triangles at extent
+120, open where the extent clips it) on a ground plane, unchanged, the camera still, hard shadows. Two cases: one
 shadowing light that turns a little every frame, and two shadowing lights of which one turns.
 Three renderings: VTK without the pass, the pass with ReuseUnchangedShadows (the default) and
 the pass without, in blocks of F timed frames in the order A B C C B A, so that a drift of this
@@ -16,22 +16,8 @@ import math
 import statistics
 import time
 
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
-from vtkmodules.vtkFiltersSources import vtkPlaneSource
-from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-
 import penumbra
-
-
-def make_actor(algorithm):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(algorithm.GetOutputPort())
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    return actor
+from time_varying import make_scene
 
 
 def main():
@@ -40,29 +26,7 @@ def main():
     parser.add_argument("--frames", type=int, default=5, help="timed frames per block")
     args = parser.parse_args()
     e = args.extent
-    wavelet = vtkRTAnalyticSource()
-    wavelet.SetWholeExtent(-e, e, -e, e, -e, e)
-    contour = vtkFlyingEdges3D()
-    contour.SetInputConnection(wavelet.GetOutputPort())
-    contour.SetValue(0, 160.0)
-    contour.ComputeNormalsOn()
-    surface = make_actor(contour)
-    surface.SetPosition(0, e * 0.6, 0)
-    ground = vtkPlaneSource()
-    ground.SetOrigin(-2 * e, -e * 0.5, -2 * e), ground.SetPoint1(2 * e, -e * 0.5, -2 * e)
-    ground.SetPoint2(-2 * e, -e * 0.5, 2 * e)
-
-    renderer = vtkRenderer()
-    renderer.AddActor(surface)
-    renderer.AddActor(make_actor(ground))
-    moving = penumbra.add_light(renderer, (-e, 5 * e, e))
-    window = vtkRenderWindow()
-    window.SetSize(1024, 768)
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2 * e, 2.5 * e, 3 * e)
-    camera.SetFocalPoint(0, 0, 0)
+    contour, renderer, window, moving = make_scene(e)
     contour.Update()
     renderer.ResetCameraClippingRange()
     triangles = contour.GetOutput().GetNumberOfPolys()

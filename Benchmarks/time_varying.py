@@ -24,36 +24,35 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import penumbra
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--extent", type=int, default=60, help="the wavelet's half extent")
-    parser.add_argument("--frames", type=int, default=8)
-    args = parser.parse_args()
-    e = args.extent
+def make_actor(algorithm):
+    """An actor drawing `algorithm`'s output in one colour."""
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(algorithm.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    return actor
+
+
+def make_scene(e):
+    """The wavelet's isosurface (half extent `e`, open where the extent clips it) over a ground,
+    one shadowing light, a 1024x768 off-screen window: (contour, renderer, window, light)."""
     wavelet = vtkRTAnalyticSource()
     wavelet.SetWholeExtent(-e, e, -e, e, -e, e)
     contour = vtkFlyingEdges3D()
     contour.SetInputConnection(wavelet.GetOutputPort())
     contour.SetValue(0, 160.0)
     contour.ComputeNormalsOn()
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(contour.GetOutputPort())
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.SetPosition(0, e * 0.6, 0)
+    surface = make_actor(contour)
+    surface.SetPosition(0, e * 0.6, 0)
     ground = vtkPlaneSource()
     ground.SetOrigin(-2 * e, -e * 0.5, -2 * e), ground.SetPoint1(2 * e, -e * 0.5, -2 * e)
     ground.SetPoint2(-2 * e, -e * 0.5, 2 * e)
-    gmapper = vtkPolyDataMapper()
-    gmapper.SetInputConnection(ground.GetOutputPort())
-    gactor = vtkActor()
-    gactor.SetMapper(gmapper)
 
     renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.AddActor(gactor)
-    penumbra.add_light(renderer, (-e, 5 * e, e))
+    renderer.AddActor(surface)
+    renderer.AddActor(make_actor(ground))
+    light = penumbra.add_light(renderer, (-e, 5 * e, e))
     window = vtkRenderWindow()
     window.SetSize(1024, 768)
     window.SetOffScreenRendering(1)
@@ -61,6 +60,15 @@ def main():
     camera = renderer.GetActiveCamera()
     camera.SetPosition(2 * e, 2.5 * e, 3 * e)
     camera.SetFocalPoint(0, 0, 0)
+    return contour, renderer, window, light
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--extent", type=int, default=60, help="the wavelet's half extent")
+    parser.add_argument("--frames", type=int, default=8)
+    args = parser.parse_args()
+    contour, renderer, window, _ = make_scene(args.extent)
 
     contour.Update()
     triangles = contour.GetOutput().GetNumberOfPolys()
