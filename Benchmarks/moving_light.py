@@ -5,8 +5,9 @@ of the lights that did not move (ReuseUnchangedShadows), against drawing every f
         /usr/bin/python3 Benchmarks/moving_light.py [--extent E] [--frames F]
 
 The scene is time_varying.py's (make_scene): its isosurface (about 969,500 triangles at extent
-120, open where the extent clips it) on a ground plane, unchanged, the camera still, hard shadows. Two cases: one
-shadowing light that turns a little every frame, and two shadowing lights of which one turns.
+120, open where the extent clips it) on a ground plane, unchanged, the camera still, hard
+shadows. Two cases: one shadowing light that turns a little every frame, and two shadowing
+lights of which one turns.
 Three renderings: VTK without the pass, the pass with ReuseUnchangedShadows (the default) and
 the pass without, in blocks of F timed frames in the order A B C C B A, so that a drift of this
 machine's load falls on all three alike; the light moves before every frame.
