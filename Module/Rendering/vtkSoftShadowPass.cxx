@@ -589,7 +589,15 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
 {
   vtkInternals& internals = *this->Internals;
   using Stage = penumbra::StageTimes::Stage;
+  // A kept depth is the last drawn frame's: so are its statistics.
+  const vtkIdType depthFromMeshes = this->NumberOfPropsWithDepthFromMeshes;
+  const vtkIdType culledDepth = this->NumberOfPropsWithCulledDepth;
   this->ResetShadowStatistics();
+  if (internals.DepthKept)
+  {
+    this->NumberOfPropsWithDepthFromMeshes = depthFromMeshes;
+    this->NumberOfPropsWithCulledDepth = culledDepth;
+  }
   this->PrepareFramebuffer(window);
   if (!internals.DepthKept)
   {

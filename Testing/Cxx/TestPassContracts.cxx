@@ -751,11 +751,17 @@ void TestReuseUnchangedShadows()
 
   // Two lights: moving one draws its shadows alone, against the depth kept from the last frame.
   vtkLight* second = scene.View.PointLight(2.5, 5, -1, 0.2);
+  scene.View.Sphere(1.2, 0.3, -1.2, 0.3, 16); // a plain caster: depth from its mesh
   scene.Render();
   scene.Render();
+  const vtkIdType depthFromMeshes = pass->GetNumberOfPropsWithDepthFromMeshes();
   second->SetPosition(2.0, 5, -1.6);
   const bool allReused = scene.Render();
   const int oneMoved = pass->GetNumberOfRedrawnLights();
+  std::printf("     depth from meshes %lld, then %lld\n", static_cast<long long>(depthFromMeshes),
+    static_cast<long long>(pass->GetNumberOfPropsWithDepthFromMeshes()));
+  Check(depthFromMeshes > 0 && pass->GetNumberOfPropsWithDepthFromMeshes() == depthFromMeshes,
+    "a kept depth keeps its statistics (props with depth from their meshes)");
   const int oneMovedOff = scene.PixelsOffFresh();
   std::printf("     one of two lights moved: %d drawn, %d px off a fresh pass's frame\n", oneMoved,
     oneMovedOff);
