@@ -515,7 +515,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
-void vtkSoftShadowPass::ResetShadowStatistics()
+void vtkSoftShadowPass::ResetShadowStatistics(bool depthKept)
 {
   this->NumberOfShadowingLights = 0;
   this->NumberOfRedrawnLights = 0;
@@ -527,8 +527,11 @@ void vtkSoftShadowPass::ResetShadowStatistics()
   this->NumberOfPlateauTriangles = 0;
   this->NumberOfCountedLights = 0;
   this->NumberOfAveragedLights = 0;
-  this->NumberOfPropsWithDepthFromMeshes = 0;
-  this->NumberOfPropsWithCulledDepth = 0;
+  if (!depthKept)
+  {
+    this->NumberOfPropsWithDepthFromMeshes = 0;
+    this->NumberOfPropsWithCulledDepth = 0;
+  }
 }
 
 bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
@@ -589,15 +592,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
 {
   vtkInternals& internals = *this->Internals;
   using Stage = penumbra::StageTimes::Stage;
-  // A kept depth is the last drawn frame's: so are its statistics.
-  const vtkIdType depthFromMeshes = this->NumberOfPropsWithDepthFromMeshes;
-  const vtkIdType culledDepth = this->NumberOfPropsWithCulledDepth;
-  this->ResetShadowStatistics();
-  if (internals.DepthKept)
-  {
-    this->NumberOfPropsWithDepthFromMeshes = depthFromMeshes;
-    this->NumberOfPropsWithCulledDepth = culledDepth;
-  }
+  this->ResetShadowStatistics(internals.DepthKept);
   this->PrepareFramebuffer(window);
   if (!internals.DepthKept)
   {

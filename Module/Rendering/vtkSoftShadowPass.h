@@ -424,8 +424,9 @@ private:
   void operator=(const vtkSoftShadowPass&) = delete;
 
   void RenderDelegate(const vtkRenderState* s);
-  /// Zeroes the statistics of the shadows drawn (a reused frame keeps the drawn frame's).
-  void ResetShadowStatistics();
+  /// Zeroes the statistics of the shadows drawn (a reused frame keeps the drawn frame's); with
+  /// `depthKept`, the depth's statistics stay: the kept depth is the last drawn frame's.
+  void ResetShadowStatistics(bool depthKept = false);
   /// Records this frame's shadow inputs and finds what it keeps of the last drawn frame's
   /// (ReuseUnchangedShadows): the depth when the scene is unchanged, and the layers of the lights
   /// that are unchanged too. True when every layer is kept.
