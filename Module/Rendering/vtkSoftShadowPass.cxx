@@ -3,6 +3,7 @@
 #include "penumbraCasterDepth.h"
 #include "penumbraLightIntensityBuffer.h"
 #include "penumbraShadowCaches.h"
+#include "penumbraShadowCamera.h"
 #include "penumbraShadowTechnique.h"
 #include "penumbraShadowVolumeRenderer.h"
 #include "penumbraTechniqueChooser.h"
@@ -88,46 +89,6 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
   info->Append(vtkOpenGLRenderPass::RenderPasses(), pass);
 }
 
-/// Narrows the active camera's clipping range to the depths of the box of every visible prop
-/// (penumbra::TightClippingRange) while it lives, and restores the camera's own range after.
-class ScopedShadowDepthRange
-{
-public:
-  ScopedShadowDepthRange(vtkRenderer* renderer, const penumbra::Box& scene, bool enabled)
-    : Camera(enabled && scene.Valid ? renderer->GetActiveCamera() : nullptr)
-  {
-    if (!this->Camera)
-    {
-      return;
-    }
-    this->Camera->GetClippingRange(this->Saved);
-    const glm::dmat4 worldToView = penumbra::ToGlm(this->Camera->GetViewTransformMatrix());
-    const glm::dvec2 range = this->Camera->GetParallelProjection()
-      ? glm::dvec2(this->Saved[0], this->Saved[1])
-      : penumbra::TightClippingRange(
-          scene.Min, scene.Max, worldToView, glm::make_vec2(this->Saved));
-    if (range.x == this->Saved[0] && range.y == this->Saved[1])
-    {
-      this->Camera = nullptr;
-      return;
-    }
-    this->Camera->SetClippingRange(range.x, range.y);
-  }
-  ~ScopedShadowDepthRange()
-  {
-    if (this->Camera)
-    {
-      this->Camera->SetClippingRange(this->Saved);
-    }
-  }
-  ScopedShadowDepthRange(const ScopedShadowDepthRange&) = delete;
-  ScopedShadowDepthRange& operator=(const ScopedShadowDepthRange&) = delete;
-
-private:
-  vtkCamera* Camera;
-  double Saved[2] = { 0.0, 0.0 };
-};
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -205,15 +166,18 @@ public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   std::vector<vtkSmartPointer<vtkImageData>> VisibilityImages;
 
+  /// Depth, volumes and wedges share one camera; the scene is drawn with the user's.
+  penumbra::ShadowCamera Camera;
   glm::dmat4 WorldToClip{ 1.0 };
   std::array<glm::dvec3, 4> NearCorners;
 
-  /// The camera's world-to-clip matrix and near-plane corners, as VTK's mappers use them.
-  void UpdateCamera(vtkRenderer* renderer)
+  /// The shadows' camera, its world-to-clip matrix and near-plane corners, as VTK's mappers
+  /// use them.
+  void UpdateCamera(vtkRenderer* renderer, bool tightDepthRange)
   {
     vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
     vtkMatrix3x3* normals;
-    static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
+    this->Camera.Update(renderer, this->SceneBox, tightDepthRange)
       ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
     // VTK keeps its key matrices transposed for OpenGL.
     this->WorldToClip = glm::transpose(penumbra::ToGlm(worldToClip));
@@ -477,18 +441,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   this->AddReceiverKeys(s);
-  bool reused = false;
+  internals.UpdateSceneBox(renderer);
+  this->WarnOfLightsReachingTheScene(renderer);
+  internals.UpdateCamera(renderer, this->UseTightDepthRange);
+  const bool reused = this->ShadowsUnchanged(s);
+  if (!reused)
   {
-    // Depth, volumes and wedges share one camera; the scene is drawn with the user's.
-    internals.UpdateSceneBox(renderer);
-    this->WarnOfLightsReachingTheScene(renderer);
-    ScopedShadowDepthRange depthRange(renderer, internals.SceneBox, this->UseTightDepthRange);
-    internals.UpdateCamera(renderer);
-    reused = this->ShadowsUnchanged(s);
-    if (!reused)
-    {
-      this->DrawShadows(s, window);
-    }
+    this->DrawShadows(s, window);
   }
   internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
@@ -554,8 +513,7 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
     glm::dvec4(internals.Size[0], internals.Size[1], internals.Origin[0], internals.Origin[1]));
   scene.Add(static_cast<double>(internals.Lights.size())); // the layers' count
   scene.AddTime(this->GetMTime());
-  // Values: vtkCamera::DeepCopy does not modify the camera, and the tight depth range modifies
-  // it twice a frame.
+  // Values: vtkCamera::DeepCopy does not modify the camera.
   scene.Add(internals.WorldToClip);
   // Image slices follow the focal point, which SetDistance moves without changing the matrix.
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -944,6 +902,7 @@ void vtkSoftShadowPass::RenderDepthWithVTK(const vtkRenderState* s, std::vector<
   vtkRenderState depthState(s->GetRenderer());
   depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(internals.LI.GetFramebuffer());
+  penumbra::ScopedActiveCamera shadowCamera(s->GetRenderer(), internals.Camera.Get());
   internals.DepthPass->Render(&depthState);
 }
 
@@ -1296,6 +1255,11 @@ bool vtkSoftShadowPass::SetShaderParameters(
   const bool apply = internals.ApplyShadows && GetReceivesShadows(prop) &&
     !prop->IsRenderingTranslucentPolygonalGeometry();
   program->SetUniformi("penumbraApply", apply ? 1 : 0);
+  // The window's renderers share programs, and VTK uploads a program's light uniforms only when
+  // the renderer's lights or camera are newer than its last upload, which may have been another
+  // renderer's (vtkOpenGLRenderer::UpdateLightingUniforms): with the user's camera unmodified,
+  // one viewport's receivers drew with the other's lights. Ask for the upload on every draw.
+  program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   program->SetUniformi("penumbraLI", internals.LI.GetLayers()->GetTextureUnit());
   // The LI buffer covers the viewport. A pass drawing into a framebuffer of its own (SSAO, depth
   // peeling, tone mapping) puts the viewport at that framebuffer's origin, not the window's:

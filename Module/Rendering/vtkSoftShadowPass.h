@@ -295,11 +295,13 @@ public:
   /**
    * Whether the pass draws its depth, shadow volumes and wedges with the camera's clipping range
    * narrowed to the depths of everything visible (every visible prop's bounds, UseBounds or
-   * not), restoring the camera's range before the scene is drawn. On by default: VTK's own
-   * range is expanded by half its length and its near plane clamped to 1/1000 of the far one,
-   * so that a 24-bit depth buffer's steps span far more than the scene, and the shadows' tests
-   * against the depth of each pixel (counting's point above all) lose precision with them
-   * (Documentation/wedges.md). The camera is modified twice a frame while on.
+   * not); the scene is drawn with the camera's own range. On by default: VTK's own range is
+   * expanded by half its length and its near plane clamped to 1/1000 of the far one, so that a
+   * 24-bit depth buffer's steps span far more than the scene, and the shadows' tests against
+   * the depth of each pixel (counting's point above all) lose precision with them
+   * (Documentation/wedges.md). The user's camera is not modified: the pass draws with a copy,
+   * made the renderer's active camera while VTK draws props into the shadows' depth (which
+   * modifies the renderer on those frames, as vtkShadowMapBakerPass's light cameras do).
    */
   vtkSetMacro(UseTightDepthRange, bool);
   vtkGetMacro(UseTightDepthRange, bool);

@@ -15,6 +15,7 @@
 #include "vtkCoordinate.h"
 #include "vtkCubeSource.h"
 #include "vtkDataObject.h"
+#include "vtkDepthSortPolyData.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -789,6 +790,61 @@ void TestReuseUnchangedShadows()
   scene.Render();
   Check(!scene.Render(), "ReuseUnchangedShadows off: shadows drawn every frame");
 }
+
+/// The tight depth range draws the shadows with a copy of the camera: the user's camera is not
+/// modified, so a pipeline that depends on it (vtkDepthSortPolyData) does not run again and a
+/// still scene reuses its shadows. The copy is made active only while VTK draws props into the
+/// shadows' depth (the ground, which casts nothing, is such a prop).
+void TestCameraLeftAlone()
+{
+  PassScene view;
+  vtkActor* ground = view.Ground();
+  vtkSoftShadowPass::SetCastsShadows(ground, false);
+  vtkNew<vtkDepthSortPolyData> sorted;
+  sorted->SetInputConnection(SphereSource(0, 1, 0, 0.6, 32, 16)->GetOutputPort());
+  view.Camera(3, 4, 7, 0, 0.5, 0);
+  vtkCamera* camera = view.Renderer->GetActiveCamera();
+  sorted->SetCamera(camera);
+  view.Add(sorted, 0.9, 0.3, 0.3);
+
+  int cameraModified = 0;
+  int activeCameraSwaps = 0;
+  const auto count = [](vtkObject*, unsigned long, void* counter, void*)
+  { ++*static_cast<int*>(counter); };
+  vtkNew<vtkCallbackCommand> countModified;
+  countModified->SetClientData(&cameraModified);
+  countModified->SetCallback(count);
+  camera->AddObserver(vtkCommand::ModifiedEvent, countModified);
+  vtkNew<vtkCallbackCommand> countSwaps;
+  countSwaps->SetClientData(&activeCameraSwaps);
+  countSwaps->SetCallback(count);
+  view.Renderer->AddObserver(vtkCommand::ActiveCameraEvent, countSwaps);
+
+  view.Window->Render(); // the first frame gives the props their keys, which modifies them
+  const int firstSwaps = activeCameraSwaps;
+  view.Window->Render();
+  const vtkMTimeType sortedTime = sorted->GetOutput()->GetMTime();
+  const vtkIdType reusedBefore = view.Pass->GetNumberOfReusedFrames();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    view.Window->Render();
+  }
+  const vtkIdType reused = view.Pass->GetNumberOfReusedFrames() - reusedBefore;
+  std::printf("     camera modified %d times, active camera swapped %d times (first frame %d), "
+              "%lld of 3 still frames reused\n",
+    cameraModified, activeCameraSwaps, firstSwaps, static_cast<long long>(reused));
+  Check(firstSwaps == 2, "the first frame draws the ground's depth with the shadows' camera");
+  Check(cameraModified == 0, "the shadows leave the user's camera unmodified");
+  Check(view.Renderer->GetActiveCamera() == camera, "the user's camera is active after a frame");
+  Check(sorted->GetOutput()->GetMTime() == sortedTime,
+    "a pipeline that depends on the camera does not run again in a still scene");
+  Check(reused == 3, "a still scene with a camera-dependent pipeline reuses its shadows");
+
+  camera->Azimuth(10);
+  cameraModified = 0;
+  view.Window->Render();
+  Check(cameraModified == 0, "a moved camera is not modified by the frame that follows");
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -803,6 +859,7 @@ int main(int argc, char* argv[])
     { "TwoWindows", TestTwoWindows },
     { "LightReachingScene", TestLightReachingScene },
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
+    { "CameraLeftAlone", TestCameraLeftAlone },
   };
   return RunFeatures(argc, argv, features);
 }

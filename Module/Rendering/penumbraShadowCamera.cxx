@@ -1,0 +1,62 @@
+#include "penumbraShadowCamera.h"
+
+#include "penumbraCulling.h"
+#include "penumbraMatrices.h"
+
+#include "vtkRenderer.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace penumbra
+{
+
+vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, bool tight)
+{
+  auto* active = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
+  this->Current = active;
+  if (!tight || !scene.Valid || active->GetParallelProjection())
+  {
+    return active;
+  }
+  const glm::dvec2 own = glm::make_vec2(active->GetClippingRange());
+  const glm::dvec2 range =
+    TightClippingRange(scene.Min, scene.Max, ToGlm(active->GetViewTransformMatrix()), own);
+  if (range == own)
+  {
+    return active;
+  }
+  if (active != this->CopiedFrom || active->GetMTime() != this->CopiedTime ||
+    range != this->CopiedRange)
+  {
+    this->Copy->DeepCopy(active);
+    this->Copy->SetClippingRange(range.x, range.y);
+    this->Copy->Modified(); // DeepCopy does not, and its key matrices are cached by time
+    this->CopiedFrom = active;
+    this->CopiedTime = active->GetMTime();
+    this->CopiedRange = range;
+  }
+  this->Current = this->Copy;
+  return this->Current;
+}
+
+ScopedActiveCamera::ScopedActiveCamera(vtkRenderer* renderer, vtkCamera* camera)
+  : Renderer(renderer)
+  , Saved(renderer->GetActiveCamera())
+{
+  if (this->Saved == camera)
+  {
+    this->Saved = nullptr;
+    return;
+  }
+  this->Renderer->SetActiveCamera(camera);
+}
+
+ScopedActiveCamera::~ScopedActiveCamera()
+{
+  if (this->Saved)
+  {
+    this->Renderer->SetActiveCamera(this->Saved);
+  }
+}
+
+} // namespace penumbra

@@ -1,0 +1,70 @@
+/**
+ * @file   penumbraShadowCamera.h
+ * @brief  The camera vtkSoftShadowPass draws its depth, volumes and wedges with.
+ *
+ * With the tight depth range, that is a copy of the renderer's active camera whose clipping
+ * range is narrowed to the depths of the visible props (penumbra::TightClippingRange); without
+ * it, or where narrowing changes nothing, the active camera itself. The user's camera is never
+ * modified: camera observers and pipelines that depend on the camera (vtkDepthSortPolyData,
+ * vtkDistanceToCamera) see nothing of the shadows, and a still scene stays still. The copy is
+ * refreshed, and modified, only when the active camera or the range changed.
+ *
+ * The props VTK draws into the shadows' depth read the renderer's active camera, so the copy is
+ * made the active camera while they draw (ScopedActiveCamera), as vtkShadowMapBakerPass does
+ * with its light cameras: that modifies the renderer, on frames whose depth VTK draws, and
+ * fires its ActiveCameraEvent.
+ */
+#ifndef penumbraShadowCamera_h
+#define penumbraShadowCamera_h
+
+#include "vtkNew.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkSmartPointer.h"
+
+#include "penumbraConvexClip.h"
+
+#include <glm/glm.hpp>
+
+class vtkRenderer;
+
+namespace penumbra
+{
+
+class ShadowCamera
+{
+public:
+  /// Follows `renderer`'s active camera; with `tight`, narrows its copy's range to `scene`.
+  vtkOpenGLCamera* Update(vtkRenderer* renderer, const Box& scene, bool tight);
+  /// The camera of the last Update.
+  vtkOpenGLCamera* Get() const { return this->Current; }
+  /// Whether the last Update chose the narrowed copy rather than the active camera.
+  bool Narrowed() const { return this->Current == this->Copy.GetPointer(); }
+
+private:
+  vtkNew<vtkOpenGLCamera> Copy;
+  vtkOpenGLCamera* Current = nullptr;
+  // What the copy was made from: refreshed only when one of them changed, so that pipelines
+  // reading the active camera during the depth pass do not run again on every drawn frame.
+  vtkCamera* CopiedFrom = nullptr;
+  vtkMTimeType CopiedTime = 0;
+  glm::dvec2 CopiedRange{ 0.0 };
+};
+
+/// Makes `camera` the renderer's active camera while it lives (VTK's props read the active
+/// camera), and the camera that was active again after; nothing when it already is.
+class ScopedActiveCamera
+{
+public:
+  ScopedActiveCamera(vtkRenderer* renderer, vtkCamera* camera);
+  ~ScopedActiveCamera();
+  ScopedActiveCamera(const ScopedActiveCamera&) = delete;
+  ScopedActiveCamera& operator=(const ScopedActiveCamera&) = delete;
+
+private:
+  vtkRenderer* Renderer;
+  vtkSmartPointer<vtkCamera> Saved;
+};
+
+} // namespace penumbra
+
+#endif
