@@ -36,6 +36,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProp3D.h"
+#include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -204,6 +206,11 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
     return { cube->GetAssembly() }; // VTK draws the assembly at its own matrix, not the cube's
   }
   return { prop };
+}
+
+bool OutsideTheShadows(vtkProp* prop)
+{
+  return !vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop);
 }
 
 namespace

@@ -75,6 +75,13 @@ struct DrawnSurface
 /// casters after its depth pass, in which VTK places them for the frame.
 std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
 
+/// Whether `prop` lies outside everything the shadows depend on: a prop that is neither a 3D prop
+/// nor a prop assembly (a 2D actor, a widget's representation, a caption's 3D leader) draws
+/// through actors of its own that the pass never sees, so it casts nothing and VTK draws it
+/// unshadowed. The pass leaves it out of its depth, its scene box and its record of the scene:
+/// its pixels show it, not the LI buffer, and moving it changes no shadow.
+bool OutsideTheShadows(vtkProp* prop);
+
 /// How far (world units) what VTK draws for `prop` may reach beyond prop->GetBounds(): VTK's
 /// imposter mappers (vtkOpenGLSphereMapper, vtkOpenGLStickMapper), alone or as parts of an
 /// assembly, report the bounds of their centres only, without the spheres' radii or the sticks'

@@ -1,12 +1,12 @@
 #include "penumbraShadowInputs.h"
 
+#include "penumbraSceneWalk.h"
+
 #include "vtkActor.h"
-#include "vtkActor2D.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
-#include "vtkCaptionActor2D.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
@@ -23,7 +23,6 @@
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkProp3D.h"
-#include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -53,23 +52,6 @@ vtkAbstractMapper* MapperOf(vtkProp* leaf)
     return slice->GetMapper();
   }
   return nullptr;
-}
-
-/// Props VTK draws over the scene and never into its depth: 2D actors, and the widget
-/// representations made of them (scalar bar, text, logo and 2D slider widgets; by name, as this
-/// module does not link the widgets). A caption's 3D leader is drawn into the depth.
-bool DrawnOverTheScene(vtkProp* prop)
-{
-  if (auto caption = vtkCaptionActor2D::SafeDownCast(prop))
-  {
-    return !(caption->GetLeader() && caption->GetThreeDimensionalLeader());
-  }
-  if (vtkActor2D::SafeDownCast(prop))
-  {
-    return true;
-  }
-  return (prop->IsA("vtkBorderRepresentation") && !prop->IsA("vtkCaptionRepresentation")) ||
-    prop->IsA("vtkSliderRepresentation2D");
 }
 
 void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
@@ -139,7 +121,7 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    if (DrawnOverTheScene(prop))
+    if (OutsideTheShadows(prop))
     {
       continue;
     }
@@ -148,10 +130,6 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
     if (!prop->GetVisibility())
     {
       continue;
-    }
-    if (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop))
-    {
-      return false; // a 3D widget's representation, for one: its geometry is its own business
     }
     // The scene walk reads an assembly's keys on the assembly, not on its parts.
     AddShadowKeys(*this, prop);

@@ -45,9 +45,9 @@ public:
   void AddTime(vtkMTimeType time);
   /// vtkMapper's static coincident-topology settings.
   void AddCoincidentTopologySettings();
-  /// Adds every prop of `renderer`'s that can draw depth or cast, with its matrices, mapper and
-  /// input data (brought up to date). False when one of them can change without any of that
-  /// changing: the frame must then be drawn.
+  /// Adds every prop of `renderer`'s that can draw depth or cast (not those OutsideTheShadows),
+  /// with its matrices, mapper and input data (brought up to date). False when one of them can
+  /// change without any of that changing: the frame must then be drawn.
   bool AddProps(vtkRenderer* renderer);
 
   /// Whether the inputs recorded since Begin equal those of the last frame passed to Keep.

@@ -697,9 +697,11 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
     // translucent fragments unshadowed: they lie over the LI buffer of what is behind them.
     // Not volumes: vtkVolume keeps vtkProp's HasOpaqueGeometry (true), but VTK's volume
     // shaders have no light loop to scale, and volumes are drawn as VTK draws them.
-    // A vtkAxesActor does not hand its keys to its parts: the keys go on what it draws.
+    // A vtkAxesActor does not hand its keys to its parts: the keys go on what it draws. Props
+    // outside the shadows (widgets) draw through actors that never see the keys.
     vtkProp* prop = s->GetPropArray()[i];
-    if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop))
+    if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop) &&
+      !penumbra::OutsideTheShadows(prop))
     {
       for (vtkProp* drawn : penumbra::PropsDrawnFor(prop))
       {
@@ -774,8 +776,10 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
   vtkProp* prop;
   for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
   {
-    // 2D props and empty ones add nothing in depth; one of unknown extent, no box at all.
-    if (prop->GetVisibility() && ExtendByProp(this->SceneBox, prop) == PropExtent::Unknown)
+    // 2D props, widgets and empty props add nothing in depth; one of unknown extent, no box at
+    // all.
+    if (prop->GetVisibility() && !penumbra::OutsideTheShadows(prop) &&
+      ExtendByProp(this->SceneBox, prop) == PropExtent::Unknown)
     {
       this->SceneBox = penumbra::Box();
       return;
@@ -868,6 +872,10 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
+    if (penumbra::OutsideTheShadows(prop))
+    {
+      continue;
+    }
     const bool fromMesh = this->DepthFromCasterMeshes && GetCastsShadows(prop) &&
       penumbra::CasterDepth::DrawnAsItsTriangles(prop);
     (fromMesh ? internals.DepthFromMeshes : drawnByVTK).push_back(prop);

@@ -41,6 +41,7 @@
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSequencePass.h"
+#include "vtkSphereRepresentation.h"
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTexture.h"
@@ -553,6 +554,7 @@ public:
   vtkNew<vtkTransform> UserTransform;
   vtkNew<vtkTextActor> Text;
   vtkNew<vtkScalarBarRepresentation> ScalarBar; // what vtkScalarBarWidget adds to the renderer
+  vtkNew<vtkSphereRepresentation> SphereWidget; // and vtkSphereWidget2, over the red sphere
   vtkNew<vtkPolyData> BlockBox;
   vtkNew<vtkTexture> PartTexture;
   vtkNew<vtkAssembly> Assembly;
@@ -603,6 +605,10 @@ public:
     this->ScalarBar->GetScalarBarActor()->SetLookupTable(colours);
     this->ScalarBar->GetScalarBarActor()->SetTitle("frame 0");
     this->View.Renderer->AddViewProp(this->ScalarBar);
+    double widgetBounds[6] = { -0.7, 0.7, 0.3, 1.7, -0.7, 0.7 };
+    this->SphereWidget->SetRenderer(this->View.Renderer);
+    this->SphereWidget->PlaceWidget(widgetBounds);
+    this->View.Renderer->AddViewProp(this->SphereWidget);
     vtkSoftShadowPass::SetLightRadius(this->View.Light, 0.3);
     this->View.Pass->SetLightSamples(16);
     this->View.Camera(3, 4, 7, 0, 0.5, 0);
@@ -686,6 +692,8 @@ void TestReuseUnchangedShadows()
         scene.ScalarBar->GetScalarBarActor()->SetTitle("frame 1");
         scene.ScalarBar->SetPosition(0.1, 0.2);
       } },
+    { "a 3D widget moved (it neither casts nor receives)", true,
+      [&] { scene.SphereWidget->SetCenter(0.2, 1.1, 0.1); } },
     { "a pick between frames (selection render)", true,
       [&]
       {
