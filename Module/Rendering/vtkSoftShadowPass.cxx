@@ -609,13 +609,26 @@ void vtkSoftShadowPass::RenderDelegate(const vtkRenderState* s)
 void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
 {
   vtkInternals& internals = *this->Internals;
-  // Soft lights' samples face the visible scene's centre (or, with nothing visible, the
-  // light's focal point).
-  double bounds[6];
-  renderer->ComputeVisiblePropBounds(bounds);
-  const bool haveBounds = vtkMath::AreBoundsInitialized(bounds);
-  const glm::dvec3 sceneCentre =
-    glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
+  // Soft lights' samples face the centre of the visible props' bounds, as VTK's camera reset
+  // takes them (UseBounds), or, with nothing visible, the light's focal point. Props outside
+  // the shadows (widgets) are left out, so that dragging one does not turn the samples.
+  penumbra::Box visible;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator propIt;
+  for (props->InitTraversal(propIt); vtkProp* prop = props->GetNextProp(propIt);)
+  {
+    const double* bounds =
+      prop->GetVisibility() && prop->GetUseBounds() && !penumbra::OutsideTheShadows(prop)
+      ? prop->GetBounds()
+      : nullptr;
+    if (bounds && vtkMath::AreBoundsInitialized(bounds))
+    {
+      visible.Extend(
+        glm::dvec3(bounds[0], bounds[2], bounds[4]), glm::dvec3(bounds[1], bounds[3], bounds[5]));
+    }
+  }
+  const bool haveBounds = visible.Valid;
+  const glm::dvec3 sceneCentre = (visible.Min + visible.Max) * 0.5;
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   vtkLight* light;

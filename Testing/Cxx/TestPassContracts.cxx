@@ -692,8 +692,8 @@ void TestReuseUnchangedShadows()
         scene.ScalarBar->GetScalarBarActor()->SetTitle("frame 1");
         scene.ScalarBar->SetPosition(0.1, 0.2);
       } },
-    { "a 3D widget moved (it neither casts nor receives)", true,
-      [&] { scene.SphereWidget->SetCenter(0.2, 1.1, 0.1); } },
+    { "a 3D widget moved past the ground (it neither casts nor receives)", true,
+      [&] { scene.SphereWidget->SetCenter(5.5, 1.1, 0.1); } },
     { "a pick between frames (selection render)", true,
       [&]
       {
