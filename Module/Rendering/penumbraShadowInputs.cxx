@@ -133,16 +133,30 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
     }
     // The scene walk reads an assembly's keys on the assembly, not on its parts.
     AddShadowKeys(*this, prop);
-    prop->InitPathTraversal();
-    while (vtkAssemblyPath* path = prop->GetNextPath())
+    // What VTK draws, as the scene walk takes it: a vtkAnnotatedCubeActor's time is its
+    // assembly's, which moves every frame as VTK places the parts.
+    for (vtkProp* drawn : PropsDrawnFor(prop))
     {
-      vtkAssemblyNode* node = path->GetLastNode();
-      vtkMatrix4x4* matrix = node->GetMatrix();
-      if (!this->AddLeaf(node->GetViewProp(), matrix ? matrix->GetData() : nullptr,
-            path->GetNumberOfItems() > 1))
+      if (!this->AddPaths(drawn))
       {
         return false;
       }
+    }
+  }
+  return true;
+}
+
+bool ShadowInputs::AddPaths(vtkProp* prop)
+{
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkAssemblyNode* node = path->GetLastNode();
+    vtkMatrix4x4* matrix = node->GetMatrix();
+    if (!this->AddLeaf(
+          node->GetViewProp(), matrix ? matrix->GetData() : nullptr, path->GetNumberOfItems() > 1))
+    {
+      return false;
     }
   }
   return true;

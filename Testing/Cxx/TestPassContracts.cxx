@@ -6,6 +6,7 @@
 #include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkAxesActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
@@ -555,6 +556,7 @@ public:
   vtkNew<vtkTextActor> Text;
   vtkNew<vtkScalarBarRepresentation> ScalarBar; // what vtkScalarBarWidget adds to the renderer
   vtkNew<vtkSphereRepresentation> SphereWidget; // and vtkSphereWidget2, over the red sphere
+  vtkNew<vtkAxesActor> Axes;                    // draws through shaft and tip actors of its own
   vtkNew<vtkPolyData> BlockBox;
   vtkNew<vtkTexture> PartTexture;
   vtkNew<vtkAssembly> Assembly;
@@ -609,6 +611,12 @@ public:
     this->SphereWidget->SetRenderer(this->View.Renderer);
     this->SphereWidget->PlaceWidget(widgetBounds);
     this->View.Renderer->AddViewProp(this->SphereWidget);
+    this->Axes->SetShaftTypeToCylinder();
+    this->Axes->SetCylinderRadius(0.08);
+    this->Axes->SetTotalLength(0.9, 0.9, 0.9);
+    this->Axes->SetPosition(0.6, 0.1, 1.4);
+    this->Axes->AxisLabelsOff();
+    this->View.Renderer->AddActor(this->Axes);
     vtkSoftShadowPass::SetLightRadius(this->View.Light, 0.3);
     this->View.Pass->SetLightSamples(16);
     this->View.Camera(3, 4, 7, 0, 0.5, 0);
@@ -682,6 +690,7 @@ void TestReuseUnchangedShadows()
     const char* What;
     bool Reuses;
     std::function<void()> Apply;
+    bool ComparedWithAFreshPass = true;
   };
   const std::vector<Change> changes = {
     { "nothing", true, [] {} },
@@ -736,6 +745,12 @@ void TestReuseUnchangedShadows()
       [&] {
         vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
       } },
+    // VTK draws a translucent shaft differently from frame to frame (40 pixels alternate with
+    // no pass at all): its frame is not compared; the next change's is.
+    { "an axes actor's shaft made translucent (a part's property)", false,
+      [&] { scene.Axes->GetYAxisShaftProperty()->SetOpacity(0.3); }, false },
+    { "the shaft opaque again", false,
+      [&] { scene.Axes->GetYAxisShaftProperty()->SetOpacity(1.0); } },
     { "an actor's opacity", false, [&] { scene.Box->GetProperty()->SetOpacity(0.5); } },
     { "an actor hidden", false, [&] { scene.Box->VisibilityOff(); } },
     { "an actor removed", false, [&] { renderer->RemoveActor(scene.Box); } },
@@ -749,13 +764,16 @@ void TestReuseUnchangedShadows()
     const bool settled = scene.Render();
     change.Apply();
     const bool reused = scene.Render();
-    const int off = scene.PixelsOffFresh();
-    std::printf("     %s: %s, %d px off a fresh pass's frame\n", change.What,
-      reused ? "reused" : "drawn", off);
+    const int off = change.ComparedWithAFreshPass ? scene.PixelsOffFresh() : -1;
+    std::printf("     %s: %s, %s\n", change.What, reused ? "reused" : "drawn",
+      off < 0 ? "not compared" : (std::to_string(off) + " px off a fresh pass's frame").c_str());
     Check(settled, "an unchanged frame reuses the shadows before: " + std::string(change.What));
     Check(reused == change.Reuses,
       std::string(change.What) + (change.Reuses ? ": shadows reused" : ": shadows drawn"));
-    Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
+    if (change.ComparedWithAFreshPass)
+    {
+      Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
+    }
   }
 
   // Two lights: moving one draws its shadows alone, against the depth kept from the last frame.
