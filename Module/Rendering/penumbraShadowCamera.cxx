@@ -25,15 +25,16 @@ vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, b
   {
     return active;
   }
-  if (active != this->CopiedFrom || active->GetMTime() != this->CopiedTime ||
-    range != this->CopiedRange)
+  // Copied every frame and compared by value: vtkCamera::DeepCopy into the user's camera
+  // changes its view without changing its time.
+  this->Copy->DeepCopy(active);
+  this->Copy->SetClippingRange(range.x, range.y);
+  const glm::dmat4 worldToClip = ToGlm(
+    this->Copy->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+  if (worldToClip != this->CopiedWorldToClip)
   {
-    this->Copy->DeepCopy(active);
-    this->Copy->SetClippingRange(range.x, range.y);
     this->Copy->Modified(); // DeepCopy does not, and its key matrices are cached by time
-    this->CopiedFrom = active;
-    this->CopiedTime = active->GetMTime();
-    this->CopiedRange = range;
+    this->CopiedWorldToClip = worldToClip;
   }
   this->Current = this->Copy;
   return this->Current;

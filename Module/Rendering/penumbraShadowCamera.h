@@ -7,7 +7,7 @@
  * it, or where narrowing changes nothing, the active camera itself. The user's camera is never
  * modified: camera observers and pipelines that depend on the camera (vtkDepthSortPolyData,
  * vtkDistanceToCamera) see nothing of the shadows, and a still scene stays still. The copy is
- * refreshed, and modified, only when the active camera or the range changed.
+ * modified only when its view or projection changed.
  *
  * The props VTK draws into the shadows' depth read the renderer's active camera, so the copy is
  * made the active camera while they draw (ScopedActiveCamera), as vtkShadowMapBakerPass does
@@ -43,11 +43,10 @@ public:
 private:
   vtkNew<vtkOpenGLCamera> Copy;
   vtkOpenGLCamera* Current = nullptr;
-  // What the copy was made from: refreshed only when one of them changed, so that pipelines
-  // reading the active camera during the depth pass do not run again on every drawn frame.
-  vtkCamera* CopiedFrom = nullptr;
-  vtkMTimeType CopiedTime = 0;
-  glm::dvec2 CopiedRange{ 0.0 };
+  // The copy's last world-to-clip matrix: it is modified only when that changed, so that
+  // pipelines reading the active camera during the depth pass do not run again on every drawn
+  // frame.
+  glm::dmat4 CopiedWorldToClip{ 0.0 };
 };
 
 /// Makes `camera` the renderer's active camera while it lives (VTK's props read the active

@@ -711,6 +711,12 @@ void TestReuseUnchangedShadows()
       } },
     { "the camera deep-copied, not modified", false,
       [&] { renderer->GetActiveCamera()->DeepCopy(elsewhere); } },
+    { "the camera rolled through DeepCopy (its time and depth range unchanged)", false,
+      [&]
+      {
+        elsewhere->Roll(15);
+        renderer->GetActiveCamera()->DeepCopy(elsewhere);
+      } },
     { "the light moved", false, [&] { scene.View.Light->SetPosition(-1.5, 6, 2.5); } },
     { "the light's radius", false,
       [&] { vtkSoftShadowPass::SetLightRadius(scene.View.Light, 0.6); } },
