@@ -133,11 +133,18 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
     }
     // The scene walk reads an assembly's keys on the assembly, not on its parts.
     AddShadowKeys(*this, prop);
-    // What VTK draws, as the scene walk takes it: a vtkAnnotatedCubeActor's time is its
-    // assembly's, which moves every frame as VTK places the parts.
-    for (vtkProp* drawn : PropsDrawnFor(prop))
+    // What VTK draws for it, as the scene walk takes it: a vtkAxesActor's shafts, whose
+    // properties the axes' time does not follow. Such a prop places its parts only as VTK
+    // draws them, after this record: its own time and matrix go in too.
+    const std::vector<vtkProp*> drawn = PropsDrawnFor(prop);
+    if (drawn.size() != 1 || drawn.front() != prop)
     {
-      if (!this->AddPaths(drawn))
+      this->AddTime(prop->GetMTime());
+      this->Add(glm::make_mat4(static_cast<vtkProp3D*>(prop)->GetMatrix()->GetData()));
+    }
+    for (vtkProp* part : drawn)
+    {
+      if (!this->AddPaths(part))
       {
         return false;
       }

@@ -615,8 +615,7 @@ public:
     this->Axes->SetCylinderRadius(0.08);
     this->Axes->SetTotalLength(0.9, 0.9, 0.9);
     this->Axes->SetPosition(0.6, 0.1, 1.4);
-    this->Axes->AxisLabelsOff();
-    this->View.Renderer->AddActor(this->Axes);
+    this->Axes->AxisLabelsOff(); // added to the renderer by the test, after the changes
     vtkSoftShadowPass::SetLightRadius(this->View.Light, 0.3);
     this->View.Pass->SetLightSamples(16);
     this->View.Camera(3, 4, 7, 0, 0.5, 0);
@@ -690,7 +689,6 @@ void TestReuseUnchangedShadows()
     const char* What;
     bool Reuses;
     std::function<void()> Apply;
-    bool ComparedWithAFreshPass = true;
   };
   const std::vector<Change> changes = {
     { "nothing", true, [] {} },
@@ -751,12 +749,6 @@ void TestReuseUnchangedShadows()
       [&] {
         vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
       } },
-    // VTK draws a translucent shaft differently from frame to frame (40 pixels alternate with
-    // no pass at all): its frame is not compared; the next change's is.
-    { "an axes actor's shaft made translucent (a part's property)", false,
-      [&] { scene.Axes->GetYAxisShaftProperty()->SetOpacity(0.3); }, false },
-    { "the shaft opaque again", false,
-      [&] { scene.Axes->GetYAxisShaftProperty()->SetOpacity(1.0); } },
     { "an actor's opacity", false, [&] { scene.Box->GetProperty()->SetOpacity(0.5); } },
     { "an actor hidden", false, [&] { scene.Box->VisibilityOff(); } },
     { "an actor removed", false, [&] { renderer->RemoveActor(scene.Box); } },
@@ -770,17 +762,34 @@ void TestReuseUnchangedShadows()
     const bool settled = scene.Render();
     change.Apply();
     const bool reused = scene.Render();
-    const int off = change.ComparedWithAFreshPass ? scene.PixelsOffFresh() : -1;
-    std::printf("     %s: %s, %s\n", change.What, reused ? "reused" : "drawn",
-      off < 0 ? "not compared" : (std::to_string(off) + " px off a fresh pass's frame").c_str());
+    const int off = scene.PixelsOffFresh();
+    std::printf("     %s: %s, %d px off a fresh pass's frame\n", change.What,
+      reused ? "reused" : "drawn", off);
     Check(settled, "an unchanged frame reuses the shadows before: " + std::string(change.What));
     Check(reused == change.Reuses,
       std::string(change.What) + (change.Reuses ? ": shadows reused" : ": shadows drawn"));
-    if (change.ComparedWithAFreshPass)
-    {
-      Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
-    }
+    Check(off == 0, std::string(change.What) + ": the frame equals a fresh pass's");
   }
+
+  // A vtkAxesActor draws through shaft and tip actors of its own: a part's property, and the
+  // axes' own settings (which its parts follow only as VTK draws them), draw the shadows again.
+  // The translucent frame is not compared with a fresh pass: VTK draws a translucent shaft
+  // differently from frame to frame (40 pixels alternate with no pass at all). VTK modifies the
+  // axes once on the first frame with translucent props in view, so the frames before each
+  // change are not checked here.
+  renderer->AddActor(scene.Axes);
+  scene.Render();
+  scene.Render();
+  scene.Axes->GetYAxisShaftProperty()->SetOpacity(0.3);
+  Check(!scene.Render(), "an axes shaft made translucent (a part's property): shadows drawn");
+  scene.Render();
+  scene.Axes->GetYAxisShaftProperty()->SetOpacity(1.0);
+  Check(!scene.Render() && scene.PixelsOffFresh() == 0,
+    "the shaft opaque again: shadows drawn, the frame a fresh pass's");
+  scene.Render();
+  scene.Axes->SetPosition(0.9, 0.1, 1.2);
+  Check(!scene.Render() && scene.PixelsOffFresh() == 0,
+    "the axes moved: shadows drawn, the frame a fresh pass's");
 
   // Two lights: moving one draws its shadows alone, against the depth kept from the last frame.
   vtkLight* second = scene.View.PointLight(2.5, 5, -1, 0.2);
