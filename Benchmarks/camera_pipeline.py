@@ -12,7 +12,6 @@ is, and the pass with the camera modified before every frame, which is what the 
 such a scene before 2026-12-05 (its tight depth range set and restored the camera's clipping
 range every frame: the sort ran again and the shadows were drawn every frame).
 """
-import argparse
 import statistics
 import time
 
@@ -20,14 +19,11 @@ from vtkmodules.vtkFiltersHybrid import vtkDepthSortPolyData
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 import penumbra
-from time_varying import make_actor, make_scene
+from time_varying import make_actor, make_scene, scene_arguments
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--extent", type=int, default=60, help="the wavelet's half extent")
-    parser.add_argument("--frames", type=int, default=5, help="timed frames per block")
-    args = parser.parse_args()
+    args = scene_arguments(60, 5, "timed frames per block")
     e = args.extent
     contour, renderer, window, _ = make_scene(e)
     contour.Update()

@@ -12,20 +12,16 @@ Three renderings: VTK without the pass, the pass with ReuseUnchangedShadows (the
 the pass without, in blocks of F timed frames in the order A B C C B A, so that a drift of this
 machine's load falls on all three alike; the light moves before every frame.
 """
-import argparse
 import math
 import statistics
 import time
 
 import penumbra
-from time_varying import make_scene
+from time_varying import make_scene, scene_arguments
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--extent", type=int, default=120, help="the wavelet's half extent")
-    parser.add_argument("--frames", type=int, default=5, help="timed frames per block")
-    args = parser.parse_args()
+    args = scene_arguments(120, 5, "timed frames per block")
     e = args.extent
     contour, renderer, window, moving = make_scene(e)
     contour.Update()

@@ -34,6 +34,14 @@ def make_actor(algorithm):
     return actor
 
 
+def scene_arguments(extent, frames, frames_help="timed frames"):
+    """The command line of the scripts built on make_scene: --extent and --frames."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--extent", type=int, default=extent, help="the wavelet's half extent")
+    parser.add_argument("--frames", type=int, default=frames, help=frames_help)
+    return parser.parse_args()
+
+
 def make_scene(e):
     """The wavelet's isosurface (half extent `e`, open where the extent clips it) over a ground,
     one shadowing light, a 1024x768 off-screen window: (contour, renderer, window, light)."""
@@ -64,10 +72,7 @@ def make_scene(e):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--extent", type=int, default=60, help="the wavelet's half extent")
-    parser.add_argument("--frames", type=int, default=8)
-    args = parser.parse_args()
+    args = scene_arguments(60, 8)
     contour, renderer, window, _ = make_scene(args.extent)
 
     contour.Update()
