@@ -15,6 +15,7 @@
 #include "penumbraStageTimes.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkImageData.h"
@@ -31,7 +32,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
-#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
