@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cstring>
+
 namespace penumbra
 {
 
@@ -24,6 +26,12 @@ vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, b
   if (range == own)
   {
     return active;
+  }
+  // Of the active camera's own class: a subclass may compute its matrices its own way.
+  if (!this->Copy || std::strcmp(this->Copy->GetClassName(), active->GetClassName()) != 0)
+  {
+    this->Copy.TakeReference(active->NewInstance());
+    this->CopiedWorldToClip = glm::dmat4(0.0);
   }
   // Copied every frame and compared by value: vtkCamera::DeepCopy into the user's camera
   // changes its view without changing its time.

@@ -17,7 +17,6 @@
 #ifndef penumbraShadowCamera_h
 #define penumbraShadowCamera_h
 
-#include "vtkNew.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkSmartPointer.h"
 
@@ -37,11 +36,9 @@ public:
   vtkOpenGLCamera* Update(vtkRenderer* renderer, const Box& scene, bool tight);
   /// The camera of the last Update.
   vtkOpenGLCamera* Get() const { return this->Current; }
-  /// Whether the last Update chose the narrowed copy rather than the active camera.
-  bool Narrowed() const { return this->Current == this->Copy.GetPointer(); }
 
 private:
-  vtkNew<vtkOpenGLCamera> Copy;
+  vtkSmartPointer<vtkOpenGLCamera> Copy;
   vtkOpenGLCamera* Current = nullptr;
   // The copy's last world-to-clip matrix: it is modified only when that changed, so that
   // pipelines reading the active camera during the depth pass do not run again on every drawn
