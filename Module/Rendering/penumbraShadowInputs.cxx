@@ -135,12 +135,11 @@ bool ShadowInputs::AddProps(vtkRenderer* renderer)
     AddShadowKeys(*this, prop);
     // What VTK draws for it, as the scene walk takes it: a vtkAxesActor's shafts, whose
     // properties the axes' time does not follow. Such a prop places its parts only as VTK
-    // draws them, after this record: its own time and matrix go in too.
+    // draws them, after this record: it goes in as a leaf of its own too (time and matrix).
     const std::vector<vtkProp*> drawn = PropsDrawnFor(prop);
-    if (drawn.size() != 1 || drawn.front() != prop)
+    if ((drawn.size() != 1 || drawn.front() != prop) && !this->AddLeaf(prop, nullptr, false))
     {
-      this->AddTime(prop->GetMTime());
-      this->Add(glm::make_mat4(static_cast<vtkProp3D*>(prop)->GetMatrix()->GetData()));
+      return false;
     }
     for (vtkProp* part : drawn)
     {

@@ -58,9 +58,9 @@ public:
   void Forget();
 
 private:
-  /// `part`: the leaf of an assembly's path, drawn with the path's matrix.
   /// Adds the leaf of each of `prop`'s assembly paths; false as AddProps.
   bool AddPaths(vtkProp* prop);
+  /// `part`: the leaf of an assembly's path, drawn with the path's matrix.
   bool AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part);
   std::vector<std::uint64_t> Current;
   std::vector<std::uint64_t> Kept;
