@@ -43,6 +43,30 @@ std::size_t ChunkCount(std::size_t count)
   return std::max<std::size_t>(1, std::min<std::size_t>(64, count / 16384));
 }
 
+/// The storage to allocate for `count` elements where `capacity` is too small: a first
+/// allocation fits (static data keeps its mesh for good), a rebuild that outgrows its storage
+/// gets a quarter more. Data played back grows by a few triangles now and then, and an exact
+/// fit would move every array of the build to fresh pages each time, which on this kind of data
+/// costs more than the build (PenumbraGeometryBench's "grown" column).
+std::size_t GrownCapacity(std::size_t capacity, std::size_t count)
+{
+  return capacity > 0 ? count + count / 4 : count;
+}
+
+/// Resizes `values` to `count` elements, growing its storage by GrownCapacity. What it held is
+/// not kept where the storage grows: every build overwrites what it uses.
+template <typename T>
+void ResizeWithHeadroom(std::vector<T>& values, std::size_t count)
+{
+  if (count > values.capacity())
+  {
+    const std::size_t capacity = GrownCapacity(values.capacity(), count);
+    values.clear();
+    values.reserve(capacity);
+  }
+  values.resize(count);
+}
+
 template <typename Body>
 void ForEachChunk(std::size_t count, const Body& body)
 {
@@ -300,7 +324,7 @@ void AddTriangles(const Triangles& triangles, const std::vector<std::uint32_t>& 
     report.NonFiniteTriangles += counts[c][static_cast<int>(TriangleFate::NonFinite)];
     report.DegenerateTriangles += counts[c][static_cast<int>(TriangleFate::Degenerate)];
   }
-  topo.Triangles.resize(offsets[chunks]);
+  ResizeWithHeadroom(topo.Triangles, offsets[chunks]);
   ForEachChunk(triangles.size(),
     [&](std::size_t chunk, std::size_t begin, std::size_t end)
     {
@@ -500,8 +524,8 @@ EdgeKind ClassifyEdge(const EdgeUse* uses, std::uint32_t count)
   return EdgeKind::NonManifold;
 }
 
-/// Values that every build overwrites: grows, never shrinks, never initialized (a vector's
-/// resize would write each element once more before the build does).
+/// Values that every build overwrites: grows (by GrownCapacity), never shrinks, never
+/// initialized (a vector's resize would write each element once more before the build does).
 template <typename T>
 class ScratchArray
 {
@@ -510,8 +534,9 @@ public:
   {
     if (count > this->Capacity)
     {
-      this->Values.reset(new T[count]);
-      this->Capacity = count;
+      this->Capacity = GrownCapacity(this->Capacity, count);
+      this->Values.reset(); // freed first: its values are not kept
+      this->Values.reset(new T[this->Capacity]);
     }
     return this->Values.get();
   }
@@ -574,7 +599,7 @@ void GroupHalfEdges(TopologyScratch& scratch, CasterTopology& topo)
       }
     });
   std::vector<std::uint32_t>& start = scratch.GroupStart;
-  start.resize(pointCount + 1);
+  ResizeWithHeadroom(start, pointCount + 1);
   start[0] = 0;
   for (std::size_t a = 0; a < pointCount; ++a)
   {
@@ -587,7 +612,7 @@ void GroupHalfEdges(TopologyScratch& scratch, CasterTopology& topo)
     }
     start[a + 1] = next;
   }
-  topo.Uses.resize(3 * triangleCount);
+  ResizeWithHeadroom(topo.Uses, 3 * triangleCount);
   vtkSMPTools::For(0, static_cast<vtkIdType>(parts), 1,
     [&](vtkIdType first, vtkIdType last)
     {
@@ -645,7 +670,7 @@ void BuildEdges(TopologyScratch& scratch, CasterTopology& topo)
   edgeStart[0] = 0;
   std::partial_sum(edgeStart, edgeStart + pointCount + 1, edgeStart);
 
-  topo.Edges.resize(edgeStart[pointCount]);
+  ResizeWithHeadroom(topo.Edges, edgeStart[pointCount]);
   std::atomic<std::size_t> boundary{ 0 }, inconsistent{ 0 }, nonManifold{ 0 };
   vtkSMPTools::For(0, pointCount,
     [&](vtkIdType begin, vtkIdType end)
@@ -770,9 +795,9 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
   // (coincident points that split a surface): those alone are welded, and the triangles and
   // edges built again if any merged. Data whose points are already shared (contour output, any
   // closed mesh) pays for no welding at all; a triangle soup welds every point, as before.
-  topo.Points.resize(points.size());
+  ResizeWithHeadroom(topo.Points, points.size());
   std::vector<std::uint32_t>& map = scratch.PointMap;
-  map.resize(points.size());
+  ResizeWithHeadroom(map, points.size());
   const glm::dvec3 origin = topo.Origin;
   ForEachChunk(points.size(),
     [&](std::size_t, std::size_t begin, std::size_t end)
