@@ -439,16 +439,24 @@ void KeepRepresentatives(CasterTopology& topo, const std::vector<std::uint32_t>&
   }
 }
 
+/// Resets `topo`'s origin, bounds and report. Its arrays keep their size and storage: each
+/// step of a build resizes the array it writes, which initializes only the elements beyond the
+/// last build's (emptied first, every element would be written twice: a tenth of a rebuild).
+void ResetSummary(CasterTopology& topo)
+{
+  topo.Origin = topo.BoundsMin = topo.BoundsMax = glm::dvec3(0.0);
+  topo.ClosedAndOriented = false;
+  topo.Report = TopologyReport();
+}
+
 /// Empties `topo` but keeps the capacity of its arrays.
 void ClearKeepingStorage(CasterTopology& topo)
 {
-  topo.Origin = topo.BoundsMin = topo.BoundsMax = glm::dvec3(0.0);
+  ResetSummary(topo);
   topo.Points.clear();
   topo.Triangles.clear();
   topo.Edges.clear();
   topo.Uses.clear();
-  topo.ClosedAndOriented = false;
-  topo.Report = TopologyReport();
 }
 
 // While the edges are built, each use's slot holds its half-edge as one 64-bit key: the other
@@ -766,7 +774,7 @@ template <typename Points, typename Triangles>
 void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangles& triangles,
   double relativeWeldTolerance, TopologyReport report, CasterTopology& topo)
 {
-  ClearKeepingStorage(topo);
+  ResetSummary(topo);
   report.InputPoints = points.size();
   // Cells the vtkPolyData path dropped for bad ids were counted there.
   report.InputTriangles = triangles.size() + report.InvalidIndexTriangles;
@@ -783,6 +791,7 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
       const bool inRange = tri.x < points.size() && tri.y < points.size() && tri.z < points.size();
       ++(inRange ? report.NonFiniteTriangles : report.InvalidIndexTriangles);
     }
+    ClearKeepingStorage(topo);
     topo.Report = report;
     return;
   }
