@@ -1,4 +1,5 @@
 #include "penumbraCasterTopology.h"
+#include "penumbraLargeArrays.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -53,16 +54,15 @@ std::size_t GrownCapacity(std::size_t capacity, std::size_t count)
   return capacity > 0 ? count + count / 4 : count;
 }
 
-/// Resizes `values` to `count` elements, growing its storage by GrownCapacity. What it held is
-/// not kept where the storage grows: every build overwrites what it uses.
+/// Resizes `values` to `count` elements, growing its storage by GrownCapacity, on huge pages
+/// where it is large (ReserveLarge). What it held is not kept where the storage grows: every
+/// build overwrites what it uses.
 template <typename T>
 void ResizeWithHeadroom(std::vector<T>& values, std::size_t count)
 {
   if (count > values.capacity())
   {
-    const std::size_t capacity = GrownCapacity(values.capacity(), count);
-    values.clear();
-    values.reserve(capacity);
+    ReserveLarge(values, GrownCapacity(values.capacity(), count));
   }
   values.resize(count);
 }
@@ -545,6 +545,7 @@ public:
       this->Capacity = GrownCapacity(this->Capacity, count);
       this->Values.reset(); // freed first: its values are not kept
       this->Values.reset(new T[this->Capacity]);
+      AdviseHugePages(this->Values.get(), this->GetBytes());
     }
     return this->Values.get();
   }
