@@ -9,7 +9,9 @@ default, which composites the last frame's shadows when nothing they depend on c
 
 With new data, the contour (vtkFlyingEdges3D) runs before each timed frame, outside its timing;
 what the pass adds is its per-frame CPU work (welding, topology, silhouettes, uploads) and its
-GPU passes.
+GPU passes. The rows' frames are interleaved (one frame of each in turn, every frame with data
+no frame drew before) and the ratios are medians of each round's ratio, as this machine's load
+drifts by tens of percent over the seconds one row's frames take.
 """
 import argparse
 import statistics
@@ -72,43 +74,63 @@ def make_scene(e):
 
 
 def main():
-    args = scene_arguments(60, 8)
+    args = scene_arguments(60, 8, "timed frames of each configuration")
     contour, renderer, window, _ = make_scene(args.extent)
 
     contour.Update()
     triangles = contour.GetOutput().GetNumberOfPolys()
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToHardVolumes()
+    # Each frame a little lower a value than the last: the surface grows, as a front spreading
+    # through a simulation does (from 969,500 triangles at 160 to about 985,000 at 152).
+    values = iter(160.0 - 0.25 * v for v in range(100000))
 
-    def run(with_pass, depth_from_meshes=True, new_data=True, reuse=False):
-        renderer.SetPass(shadows if with_pass else None)
-        shadows.SetDepthFromCasterMeshes(depth_from_meshes)
-        shadows.SetReuseUnchangedShadows(reuse)
-        times = []
-        for f in range(args.frames + 2):
-            if new_data:
-                contour.SetValue(0, 150.0 + 3.0 * f)  # new data every frame
-            renderer.ResetCameraClippingRange()  # runs the contour, outside the timed frame
-            start = time.perf_counter()
-            window.Render()
-            window.WaitForCompletion()
-            times.append(time.perf_counter() - start)
-        return statistics.median(times[2:]) * 1000.0
+    def frame(configuration, new_data):
+        """Renders one frame of `configuration` (None: no pass; else (depth from meshes, reuse))
+        and returns its time in ms; the contour runs before the timing."""
+        renderer.SetPass(shadows if configuration else None)
+        if configuration:
+            shadows.SetDepthFromCasterMeshes(configuration[0])
+            shadows.SetReuseUnchangedShadows(configuration[1])
+        if new_data:
+            contour.SetValue(0, next(values))  # data no frame has drawn before
+        renderer.ResetCameraClippingRange()  # runs the contour, outside the timed frame
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        return (time.perf_counter() - start) * 1000.0
 
-    plain = run(False)
-    hard = run(True)
-    vtk_depth = run(True, depth_from_meshes=False)
-    plain_same = run(False, new_data=False)
-    hard_same = run(True, new_data=False)
+    def interleaved(configurations, new_data):
+        """Frames of every configuration in turn, so that this machine's load, which drifts
+        over seconds, weighs on all of them alike: each one's median, and the median over the
+        rounds of each one's time over the first's in the same round."""
+        times = [[] for _ in configurations]
+        for round_ in range(args.frames + 2):
+            for c, configuration in enumerate(configurations):
+                times[c].append(frame(configuration, new_data))
+        rounds = [[t[r] for t in times] for r in range(2, args.frames + 2)]  # 2 warm-up rounds
+        medians = [statistics.median(t[2:]) for t in times]
+        ratios = [statistics.median(r[c] / r[0] for r in rounds) for c in range(len(times))]
+        return medians, ratios
+
+    def extra(ratio):
+        return f"+{100.0 * (ratio - 1.0):.0f}%"
+
+    plain, hard, vtk_depth = None, (True, False), (False, False)
+    (new_ms, new_ratio) = interleaved([plain, hard, vtk_depth], new_data=True)
+    (same_ms, same_ratio) = interleaved([plain, hard], new_data=False)
+    # Reuse in a pair of its own: a setter called between frames modifies the pass, which
+    # draws the shadows again.
     reused_before = shadows.GetNumberOfReusedFrames()
-    hard_reused = run(True, new_data=False, reuse=True)
+    (reuse_ms, reuse_ratio) = interleaved([plain, (True, True)], new_data=False)
     reused = shadows.GetNumberOfReusedFrames() - reused_before
     # The stage split: the median of each stage over three more frames with new data.
+    renderer.SetPass(shadows)
     shadows.SetDepthFromCasterMeshes(True)
     shadows.CollectStageTimesOn()
     stage_times = [[] for _ in range(shadows.NUMBER_OF_STAGES)]
     for f in range(3):
-        contour.SetValue(0, 149.0 - f)
+        contour.SetValue(0, next(values))
         renderer.ResetCameraClippingRange()
         window.Render()
         for s in range(shadows.NUMBER_OF_STAGES):
@@ -117,19 +139,23 @@ def main():
     stage = [statistics.median(t) for t in stage_times]
     split = ", ".join("%s %.1f ms" % (shadows.GetStageName(s), stage[s])
                       for s in range(shadows.NUMBER_OF_STAGES))
-    print(f"time-varying isosurface: about {triangles} triangles, new every frame, 1024x768")
-    print(f"  no shadows    median {plain:8.1f} ms")
-    print(f"  hard shadows  median {hard:8.1f} ms  (+{100.0 * (hard - plain) / plain:.0f}%)")
-    print(f"    VTK drawing the depth (DepthFromCasterMeshes off): median {vtk_depth:8.1f} ms"
-          f"  (+{100.0 * (vtk_depth - plain) / plain:.0f}%)")
+    print(f"time-varying isosurface: about {triangles} triangles, 1024x768, {args.frames}"
+          " frames of each row, interleaved; the % is the median of each round's ratio")
+    print("  new data every frame:")
+    print(f"    no shadows    median {new_ms[0]:8.1f} ms")
+    print(f"    hard shadows  median {new_ms[1]:8.1f} ms  ({extra(new_ratio[1])})")
+    print(f"    VTK drawing the depth (DepthFromCasterMeshes off): median {new_ms[2]:8.1f} ms"
+          f"  ({extra(new_ratio[2])})")
     print(f"    stages, medians of three more frames: {split}")
     casters = stage[shadows.STAGE_CASTERS]
     print(f"    casters: {1e6 * casters / max(triangles, 1):.0f} ns per triangle")
-    print(f"  the same data every frame (no CPU geometry work): no shadows {plain_same:.1f} ms,"
-          f" hard shadows {hard_same:.1f} ms (+{100.0 * (hard_same - plain_same) / plain_same:.0f}%)")
-    print(f"    with ReuseUnchangedShadows (the default): {hard_reused:.1f} ms"
-          f" (+{100.0 * (hard_reused - plain_same) / plain_same:.0f}%; {reused} of"
-          f" {args.frames + 2} frames reused the shadows)")
+    print("  the same data every frame (no CPU geometry work):")
+    print(f"    no shadows    median {same_ms[0]:8.1f} ms")
+    print(f"    hard shadows, ReuseUnchangedShadows off: median {same_ms[1]:8.1f} ms"
+          f"  ({extra(same_ratio[1])})")
+    print(f"    with ReuseUnchangedShadows (the default): median {reuse_ms[1]:8.1f} ms"
+          f"  ({extra(reuse_ratio[1])}; {reused} of {args.frames + 2} frames reused the shadows;"
+          f" no shadows {reuse_ms[0]:.1f} ms in this pair)")
 
 
 if __name__ == "__main__":
