@@ -8,6 +8,7 @@
 //             whose surface grows: the isosurface's value lowered, the torus' resolution
 //             raised), each mesh made before its build is timed
 //   volume    ShadowVolume::Build for one point light (silhouette, sides, caps)
+//   winding   CasterTopology::OutwardWinding (closed meshes only: the torus)
 //
 //   build/bin/PenumbraGeometryBench [--runs N]
 #include "penumbraCasterTopology.h"
@@ -73,8 +74,8 @@ void Usage(const char* program)
   std::fprintf(stderr,
     "usage: %s [--runs N]\n"
     "  CPU geometry per triangle on time-varying data: the median of N runs (default 5)\n"
-    "  of a first topology build, a rebuild, a rebuild on a grown mesh and a shadow volume,\n"
-    "  per mesh.\n",
+    "  of a first topology build, a rebuild, a rebuild on a grown mesh, a shadow volume and\n"
+    "  the outward winding, per mesh.\n",
     program);
 }
 } // namespace
@@ -87,8 +88,9 @@ int main(int argc, char* argv[])
   {
     return 2;
   }
-  std::printf("%-8s %10s %10s %8s %11s %8s %10s %8s %10s %8s\n", "extent", "triangles", "first ms",
-    "ns/tri", "rebuild ms", "ns/tri", "grown ms", "ns/tri", "volume ms", "ns/tri");
+  std::printf("%-8s %10s %10s %8s %11s %8s %10s %8s %10s %8s %11s\n", "extent", "triangles",
+    "first ms", "ns/tri", "rebuild ms", "ns/tri", "grown ms", "ns/tri", "volume ms", "ns/tri",
+    "winding ms");
   // The two isosurfaces, then the torus (extent 0): a large mesh's first build, with a seam.
   for (const int extent : { 60, 120, 0 })
   {
@@ -123,6 +125,8 @@ int main(int argc, char* argv[])
           penumbra::ShadowVolume::Build(topology, light - glm::dvec4(topology.Origin, 0.0), false);
         (void)volume;
       });
+    // Asked once per rebuild of a closed caster (its depth culls hidden faces); 0 when open.
+    const double windingMs = MedianMs(runs, [&] { (void)topology.OutwardWinding(); });
     // After the volume, which is timed on the first mesh as the rows before.
     const double grownMs = GrownMs(runs, builder, topology, source,
       [&](int step)
@@ -130,10 +134,10 @@ int main(int argc, char* argv[])
         contour->SetValue(0, 160.0 - 0.5 * step);
         surface->SetUResolution(1414 + step);
       });
-    std::printf("%-8s %10.0f %10.1f %8.0f %11.1f %8.0f %10.1f %8.0f %10.1f %8.0f\n",
+    std::printf("%-8s %10.0f %10.1f %8.0f %11.1f %8.0f %10.1f %8.0f %10.1f %8.0f %11.1f\n",
       extent > 0 ? std::to_string(extent).c_str() : "torus", triangles, firstMs,
       1e6 * firstMs / triangles, rebuildMs, 1e6 * rebuildMs / triangles, grownMs,
-      1e6 * grownMs / triangles, volumeMs, 1e6 * volumeMs / triangles);
+      1e6 * grownMs / triangles, volumeMs, 1e6 * volumeMs / triangles, windingMs);
   }
   return 0;
 }

@@ -971,8 +971,14 @@ int CasterTopology::OutwardWinding() const
   {
     return 0;
   }
-  // Connected pieces: union-find over the triangles, joined across each (manifold) edge.
-  std::vector<std::uint32_t> parent(this->Triangles.size());
+  // Connected pieces: union-find over the triangles, joined across each (manifold) edge. A
+  // root is its piece's first triangle, as a union points the later root at the earlier one, so
+  // parent[t] <= t throughout. Data that changes asks for this on every rebuild: its storage
+  // is asked for huge pages (four bytes a triangle, written at once).
+  const std::size_t triangleCount = this->Triangles.size();
+  std::vector<std::uint32_t> parent;
+  ReserveLarge(parent, triangleCount);
+  parent.resize(triangleCount);
   std::iota(parent.begin(), parent.end(), 0u);
   auto root = [&parent](std::uint32_t t)
   {
@@ -989,26 +995,29 @@ int CasterTopology::OutwardWinding() const
                         b = root(this->Uses[edge.FirstUse + 1].Triangle);
     parent[std::max(a, b)] = std::min(a, b);
   }
+  // Each triangle's piece, numbered in the order of their first triangles, in place: parent[t]
+  // is an earlier triangle, already relabelled with its piece.
+  std::uint32_t pieces = 0;
+  for (std::uint32_t t = 0; t < triangleCount; ++t)
+  {
+    parent[t] = parent[t] == t ? pieces++ : parent[parent[t]];
+  }
   // Six times each piece's signed volume, relative to the origin (the bounds' centre), and the
   // size of its terms: a volume lost in their rounding is flat, with no outside to tell.
-  std::vector<double> volume(this->Triangles.size(), 0.0), terms(this->Triangles.size(), 0.0);
-  for (std::uint32_t t = 0; t < this->Triangles.size(); ++t)
+  std::vector<double> volume(pieces, 0.0), terms(pieces, 0.0);
+  for (std::uint32_t t = 0; t < triangleCount; ++t)
   {
     const glm::uvec3& tri = this->Triangles[t];
     const double term =
       glm::dot(this->Points[tri.x], glm::cross(this->Points[tri.y], this->Points[tri.z]));
-    const std::uint32_t piece = root(t);
-    volume[piece] += term;
-    terms[piece] += std::abs(term);
+    volume[parent[t]] += term;
+    terms[parent[t]] += std::abs(term);
   }
   int winding = 0;
-  for (std::uint32_t t = 0; t < this->Triangles.size(); ++t)
+  for (std::uint32_t piece = 0; piece < pieces; ++piece)
   {
-    if (parent[t] != t)
-    {
-      continue;
-    }
-    const int sign = !(std::abs(volume[t]) > 1e-9 * terms[t]) ? 0 : volume[t] > 0.0 ? 1 : -1;
+    const double v = volume[piece];
+    const int sign = !(std::abs(v) > 1e-9 * terms[piece]) ? 0 : v > 0.0 ? 1 : -1;
     if (sign == 0 || (winding != 0 && sign != winding))
     {
       return 0;

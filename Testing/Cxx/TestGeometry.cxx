@@ -595,11 +595,27 @@ void TestOutwardWinding()
     bothOut.push_back(outward.Triangles[t] + shift);
     mixed.push_back(inward[t] + shift);
   }
+  // The second sphere listed from its triangle that faces the first most: seen from the pair's
+  // centre (the origin of the volumes) that triangle is turned inward, so only the sum over its
+  // whole piece says which way the piece winds.
+  std::vector<glm::uvec3> facingFirst(bothOut);
+  const auto second = facingFirst.begin() + static_cast<std::ptrdiff_t>(outward.Triangles.size());
+  const auto normalX = [&](const glm::uvec3& tri)
+  {
+    const glm::dvec3& p0 = twoPoints[tri.x];
+    return glm::cross(twoPoints[tri.y] - p0, twoPoints[tri.z] - p0).x;
+  };
+  std::rotate(second,
+    std::min_element(second, facingFirst.end(),
+      [&](const glm::uvec3& a, const glm::uvec3& b) { return normalX(a) < normalX(b); }),
+    facingFirst.end());
   vtkNew<vtkPlaneSource> sheet;
   Check(outward.OutwardWinding() == 1, "vtkSphereSource winds outward");
   Check(CasterTopology::Build(points, inward).OutwardWinding() == -1, "turned, it winds inward");
   Check(CasterTopology::Build(twoPoints, bothOut).OutwardWinding() == 1,
     "two pieces wound outward wind outward");
+  Check(CasterTopology::Build(twoPoints, facingFirst).OutwardWinding() == 1,
+    "two pieces wound outward, one listed from a triangle facing the other, wind outward");
   Check(CasterTopology::Build(twoPoints, mixed).OutwardWinding() == 0,
     "pieces wound both ways have no one outside");
   Check(FromSource(sheet).OutwardWinding() == 0, "an open sheet has no outside");
