@@ -105,7 +105,7 @@ def main():
         over seconds, weighs on all of them alike: each one's median, and the median over the
         rounds of each one's time over the first's in the same round."""
         times = [[] for _ in configurations]
-        for round_ in range(args.frames + 2):
+        for _ in range(args.frames + 2):
             for c, configuration in enumerate(configurations):
                 times[c].append(frame(configuration, new_data))
         rounds = [[t[r] for t in times] for r in range(2, args.frames + 2)]  # 2 warm-up rounds

@@ -6,8 +6,8 @@
  * A build of millions of triangles touches hundreds of megabytes for the first time, and each
  * first touch of a 4 KiB page is a page fault. On a virtual machine a fault can cost more than
  * the work done in the page: a 4M-triangle topology's first build spent most of its time there
- * (results.md, "Huge pages for first builds"). Linux's transparent huge pages, where they are
- * enabled on request (`madvise`, Debian's default), map 2 MiB at a time instead.
+ * (results.md, "Growing data and first builds"). Linux's transparent huge pages, where they are
+ * enabled on request (`madvise`, as on the machine measured) or always, map 2 MiB at a time.
  */
 #ifndef penumbraLargeArrays_h
 #define penumbraLargeArrays_h
