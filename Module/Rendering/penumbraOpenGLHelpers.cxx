@@ -179,4 +179,34 @@ void BindVertexArray(vtkOpenGLVertexArrayObject* vao, vtkShaderProgram* program,
   vao->Bind();
 }
 
+bool WriteBuffer(vtkOpenGLBufferObject* buffer, vtkOpenGLBufferObject::ObjectType type,
+  std::size_t bytes, const std::function<void(void*)>& write)
+{
+  const GLenum target = type == vtkOpenGLBufferObject::ArrayBuffer ? GL_ARRAY_BUFFER
+    : type == vtkOpenGLBufferObject::ElementArrayBuffer            ? GL_ELEMENT_ARRAY_BUFFER
+                                                                   : GL_TEXTURE_BUFFER;
+  // VTK's Upload refuses to allocate without data: the same calls, with none.
+  if (!buffer->GenerateBuffer(type) || !buffer->Bind())
+  {
+    return false;
+  }
+  glBufferData(target, static_cast<GLsizeiptr>(bytes), nullptr, GL_STATIC_DRAW);
+  if (bytes == 0)
+  {
+    return true;
+  }
+  if (void* destination = glMapBufferRange(
+        target, 0, static_cast<GLsizeiptr>(bytes), GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT))
+  {
+    write(destination);
+    if (glUnmapBuffer(target) == GL_TRUE)
+    {
+      return true;
+    }
+  }
+  std::vector<unsigned char> copy(bytes);
+  write(copy.data());
+  return buffer->Upload(copy, type);
+}
+
 } // namespace penumbra

@@ -102,21 +102,18 @@ void MeshCache::Bind(vtkShaderProgram* program)
   if (!this->Uploaded)
   {
     const std::vector<glm::dvec3>& points = this->Topology.Points;
-    // Kept only for data that changes (it uploads every frame); static data frees its copy.
-    std::vector<float> once;
-    std::vector<float>& buffer = this->Builder ? this->UploadBuffer : once;
-    buffer.resize(points.size() * 8);
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-      for (int k = 0; k < 3; ++k)
+    const std::size_t count = points.size();
+    WriteBuffer(this->Vertices, vtkOpenGLBufferObject::ArrayBuffer, 8 * count * sizeof(float),
+      [&points, count](void* destination)
       {
-        buffer[4 * i + k] = static_cast<float>(points[i][k]);
-        buffer[4 * (points.size() + i) + k] = static_cast<float>(points[i][k]);
-      }
-      buffer[4 * i + 3] = 1.0f;
-      buffer[4 * (points.size() + i) + 3] = 0.0f;
-    }
-    this->Vertices->Upload(buffer, vtkOpenGLBufferObject::ArrayBuffer);
+        auto* vertices = static_cast<glm::vec4*>(destination);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+          const glm::vec3 point(points[i]);
+          vertices[i] = glm::vec4(point, 1.0f);
+          vertices[count + i] = glm::vec4(point, 0.0f);
+        }
+      });
     this->Uploaded = true;
     this->VAOProgram = nullptr;
   }
@@ -195,14 +192,21 @@ void VolumeCache::Upload()
   }
   // One buffer: [sides | dark cap | light cap], drawn as ranges (z-pass: sides only; z-fail:
   // sides and dark cap, then the light cap with its depth bias).
-  std::vector<std::uint32_t> indices;
-  indices.reserve(this->SideCount() + this->CapCount() + this->DarkCapCount());
-  indices.insert(indices.end(), this->Volume.Sides.begin(), this->Volume.Sides.end());
-  indices.insert(indices.end(), this->Volume.DarkCap.begin(), this->Volume.DarkCap.end());
-  indices.insert(indices.end(), this->Volume.LightCap.begin(), this->Volume.LightCap.end());
-  if (!indices.empty())
+  const std::vector<std::uint32_t>* parts[] = { &this->Volume.Sides, &this->Volume.DarkCap,
+    &this->Volume.LightCap };
+  const std::size_t count = this->SideCount() + this->CapCount() + this->DarkCapCount();
+  if (count > 0)
   {
-    this->Indices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    WriteBuffer(this->Indices, vtkOpenGLBufferObject::ElementArrayBuffer,
+      count * sizeof(std::uint32_t),
+      [&parts](void* destination)
+      {
+        auto* index = static_cast<std::uint32_t*>(destination);
+        for (const std::vector<std::uint32_t>* part : parts)
+        {
+          index = std::copy(part->begin(), part->end(), index);
+        }
+      });
   }
   this->Uploaded = true;
 }

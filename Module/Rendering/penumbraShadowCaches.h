@@ -49,7 +49,6 @@ struct MeshCache
   CasterTopology Topology;
   /// Created on the second build: only data that changes keeps scratch between builds.
   std::unique_ptr<TopologyBuilder> Builder;
-  std::vector<float> UploadBuffer; ///< the vertex upload's copy, kept along with Builder
   vtkNew<vtkOpenGLBufferObject> Vertices;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* VAOProgram = nullptr;
