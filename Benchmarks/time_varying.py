@@ -114,7 +114,7 @@ def main():
         return medians, ratios
 
     def extra(ratio):
-        return f"+{100.0 * (ratio - 1.0):.0f}%"
+        return f"{100.0 * (ratio - 1.0):+.0f}%"  # signed: a reused frame can cost less
 
     plain, hard, vtk_depth = None, (True, False), (False, False)
     (new_ms, new_ratio) = interleaved([plain, hard, vtk_depth], new_data=True)
