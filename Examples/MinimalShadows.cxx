@@ -51,7 +51,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(ActorOf(ground));
   renderer->AddActor(ActorOf(sphere));
-  // Shadows come from scene lights (headlights and camera lights cast none).
+  // Shadows come from scene and camera lights (headlights cast none).
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
   light->SetPositional(true);

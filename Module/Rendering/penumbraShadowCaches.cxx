@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <sstream>
 #include <vector>
 
@@ -39,23 +40,33 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataObject* data)
   return nullptr;
 }
 
+/// A stamp no earlier build of any mesh or volume had. The caches kept per actor compare it, so
+/// the mesh of an actor's new data (built once, as the mesh it replaces was) never passes for the
+/// old one.
+std::size_t NewGeneration()
+{
+  static std::atomic<std::size_t> last{ 0 };
+  return ++last;
+}
+
 } // namespace
 
 bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner)
 {
   this->Used = true;
-  if (this->Data == data && this->BuiltAt >= data->GetMTime() && this->Generation > 0)
+  if (this->Data == data && this->BuiltAt >= data->GetMTime() && this->Builds > 0)
   {
     return false;
   }
   this->Data = data;
   this->BuiltAt = data->GetMTime();
-  ++this->Generation;
+  ++this->Builds;
+  this->Generation = NewGeneration();
   this->Uploaded = false;
   this->TrianglesUploaded = false;
 
   vtkSmartPointer<vtkPolyData> surface = SurfaceOf(data);
-  if (this->Generation > 1 && !this->Builder)
+  if (this->Builds > 1 && !this->Builder)
   {
     // Data that changed once will likely change again (a simulation played back): keep the
     // builder's scratch so that later rebuilds allocate nothing. Static data holds none.
@@ -91,7 +102,7 @@ bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vt
   {
     vtkWarningWithObjectMacro(
       owner, << caster.str() << ": " << problems
-             << (this->Generation > 1 ? " (not repeated for later versions)." : "."));
+             << (this->Builds > 1 ? " (not repeated for later versions)." : "."));
     this->WarnedProblems = true;
   }
   return true;
@@ -167,7 +178,7 @@ bool VolumeCache::Update(
   this->Rule = rule;
   this->MeshGeneration = mesh.Generation;
   this->Volume = ShadowVolume::Build(mesh.Topology, lightObject, mirrored, false, rule);
-  ++this->Generation;
+  this->Generation = NewGeneration();
   this->HasCaps = false;
   this->Uploaded = false;
   return true;
@@ -194,7 +205,11 @@ void VolumeCache::Upload()
   // sides and dark cap, then the light cap with its depth bias).
   const std::vector<std::uint32_t>* parts[] = { &this->Volume.Sides, &this->Volume.DarkCap,
     &this->Volume.LightCap };
-  const std::size_t count = this->SideCount() + this->CapCount() + this->DarkCapCount();
+  std::size_t count = 0;
+  for (const std::vector<std::uint32_t>* part : parts)
+  {
+    count += part->size();
+  }
   if (count > 0)
   {
     WriteBuffer(this->Indices, vtkOpenGLBufferObject::ElementArrayBuffer,

@@ -45,7 +45,8 @@ struct MeshCache
 {
   vtkWeakPointer<vtkDataObject> Data;
   vtkMTimeType BuiltAt = 0;
-  std::size_t Generation = 0; ///< bumped on every rebuild, so volumes know they are stale
+  std::size_t Builds = 0;     ///< how often the topology was built
+  std::size_t Generation = 0; ///< unique to each build of any mesh, so volumes know they are stale
   CasterTopology Topology;
   /// Created on the second build: only data that changes keeps scratch between builds.
   std::unique_ptr<TopologyBuilder> Builder;
@@ -84,7 +85,7 @@ struct VolumeCache
   bool Mirrored = false;
   CountingRule Rule = CountingRule::FrontFacesWhereTheySuffice;
   std::size_t MeshGeneration = ~std::size_t(0);
-  std::size_t Generation = 0; ///< bumped on every silhouette rebuild
+  std::size_t Generation = 0; ///< unique to each silhouette build, so wedges know they are stale
   ShadowVolume Volume;
   bool HasCaps = false;
   vtkNew<vtkOpenGLBufferObject> Indices;

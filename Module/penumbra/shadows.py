@@ -44,8 +44,9 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
     (vtkSoftShadowPass.SetLightSamples), None for the default.
 
     The scene is drawn as the renderer draws it without a pass: its depth peeling, FXAA and SSAO
-    settings are kept (vtkRendererSettingsPass). Headlights and camera lights cast no shadow; a
-    Python warning says so when no light of the renderer can cast.
+    settings are kept (vtkRendererSettingsPass). Headlights cast no shadow (it would lie behind
+    what casts it); camera lights do. A Python warning says so when no light of the renderer can
+    cast.
     """
     if method not in METHODS:
         raise ValueError("method must be one of %s, not %r" % (", ".join(sorted(METHODS)), method))
@@ -71,14 +72,14 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
     renderer.SetPass(shadows)
     if not any(vtkSoftShadowPass.LightCastsShadows(light) for light in _lights_of(renderer)):
         warnings.warn("penumbra.enable_shadows: no light of this renderer casts shadows (headlights "
-                      "and camera lights do not, nor lights that are off); add a scene light",
+                      "do not, nor lights that are off); add a scene or camera light",
                       stacklevel=2)
     return shadows
 
 
 def add_light(renderer, position, radius=0.0, focal_point=(0.0, 0.0, 0.0)):
-    """Adds a positional scene light shining all round (what casts shadows: headlights and camera
-    lights do not) of `radius` world units at `position`, and returns it."""
+    """Adds a positional scene light shining all round (headlights cast no shadows) of `radius`
+    world units at `position`, and returns it."""
     light = vtkLight()
     light.SetLightTypeToSceneLight()
     light.SetPositional(True)

@@ -543,6 +543,31 @@ void TestLightReachingScene()
     "a negative light index: no image, one error");
 }
 
+/// Pixels of the first renderer's viewport that differ from the frame a fresh pass with the same
+/// method and samples draws of the scene: what a pass that cached something stale gets wrong.
+int PixelsOffFreshPass(PassScene& view)
+{
+  const std::vector<unsigned char> shown = WindowColours(view.Window, view.Renderer);
+  vtkNew<vtkSoftShadowPass> fresh;
+  fresh->SetLightSamples(view.Pass->GetLightSamples());
+  fresh->SetMethod(view.Pass->GetMethod());
+  view.Renderer->SetPass(fresh);
+  view.Window->Render();
+  const std::vector<unsigned char> drawn = WindowColours(view.Window, view.Renderer);
+  view.Renderer->SetPass(view.Pass);
+  fresh->ReleaseGraphicsResources(view.Window);
+  if (shown.size() != drawn.size())
+  {
+    return -1;
+  }
+  int off = 0;
+  for (std::size_t i = 0; i < shown.size(); i += 3)
+  {
+    off += shown[i] != drawn[i] || shown[i + 1] != drawn[i + 1] || shown[i + 2] != drawn[i + 2];
+  }
+  return off;
+}
+
 /// A frame whose shadows cannot have changed reuses the last drawn frame's layers
 /// (ReuseUnchangedShadows), and every change that moves a shadow or a visible point draws them
 /// again. After each change the frame must equal a fresh pass's frame of the same scene.
@@ -645,28 +670,7 @@ public:
   }
 
   /// Pixels of the renderer's viewport that differ from a fresh pass's frame of the scene.
-  int PixelsOffFresh()
-  {
-    const std::vector<unsigned char> shown = WindowColours(this->View.Window, this->View.Renderer);
-    vtkNew<vtkSoftShadowPass> fresh;
-    fresh->SetLightSamples(this->View.Pass->GetLightSamples());
-    fresh->SetMethod(this->View.Pass->GetMethod());
-    this->View.Renderer->SetPass(fresh);
-    this->View.Window->Render();
-    const std::vector<unsigned char> drawn = WindowColours(this->View.Window, this->View.Renderer);
-    this->View.Renderer->SetPass(this->View.Pass);
-    fresh->ReleaseGraphicsResources(this->View.Window);
-    if (shown.size() != drawn.size())
-    {
-      return -1;
-    }
-    int off = 0;
-    for (std::size_t i = 0; i < shown.size(); i += 3)
-    {
-      off += shown[i] != drawn[i] || shown[i + 1] != drawn[i + 1] || shown[i + 2] != drawn[i + 2];
-    }
-    return off;
-  }
+  int PixelsOffFresh() { return PixelsOffFreshPass(this->View); }
 };
 
 void TestReuseUnchangedShadows()
@@ -748,6 +752,15 @@ void TestReuseUnchangedShadows()
     { "the coincident-topology offsets back", false,
       [&] {
         vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
+      } },
+    // The new data's mesh is as new as the box's was (built once): only its identity differs.
+    { "an actor's mapper given another data object", false,
+      [&]
+      {
+        vtkSmartPointer<vtkSphereSource> ball = SphereSource(1.6, 0.5, 0.8, 0.5, 24, 12);
+        scene.View.Keep.push_back(ball);
+        vtkMapper* mapper = scene.Box->GetMapper();
+        mapper->SetInputConnection(ball->GetOutputPort());
       } },
     { "an actor's opacity", false, [&] { scene.Box->GetProperty()->SetOpacity(0.5); } },
     { "an actor hidden", false, [&] { scene.Box->VisibilityOff(); } },
@@ -832,6 +845,40 @@ void TestReuseUnchangedShadows()
   Check(!scene.Render(), "ReuseUnchangedShadows off: shadows drawn every frame");
 }
 
+/// An actor whose mapper is given another data object casts the new data's shadow, with every
+/// method: what was cached for the old mesh must not pass for the new one's, although the new
+/// mesh has been built as often as the old one had (once) and lies about the same centre.
+void TestDataObjectSwapped()
+{
+  const std::vector<std::pair<const char*, int>> methods = {
+    { "hard volumes", vtkSoftShadowPass::METHOD_HARD_VOLUMES },
+    { "averaged hard shadows", vtkSoftShadowPass::METHOD_AVERAGED_HARD_SHADOWS },
+    { "penumbra wedges", vtkSoftShadowPass::METHOD_PENUMBRA_WEDGES },
+    { "soft shadow volumes", vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES },
+  };
+  for (const auto& method : methods)
+  {
+    PassScene view(200, 150);
+    view.Ground();
+    vtkActor* caster = view.Sphere(0, 1.2, 0, 0.6, 32);
+    view.Camera(3, 4, 7, 0, 0.5, 0);
+    const bool hard = method.second == vtkSoftShadowPass::METHOD_HARD_VOLUMES;
+    vtkSoftShadowPass::SetLightRadius(view.Light, hard ? 0.0 : 0.3);
+    view.Pass->SetMethod(method.second);
+    view.Pass->SetLightSamples(16);
+    view.Window->Render();
+    // Centred where the sphere is, so that the light is where it was relative to the mesh.
+    vtkSmartPointer<vtkCubeSource> slab = BoxSource(0, 1.2, 0, 1.8, 0.3, 1.2);
+    view.Keep.push_back(slab);
+    caster->GetMapper()->SetInputConnection(slab->GetOutputPort());
+    view.Window->Render();
+    const int off = PixelsOffFreshPass(view);
+    std::printf("     %s: %d px off a fresh pass's frame\n", method.first, off);
+    Check(
+      off == 0, std::string(method.first) + ": the new data's shadow, as a fresh pass draws it");
+  }
+}
+
 /// The tight depth range draws the shadows with a copy of the camera: the user's camera is not
 /// modified, so a pipeline that depends on it (vtkDepthSortPolyData) does not run again and a
 /// still scene reuses its shadows. The copy is made active only while VTK draws props into the
@@ -901,6 +948,7 @@ int main(int argc, char* argv[])
     { "LightReachingScene", TestLightReachingScene },
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
     { "CameraLeftAlone", TestCameraLeftAlone },
+    { "DataObjectSwapped", TestDataObjectSwapped },
   };
   return RunFeatures(argc, argv, features);
 }
