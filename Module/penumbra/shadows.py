@@ -40,8 +40,8 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
         ``vedo.Light`` and a plain ``vtkLight`` are directional unless SetPositional(True).
     Either applies to `lights` (default: every light of the renderer); None leaves a light's
     radius as it is. method: "automatic" (the default), "hard", "averaged", "wedges",
-    "plateaus" or "soft_volumes" (vtkSoftShadowPass.SetMethod). samples: light samples per area light
-    (vtkSoftShadowPass.SetLightSamples), None for the default.
+    "plateaus" or "soft_volumes" (vtkSoftShadowPass.SetMethod). samples: light samples per area
+    light (vtkSoftShadowPass.SetLightSamples), None for the default.
 
     The scene is drawn as the renderer draws it without a pass: its depth peeling, FXAA and SSAO
     settings are kept (vtkRendererSettingsPass). Headlights cast no shadow (it would lie behind
@@ -71,8 +71,8 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
         shadows.SetLightSamples(samples)
     renderer.SetPass(shadows)
     if not any(vtkSoftShadowPass.LightCastsShadows(light) for light in _lights_of(renderer)):
-        warnings.warn("penumbra.enable_shadows: no light of this renderer casts shadows (headlights "
-                      "do not, nor lights that are off); add a scene or camera light",
+        warnings.warn("penumbra.enable_shadows: no light of this renderer casts shadows "
+                      "(headlights do not, nor lights that are off); add a scene or camera light",
                       stacklevel=2)
     return shadows
 
