@@ -16,7 +16,9 @@ vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, b
 {
   auto* active = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
   this->Current = active;
-  if (!tight || !scene.Valid || active->GetParallelProjection())
+  // An explicit projection sets its own depth range, and VTK 9.1's DeepCopy drops it.
+  if (!tight || !scene.Valid || active->GetParallelProjection() ||
+    active->GetUseExplicitProjectionTransformMatrix())
   {
     return active;
   }

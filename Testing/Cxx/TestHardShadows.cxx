@@ -1,9 +1,12 @@
 // Hard shadows of vtkSoftShadowPass against an independent ray tracer (vtkRayTracedVisibility,
 // Embree): the classic scene, the camera inside a shadow, z-fail for visible casters, open,
 // non-manifold and non-orientable meshes, a light inside a closed caster, a shadow running off
-// the ground over the background. Tolerance: see penumbraTestHarness.h.
+// the ground over the background, a camera with an explicit projection matrix. Tolerance: see
+// penumbraTestHarness.h.
 #include "penumbraTestHarness.h"
 
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricKlein.h"
@@ -38,6 +41,28 @@ void TestClassic()
   scene.Light->SetPositional(false);
   scene.Light->SetPosition(-1, 3, 1.5);
   CheckAgainstTruth("classic scene, directional light", scene.Render());
+}
+
+/// A camera with an explicit projection matrix, which VTK 9.1's vtkCamera::DeepCopy drops: the
+/// shadows follow it, and a change made to it in place once the camera is marked modified.
+void TestExplicitProjection()
+{
+  Scene scene;
+  scene.Ground();
+  scene.Sphere(-0.8, 0.9, 0, 0.7);
+  scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(
+    camera->GetProjectionTransformMatrix(scene.Renderer->GetTiledAspectRatio(), -1, 1));
+  projection->SetElement(0, 0, 1.6 * projection->GetElement(0, 0));
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->UseExplicitProjectionTransformMatrixOn();
+  CheckAgainstTruth("an explicit projection", scene.Render());
+  projection->SetElement(1, 1, 0.7 * projection->GetElement(1, 1));
+  camera->Modified();
+  CheckAgainstTruth("the explicit projection changed in place", scene.Render());
 }
 
 void TestCameraInsideShadow()
@@ -235,6 +260,7 @@ int main(int argc, char* argv[])
     { "LightInsideClosedCaster", TestLightInsideClosedCaster },
     { "BackgroundStaysLit", TestBackgroundStaysLit },
     { "DepthFromCasterMeshes", TestDepthFromCasterMeshes },
+    { "ExplicitProjection", TestExplicitProjection },
   };
   return RunFeatures(argc, argv, features);
 }
