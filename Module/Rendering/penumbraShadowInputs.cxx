@@ -14,6 +14,7 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObject.h"
 #include "vtkGlyph3DMapper.h"
+#include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageProperty.h"
 #include "vtkImageSlice.h"
@@ -34,6 +35,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace penumbra
@@ -60,11 +63,35 @@ void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
   inputs.Add(static_cast<double>(vtkSoftShadowPass::GetReceivesShadows(prop)));
   inputs.Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(prop)));
 }
+/// Whether every entry of `a` and `b` differs by at most 1e-7 of the largest magnitude in its
+/// row of either (false for NaN): a clip-space row scaled by that much moves a point in view by
+/// about 1e-7 of the viewport, and a depth by about one 24-bit step.
+bool NearlyEqualRows(const glm::dmat4& a, const glm::dmat4& b)
+{
+  for (int row = 0; row < 4; ++row)
+  {
+    double scale = 0.0;
+    for (int column = 0; column < 4; ++column)
+    {
+      scale = std::max({ scale, std::abs(a[column][row]), std::abs(b[column][row]) });
+    }
+    for (int column = 0; column < 4; ++column)
+    {
+      if (!(std::abs(a[column][row] - b[column][row]) <= 1e-7 * scale))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 void ShadowInputs::Begin()
 {
   this->Current.clear();
+  this->WorldToClip = glm::dmat4(0.0);
 }
 
 void ShadowInputs::Add(const void* object)
@@ -199,6 +226,10 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
       this->Add(static_cast<double>(actor->GetForceOpaque() + 2 * actor->GetForceTranslucent()));
       this->AddTime(actor->GetTexture() ? actor->GetTexture()->GetMTime() : 0);
     }
+    // The texture's alpha makes the actor translucent, and its image can change (edited in
+    // place) without the texture's time or the actor's moving.
+    vtkImageData* image = actor->GetTexture() ? actor->GetTexture()->GetInput() : nullptr;
+    this->AddTime(image ? image->GetMTime() : 0);
     vtkShaderProperty* shaders = actor->GetShaderProperty();
     this->AddTime(shaders->GetMTime());
     this->AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
@@ -283,12 +314,14 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
 
 bool ShadowInputs::MatchKept() const
 {
-  return this->HaveKept && this->Current == this->Kept;
+  return this->HaveKept && this->Current == this->Kept &&
+    NearlyEqualRows(this->WorldToClip, this->KeptWorldToClip);
 }
 
 void ShadowInputs::Keep()
 {
   this->Kept = this->Current;
+  this->KeptWorldToClip = this->WorldToClip;
   this->HaveKept = true;
 }
 

@@ -42,6 +42,11 @@ public:
   void Add(double value);
   void Add(const glm::dmat4& matrix);
   void Add(const glm::dvec4& vector);
+  /// The world-to-clip matrix the shadows are drawn with. It matches the kept frame's where each
+  /// entry is within 1e-7 of its row's largest, which moves no point by more than about 1e-4 of a
+  /// pixel: vtkWindowToImageFilter draws a screenshot with a copy of the camera whose view angle
+  /// went through a float, and that frame reuses the shadows.
+  void SetWorldToClip(const glm::dmat4& worldToClip) { this->WorldToClip = worldToClip; }
   void AddTime(vtkMTimeType time);
   /// vtkMapper's static coincident-topology settings.
   void AddCoincidentTopologySettings();
@@ -64,6 +69,8 @@ private:
   bool AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part);
   std::vector<std::uint64_t> Current;
   std::vector<std::uint64_t> Kept;
+  glm::dmat4 WorldToClip{ 0.0 };
+  glm::dmat4 KeptWorldToClip{ 0.0 };
   bool HaveKept = false;
 };
 

@@ -514,7 +514,7 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   scene.Add(static_cast<double>(internals.Lights.size())); // the layers' count
   scene.AddTime(this->GetMTime());
   // Values: vtkCamera::DeepCopy does not modify the camera.
-  scene.Add(internals.WorldToClip);
+  scene.SetWorldToClip(internals.WorldToClip);
   // Image slices follow the focal point, which SetDistance moves without changing the matrix.
   vtkCamera* camera = renderer->GetActiveCamera();
   scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
