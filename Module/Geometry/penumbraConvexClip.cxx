@@ -1,6 +1,7 @@
 #include "penumbraConvexClip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace penumbra
@@ -191,6 +192,132 @@ Box StableReceiverBox(const Box& kept, const Box& current)
   grown.Min -= glm::dvec3(0.1 * size) + floor;
   grown.Max += glm::dvec3(0.1 * size) + floor;
   return grown;
+}
+
+Box ReceiverPieceBox(const Box& receivers, const Box& receiver)
+{
+  const double size = receivers.Diagonal();
+  if (!receivers.Valid || !receiver.Valid || !(size > 0.0) || !std::isfinite(size))
+  {
+    return {};
+  }
+  const double step = 0.02 * size;
+  const glm::dvec3 lo = glm::floor((receiver.Min - 0.01 * size - receivers.Min) / step);
+  const glm::dvec3 hi = glm::ceil((receiver.Max + 0.01 * size - receivers.Min) / step);
+  Box piece;
+  piece.Valid = true;
+  piece.Min = glm::max(receivers.Min + lo * step, receivers.Min);
+  piece.Max = glm::min(receivers.Min + hi * step, receivers.Max);
+  return piece;
+}
+
+std::vector<Box> DisjointPieces(const std::vector<Box>& boxes, std::size_t maxBoxes)
+{
+  std::vector<Box> valid;
+  Box bounds;
+  for (const Box& box : boxes)
+  {
+    if (box.Valid)
+    {
+      valid.push_back(box);
+      bounds.Extend(box.Min, box.Max);
+    }
+  }
+  if (valid.empty())
+  {
+    return {};
+  }
+  if (valid.size() > maxBoxes)
+  {
+    return { bounds };
+  }
+  // The grid of every box's faces, per axis.
+  std::array<std::vector<double>, 3> cuts;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (const Box& box : valid)
+    {
+      cuts[axis].push_back(box.Min[axis]);
+      cuts[axis].push_back(box.Max[axis]);
+    }
+    std::sort(cuts[axis].begin(), cuts[axis].end());
+    cuts[axis].erase(std::unique(cuts[axis].begin(), cuts[axis].end()), cuts[axis].end());
+  }
+  auto inside = [&](std::size_t i, std::size_t j, std::size_t k)
+  {
+    const glm::dvec3 centre(0.5 * (cuts[0][i] + cuts[0][i + 1]),
+      0.5 * (cuts[1][j] + cuts[1][j + 1]), 0.5 * (cuts[2][k] + cuts[2][k + 1]));
+    return std::any_of(valid.begin(), valid.end(),
+      [&centre](const Box& box) {
+        return glm::all(glm::lessThan(box.Min, centre)) && glm::all(glm::lessThan(centre, box.Max));
+      });
+  };
+  // Cells as index ranges [x0, x1) x [y0, y1) x [z0, z1): runs along x, then merged along y
+  // with the run above of the same x range, then along z likewise.
+  using Range = std::array<std::size_t, 6>;
+  std::vector<Range> runs;
+  const std::size_t nx = cuts[0].size() - 1, ny = cuts[1].size() - 1, nz = cuts[2].size() - 1;
+  for (std::size_t k = 0; k < nz; ++k)
+  {
+    for (std::size_t j = 0; j < ny; ++j)
+    {
+      for (std::size_t i = 0; i < nx;)
+      {
+        if (!inside(i, j, k))
+        {
+          ++i;
+          continue;
+        }
+        const std::size_t start = i;
+        while (i < nx && inside(i, j, k))
+        {
+          ++i;
+        }
+        runs.push_back({ start, i, j, j + 1, k, k + 1 });
+      }
+    }
+  }
+  // Merges b into a where they differ only along `axis` and b starts where a ends.
+  auto mergeAlong = [](std::vector<Range>& ranges, int axis)
+  {
+    std::vector<Range> merged;
+    for (const Range& range : ranges)
+    {
+      auto joins = [&](const Range& other)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          if (a != axis && (other[2 * a] != range[2 * a] || other[2 * a + 1] != range[2 * a + 1]))
+          {
+            return false;
+          }
+        }
+        return other[2 * axis + 1] == range[2 * axis];
+      };
+      auto found = std::find_if(merged.begin(), merged.end(), joins);
+      if (found != merged.end())
+      {
+        (*found)[2 * axis + 1] = range[2 * axis + 1];
+      }
+      else
+      {
+        merged.push_back(range);
+      }
+    }
+    ranges.swap(merged);
+  };
+  mergeAlong(runs, 1);
+  mergeAlong(runs, 2);
+  std::vector<Box> pieces;
+  for (const Range& range : runs)
+  {
+    Box piece;
+    piece.Valid = true;
+    piece.Min = glm::dvec3(cuts[0][range[0]], cuts[1][range[2]], cuts[2][range[4]]);
+    piece.Max = glm::dvec3(cuts[0][range[1]], cuts[1][range[3]], cuts[2][range[5]]);
+    pieces.push_back(piece);
+  }
+  return pieces;
 }
 
 ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)

@@ -69,6 +69,38 @@ struct Box
  */
 VTKPENUMBRAGEOMETRY_EXPORT Box StableReceiverBox(const Box& kept, const Box& current);
 
+/// Where receiver points can be: Whole holds every receiver (StableReceiverBox; invalid when
+/// nothing bounds them) and Pieces, where built, are disjoint boxes inside it around each
+/// receiver (DisjointPieces of ReceiverPieceBox), to which counting wedges are cut.
+struct ReceiverBounds
+{
+  Box Whole;
+  std::vector<Box> Pieces;
+  bool operator==(const ReceiverBounds& other) const
+  {
+    return this->Whole == other.Whole && this->Pieces == other.Pieces;
+  }
+};
+
+/**
+ * One receiver's box for DisjointPieces: `receiver` grown by 1% of the size of `receivers` (the
+ * stable box that holds every receiver, StableReceiverBox) on every side, so that no receiver
+ * point lies on a piece's face, then out to a grid of 2% of that size from its min corner, so
+ * that a receiver moving a little keeps its box (and every caster its wedges); clamped to
+ * `receivers`. Invalid when either is.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT Box ReceiverPieceBox(const Box& receivers, const Box& receiver);
+
+/**
+ * Disjoint boxes whose union is the union of the valid `boxes`: the cells of the grid of the
+ * boxes' faces that lie in some box, merged into runs along x, then along y and z where their
+ * extents agree. Pieces are half-open ([min, max)), so a point on a face two pieces share belongs
+ * to one; a box of no volume holds no point of them. More than `maxBoxes` valid boxes give one
+ * piece, their bounds; none gives none.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT std::vector<Box> DisjointPieces(
+  const std::vector<Box>& boxes, std::size_t maxBoxes = 8);
+
 /**
  * The box cut by every half-space. Empty when nothing of the box is left (or less than a sliver
  * of 1e-12 of its size). Half-spaces with a zero or non-finite normal are ignored.

@@ -31,6 +31,28 @@ WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dv
   halfSpaces.clear();
   return WedgeShape::FullViewport;
 }
+
+/// Appends `cut`'s points (w = 1), each followed by `attributes` and then `extra`, and its
+/// triangles.
+void AppendPolyhedron(const ConvexPolyhedron& cut, const float* attributes, int attributeCount,
+  const float* extra, int extraCount, std::vector<float>& vertices,
+  std::vector<std::uint32_t>& indices)
+{
+  const auto first =
+    static_cast<std::uint32_t>(vertices.size() / (4 + attributeCount + extraCount));
+  for (const glm::dvec3& point : cut.Points)
+  {
+    const float xyzw[4] = { static_cast<float>(point.x), static_cast<float>(point.y),
+      static_cast<float>(point.z), 1.0f };
+    vertices.insert(vertices.end(), xyzw, xyzw + 4);
+    vertices.insert(vertices.end(), attributes, attributes + attributeCount);
+    vertices.insert(vertices.end(), extra, extra + extraCount);
+  }
+  for (unsigned int index : cut.Triangles)
+  {
+    indices.push_back(first + index);
+  }
+}
 } // namespace
 
 WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
@@ -100,6 +122,38 @@ WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const 
     emitShape(viewport, std::array<unsigned int, 3>{ 0, 1, 2 });
   }
   return shape;
+}
+
+WedgeShape AppendWedgeBoundInPieces(const glm::dvec3& from, const glm::dvec3& to,
+  const glm::dvec4& light, double radius, const Box& receivers, const std::vector<Box>& pieces,
+  const EdgeFace* faces, bool frontFacesOnly, const float* attributes, int attributeCount,
+  std::vector<float>& vertices, std::vector<std::uint32_t>& indices)
+{
+  Wedge wedge;
+  LightPyramid pyramid;
+  std::vector<HalfSpace> halfSpaces;
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
+  if (faces && wedge.Valid)
+  {
+    const std::vector<HalfSpace> sector = SilhouetteSector(
+      wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
+    halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
+  }
+  bool drawn = false;
+  for (const Box& piece : pieces)
+  {
+    const ConvexPolyhedron cut = ClipBox(piece, halfSpaces);
+    if (cut.Empty())
+    {
+      continue;
+    }
+    const float bounds[6] = { static_cast<float>(piece.Min.x), static_cast<float>(piece.Min.y),
+      static_cast<float>(piece.Min.z), static_cast<float>(piece.Max.x),
+      static_cast<float>(piece.Max.y), static_cast<float>(piece.Max.z) };
+    AppendPolyhedron(cut, attributes, attributeCount, bounds, 6, vertices, indices);
+    drawn = true;
+  }
+  return drawn ? shape : WedgeShape::Nothing;
 }
 
 } // namespace penumbra

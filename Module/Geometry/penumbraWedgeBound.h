@@ -46,6 +46,22 @@ VTKPENUMBRAGEOMETRY_EXPORT WedgeShape AppendWedgeBound(const glm::dvec3& from, c
   bool frontFacesOnly, const float* attributes, int attributeCount, std::vector<float>& vertices,
   std::vector<std::uint32_t>& indices);
 
+/**
+ * As AppendWedgeBound with a valid `receivers` box, but cut to each of `pieces` (disjoint boxes
+ * in the same coordinates, DisjointPieces of the receivers' own boxes) rather than to the whole
+ * box: one closed convex polyhedron for each piece the bound meets, so that the space between
+ * receivers (the air between a caster and the ground) draws nothing. Each vertex's attributes
+ * are followed by its piece's min and max corners (6 floats): a pixel's view ray can cross
+ * several pieces' polyhedra, and only the one whose piece holds the pixel's point may count it
+ * (min <= p < max, which no two pieces share). The sector's margin follows `receivers`. Returns
+ * Nothing when the bound meets no piece.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT WedgeShape AppendWedgeBoundInPieces(const glm::dvec3& from,
+  const glm::dvec3& to, const glm::dvec4& light, double radius, const Box& receivers,
+  const std::vector<Box>& pieces, const EdgeFace* faces, bool frontFacesOnly,
+  const float* attributes, int attributeCount, std::vector<float>& vertices,
+  std::vector<std::uint32_t>& indices);
+
 } // namespace penumbra
 
 #endif

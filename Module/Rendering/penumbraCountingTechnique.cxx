@@ -135,7 +135,7 @@ void CountingTechnique::PrepareLight(
 }
 
 vtkIdType CountingTechnique::UpdateCaster(
-  const ShadowLight& light, CasterCache& caster, const Box& receivers)
+  const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers)
 {
   const bool frontFacesOnly = ShadowVolume::FrontFacesSuffice(
     caster.Mesh->Topology, glm::inverse(caster.ObjectToWorld) * light.World);

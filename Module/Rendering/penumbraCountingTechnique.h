@@ -48,7 +48,7 @@ public:
   /// Finds the caster's potential silhouette again when its mesh, matrix, the light or the
   /// counting rule changed.
   vtkIdType UpdateCaster(
-    const ShadowLight& light, CasterCache& caster, const Box& receivers) override;
+    const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers) override;
   /// The centre's count goes to a texture of its own, for the resolve to read.
   void BeginVolumes(ShadowFrame& frame, const ShadowLight& light) override;
   void ResolveSample(ShadowFrame&, const ShadowLight&, std::size_t) override {}

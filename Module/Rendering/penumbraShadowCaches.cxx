@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -268,7 +269,7 @@ bool WedgeBuffer::BuiltFor(
 }
 
 void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
-  double radius, const Box& receivers)
+  double radius, const ReceiverBounds& receivers)
 {
   this->ObjectToWorld = objectToWorld;
   this->LightWorld = lightWorld;
@@ -298,14 +299,41 @@ void WedgeGeometry::Append(const WedgeGeometry& part, int floatsPerVertex)
 
 void WedgeBuffer::AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from,
   const glm::dvec3& to, const float* attributes, int attributeCount, const EdgeFace* faces,
-  bool frontFacesOnly) const
+  bool frontFacesOnly, bool pieceBounds) const
 {
-  Box receivers = this->Receivers;
-  receivers.Min -= this->Origin;
-  receivers.Max -= this->Origin;
-  const WedgeShape shape =
-    AppendWedgeBound(from, to, this->LightInWedgeSpace(), this->Radius, receivers, faces,
+  auto toWedgeSpace = [this](Box box)
+  {
+    box.Min -= this->Origin;
+    box.Max -= this->Origin;
+    return box;
+  };
+  const Box receivers = toWedgeSpace(this->Receivers.Whole);
+  WedgeShape shape;
+  if (pieceBounds && receivers.Valid && !this->Receivers.Pieces.empty())
+  {
+    std::vector<Box> pieces;
+    for (const Box& piece : this->Receivers.Pieces)
+    {
+      pieces.push_back(toWedgeSpace(piece));
+    }
+    shape =
+      AppendWedgeBoundInPieces(from, to, this->LightInWedgeSpace(), this->Radius, receivers, pieces,
+        faces, frontFacesOnly, attributes, attributeCount, geometry.Vertices, geometry.Indices);
+  }
+  else if (pieceBounds)
+  {
+    // No pieces: corners that hold every point, so that the fragment shader keeps them all.
+    constexpr float huge = std::numeric_limits<float>::max();
+    std::vector<float> withCorners(attributes, attributes + attributeCount);
+    withCorners.insert(withCorners.end(), { -huge, -huge, -huge, huge, huge, huge });
+    shape = AppendWedgeBound(from, to, this->LightInWedgeSpace(), this->Radius, receivers, faces,
+      frontFacesOnly, withCorners.data(), attributeCount + 6, geometry.Vertices, geometry.Indices);
+  }
+  else
+  {
+    shape = AppendWedgeBound(from, to, this->LightInWedgeSpace(), this->Radius, receivers, faces,
       frontFacesOnly, attributes, attributeCount, geometry.Vertices, geometry.Indices);
+  }
   if (shape == WedgeShape::Nothing)
   {
     return; // the bound misses the receivers' box: nothing to draw
@@ -350,13 +378,14 @@ bool WedgeCache::Update(const MeshCache& mesh, const VolumeCache& centre,
   const Box& receivers)
 {
   this->Used = true;
+  const ReceiverBounds whole{ receivers, {} }; // its shader takes no pieces
   if (this->VolumeGeneration == centre.Generation &&
-    this->BuiltFor(objectToWorld, lightWorld, radius) && this->Receivers == receivers)
+    this->BuiltFor(objectToWorld, lightWorld, radius) && this->Receivers == whole)
   {
     return false;
   }
   this->VolumeGeneration = centre.Generation;
-  this->Reset(objectToWorld, lightWorld, radius, receivers);
+  this->Reset(objectToWorld, lightWorld, radius, whole);
   const std::vector<SilhouetteEdge>& silhouette = centre.Volume.Silhouette;
   AppendInRuns(*this, silhouette.size(), FloatsPerVertex,
     [&](WedgeGeometry& geometry, std::size_t k)
@@ -378,12 +407,13 @@ const std::vector<VertexAttribute>& CountingWedgeCache::Attributes()
 {
   static const std::vector<VertexAttribute> attributes = { { "vertexMC", 0, 4 },
     { "edgeFrom", 4, 3 }, { "edgeTo", 7, 3 }, { "faceNormal0", 10, 3 }, { "faceNormal1", 13, 3 },
-    { "faceSigns", 16, 2 }, { "centreNormal", 18, 3 } };
+    { "faceSigns", 16, 2 }, { "centreNormal", 18, 3 }, { "pieceMin", 21, 3 },
+    { "pieceMax", 24, 3 } };
   return attributes;
 }
 
 bool CountingWedgeCache::Update(const MeshCache& mesh, const glm::dmat4& objectToWorld,
-  const glm::dvec4& lightWorld, double radius, bool frontFacesOnly, const Box& receivers)
+  const glm::dvec4& lightWorld, double radius, bool frontFacesOnly, const ReceiverBounds& receivers)
 {
   this->Used = true;
   const bool sameSilhouette = this->MeshGeneration == mesh.Generation &&
@@ -414,7 +444,8 @@ void CountingWedgeCache::AppendPotentialEdge(WedgeGeometry& geometry, const Cast
   const glm::vec3 centreNormal = glm::vec3(EdgeLightNormal(from, to, light));
   for (std::uint32_t first = 0; first < edge.UseCount; first += 2)
   {
-    float attributes[FloatsPerVertex - 4] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0,
+    // The piece's corners follow, added per piece by AppendEdgeTo.
+    float attributes[FloatsPerVertex - 10] = { fromF.x, fromF.y, fromF.z, toF.x, toF.y, toF.z, 0, 0,
       0, 0, 0, 0, 0, 0, centreNormal.x, centreNormal.y, centreNormal.z };
     EdgeFace faces[2];
     std::uint32_t faceCount = 0;
@@ -431,8 +462,8 @@ void CountingWedgeCache::AppendPotentialEdge(WedgeGeometry& geometry, const Cast
       }
       attributes[12 + faceCount] = static_cast<float>(faces[faceCount].Sign);
     }
-    this->AppendEdgeTo(geometry, from, to, attributes, FloatsPerVertex - 4,
-      faceCount == 2 ? faces : nullptr, this->FrontFacesOnly);
+    this->AppendEdgeTo(geometry, from, to, attributes, FloatsPerVertex - 10,
+      faceCount == 2 ? faces : nullptr, this->FrontFacesOnly, true);
   }
 }
 

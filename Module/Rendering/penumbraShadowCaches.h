@@ -131,7 +131,7 @@ struct WedgeBuffer : WedgeGeometry
   glm::dmat4 ObjectToWorld{ 0.0 };
   glm::dvec4 LightWorld{ 0.0 };
   double Radius = -1.0;
-  Box Receivers; ///< world space; no receiver lies outside it
+  ReceiverBounds Receivers; ///< world space; no receiver lies outside them
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLBufferObject> IndexBuffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
@@ -150,14 +150,16 @@ struct WedgeBuffer : WedgeGeometry
   bool BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius) const;
   /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
-    const Box& receivers);
+    const ReceiverBounds& receivers);
   /// Appends the wedge of edge from -> to (wedge coordinates) to `geometry` (this buffer's, or
   /// one of several built at once), each vertex carrying `attributes`. With `faces` (a two-faced
   /// edge of a counting wedge), the wedge is also cut to the sector where the edge is a
-  /// silhouette (penumbra::SilhouetteSector).
+  /// silhouette (penumbra::SilhouetteSector). With `pieceBounds` (counting wedges), it is cut
+  /// to each of the receivers' pieces where there are some, every vertex followed by its
+  /// piece's corners (AppendWedgeBoundInPieces), or by corners that hold everything.
   void AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from, const glm::dvec3& to,
     const float* attributes, int attributeCount, const EdgeFace* faces = nullptr,
-    bool frontFacesOnly = false) const;
+    bool frontFacesOnly = false, bool pieceBounds = false) const;
   std::size_t IndexCount() const { return this->Indices.size(); }
   /// Bytes of the uploaded vertex and index buffers.
   std::size_t UploadedBytes() const
@@ -195,15 +197,16 @@ struct CountingWedgeCache : WedgeBuffer
   bool VerticesBuilt = false;
 
   /// position (4), edge from (3), edge to (3), two face normals (3 + 3), their signs (2), the
-  /// normal of the plane through the edge and the light's centre (3)
-  static constexpr int FloatsPerVertex = 21;
+  /// normal of the plane through the edge and the light's centre (3), the min and max corners
+  /// of the receivers' piece the vertex's polyhedron lies in (3 + 3)
+  static constexpr int FloatsPerVertex = 27;
   static const std::vector<VertexAttribute>& Attributes();
   /// Finds the potential silhouette again when the mesh, the actor's matrix, the light, its
   /// radius or the counting rule changed, and drops the wedges when the receivers' box did too;
   /// returns true when it found it again. The wedges themselves wait for BuildVertices, so that
   /// a light that ends up averaging never builds them.
   bool Update(const MeshCache& mesh, const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld,
-    double radius, bool frontFacesOnly, const Box& receivers);
+    double radius, bool frontFacesOnly, const ReceiverBounds& receivers);
   /// Builds the wedges of the potential silhouette, on all threads.
   void BuildVertices(const MeshCache& mesh);
 

@@ -174,7 +174,10 @@ public:
   virtual bool ShadowsTranslucentCasters() const { return false; }
   /// Brings this technique's caches of one caster for the light, beyond the samples' volumes,
   /// up to date; returns the silhouette updates it made.
-  virtual vtkIdType UpdateCaster(const ShadowLight&, CasterCache&, const Box&) { return 0; }
+  virtual vtkIdType UpdateCaster(const ShadowLight&, CasterCache&, const ReceiverBounds&)
+  {
+    return 0;
+  }
   /// Once the light's technique and casters are final for the frame, before anything is drawn.
   virtual void PrepareLight(const ShadowLight&, const std::vector<CasterCache*>&) {}
   /// Prepares the light's targets before its volumes are drawn (its layer bound and cleared).

@@ -18,10 +18,10 @@ namespace penumbra
 {
 
 vtkIdType WedgeTechnique::UpdateCaster(
-  const ShadowLight& light, CasterCache& caster, const Box& receivers)
+  const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers)
 {
   caster.Wedges[light.Light].Update(*caster.Mesh, caster.Volumes[light.VolumeKey(0)],
-    caster.ObjectToWorld, light.World, light.SoftRadius, receivers);
+    caster.ObjectToWorld, light.World, light.SoftRadius, receivers.Whole);
   return 0; // the centre volume's update is the silhouette update
 }
 

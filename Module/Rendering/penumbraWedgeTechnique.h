@@ -19,7 +19,7 @@ public:
   /// Rebuilds the caster's wedges when its centre silhouette, matrix, the light or the
   /// receivers' box changed.
   vtkIdType UpdateCaster(
-    const ShadowLight& light, CasterCache& caster, const Box& receivers) override;
+    const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers) override;
   /// The centre's volume was also counted over the background: put it back to fully lit.
   void ResolveSample(ShadowFrame& frame, const ShadowLight& light, std::size_t k) override;
   /// Adds every caster's wedges into the layer, then caps it by the horizon.

@@ -125,8 +125,9 @@ public:
   }
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
-  /// Holds every receiver (penumbra::StableReceiverBox): wedges are cut to it.
-  penumbra::Box ReceiverBox;
+  /// Every receiver's box (penumbra::StableReceiverBox) and its pieces around each receiver:
+  /// wedges are cut to them.
+  penumbra::ReceiverBounds ReceiverBounds;
   void UpdateReceiverBox();
   /// Holds every visible prop, UseBounds or not, so every pixel's visible point: the depth
   /// range and the volumes' scissors are narrowed to it. Invalid when a prop has no finite bounds.
@@ -803,15 +804,23 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
 void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
 {
   penumbra::Box current;
-  for (vtkProp* prop : this->Receivers)
+  std::vector<penumbra::Box> each(this->Receivers.size());
+  for (std::size_t r = 0; r < this->Receivers.size(); ++r)
   {
-    if (ExtendByProp(current, prop) != PropExtent::Finite)
+    if (ExtendByProp(each[r], this->Receivers[r]) != PropExtent::Finite)
     {
-      this->ReceiverBox = penumbra::Box(); // a receiver of unknown extent: nothing to cut to
+      this->ReceiverBounds = {}; // a receiver of unknown extent: nothing to cut to
       return;
     }
+    current.Extend(each[r].Min, each[r].Max);
   }
-  this->ReceiverBox = penumbra::StableReceiverBox(this->ReceiverBox, current);
+  penumbra::ReceiverBounds& bounds = this->ReceiverBounds;
+  bounds.Whole = penumbra::StableReceiverBox(bounds.Whole, current);
+  for (penumbra::Box& box : each)
+  {
+    box = penumbra::ReceiverPieceBox(bounds.Whole, box);
+  }
+  bounds.Pieces = penumbra::DisjointPieces(each);
 }
 
 void vtkSoftShadowPass::RemoveReceiverKeys()
@@ -1031,7 +1040,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
       continue; // translucent casters: UpdateTranslucentVolumes
     }
     updates += penumbra::ShadowVolumeRenderer::UpdateOpaque(light, *caster);
-    updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBox);
+    updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBounds);
   }
   return updates;
 }

@@ -7,6 +7,7 @@
 #include "penumbraCheck.h"
 #include "penumbraConvexClip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -200,6 +201,71 @@ void TestStableReceiverBox()
   Check(!StableReceiverBox(first, infinite).Valid, "an infinite box: no box to cut to");
 }
 
+/// DisjointPieces of random overlapping boxes: every random point of their union lies in exactly
+/// one piece (half-open), and no point outside it in any; each receiver's piece box holds it with
+/// a margin and stays put while it moves a little.
+void TestDisjointPieces(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> coordinate(-4.0, 4.0), size(0.1, 3.0), unit(0.0, 1.0);
+  int trials = 0, wrongCount = 0, outsideCounted = 0, pieceTotal = 0;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    std::vector<Box> boxes(1 + trial % 6);
+    for (Box& box : boxes)
+    {
+      const glm::dvec3 corner(coordinate(rng), coordinate(rng), coordinate(rng));
+      box.Extend(corner, corner + glm::dvec3(size(rng), size(rng), size(rng)));
+    }
+    const std::vector<Box> pieces = DisjointPieces(boxes);
+    pieceTotal += static_cast<int>(pieces.size());
+    for (int sample = 0; sample < 400; ++sample)
+    {
+      const glm::dvec3 p(
+        coordinate(rng) + unit(rng), coordinate(rng) + unit(rng), coordinate(rng) + unit(rng));
+      auto holds = [&p](const Box& box, bool halfOpen)
+      {
+        return glm::all(glm::lessThanEqual(box.Min, p)) &&
+          (halfOpen ? glm::all(glm::lessThan(p, box.Max))
+                    : glm::all(glm::lessThanEqual(p, box.Max)));
+      };
+      const bool inUnion =
+        std::any_of(boxes.begin(), boxes.end(), [&](const Box& box) { return holds(box, true); });
+      const auto count = std::count_if(
+        pieces.begin(), pieces.end(), [&](const Box& piece) { return holds(piece, true); });
+      wrongCount += inUnion ? count != 1 : 0;
+      outsideCounted += !inUnion && count != 0;
+    }
+    ++trials;
+  }
+  std::printf("     %d unions of 1 to 6 boxes: %d pieces, %d points counted other than once, %d "
+              "outside counted\n",
+    trials, pieceTotal, wrongCount, outsideCounted);
+  Check(wrongCount == 0, "every point of the union lies in exactly one piece");
+  Check(outsideCounted == 0, "no point outside the union lies in a piece");
+
+  Box a, b;
+  a.Extend(glm::dvec3(0), glm::dvec3(2));
+  b.Extend(glm::dvec3(1), glm::dvec3(3));
+  Check(DisjointPieces({ a, b }, 1).size() == 1 && DisjointPieces({ a, b }, 1)[0].Max.x == 3.0,
+    "more boxes than allowed: their bounds, as one piece");
+  Check(DisjointPieces({ Box{} }).empty(), "no valid box: no piece");
+  Check(DisjointPieces({ a }).size() == 1, "one box: itself");
+
+  Box receivers, ground;
+  receivers.Extend(glm::dvec3(-6, -2, -6), glm::dvec3(6, 4, 6));
+  ground.Extend(glm::dvec3(-5, 0, -5), glm::dvec3(5, 0, 5));
+  const Box piece = ReceiverPieceBox(receivers, ground);
+  const double margin = 0.01 * receivers.Diagonal();
+  Check(piece.Min.y <= -margin && piece.Max.y >= margin && piece.Max.y < 0.1 * receivers.Diagonal(),
+    "a flat receiver's piece is a thin slab around it");
+  Box nudged = ground;
+  nudged.Min.y = nudged.Max.y = 1e-4;
+  const Box same = ReceiverPieceBox(receivers, nudged);
+  Check(
+    same.Min == piece.Min && same.Max == piece.Max, "a receiver moved a little keeps its piece");
+  Check(!ReceiverPieceBox(Box{}, ground).Valid, "no receivers' box: no piece");
+}
+
 } // namespace
 
 int main()
@@ -208,5 +274,6 @@ int main()
   TestSpecialCases();
   TestStableReceiverBox();
   TestRandomCuts(rng);
+  TestDisjointPieces(rng);
   return penumbra_test::Finish();
 }

@@ -31,6 +31,8 @@ flat in vec3 faceNormal0VS;
 flat in vec3 faceNormal1VS;
 flat in vec2 faceSignsVS;
 flat in vec3 centreNormalVS;
+flat in vec3 pieceMinVS;
+flat in vec3 pieceMaxVS;
 
 float faceWeight(vec3 normal, vec3 fromEdge)
 {
@@ -45,6 +47,12 @@ void main()
   float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
   vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
+  // The view ray may cross the wedge's polyhedra in several receivers' pieces: only the piece
+  // that holds p counts it (penumbra::AppendWedgeBoundInPieces; pieces are half-open).
+  if (any(lessThan(p, pieceMinVS)) || any(greaterThanEqual(p, pieceMaxVS)))
+  {
+    discard;
+  }
 
   vec3 fromP = edgeFromVS - p;
   int multiplicity = int(faceSignsVS.x * faceWeight(faceNormal0VS, -fromP) +

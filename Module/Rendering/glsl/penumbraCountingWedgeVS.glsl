@@ -1,8 +1,8 @@
 //VTK::System::Dec
 // One potential-silhouette wedge per (edge, up to two of its faces), as penumbraWedgeVS.glsl:
 // positions relative to the wedge origin (w = 1), far edges as directions (w = 0), and w = 2 for
-// a clip-space full-viewport triangle on the far plane (see penumbraWedgeVS.glsl). The edge and
-// its faces pass through unchanged.
+// a clip-space full-viewport triangle on the far plane (see penumbraWedgeVS.glsl). The edge, its
+// faces and the receivers' piece the polyhedron was cut to pass through unchanged.
 in vec4 vertexMC;
 in vec3 edgeFrom;
 in vec3 edgeTo;
@@ -10,6 +10,8 @@ in vec3 faceNormal0;
 in vec3 faceNormal1;
 in vec2 faceSigns;
 in vec3 centreNormal;
+in vec3 pieceMin;
+in vec3 pieceMax;
 
 uniform mat4 MCDCMatrix;
 // Clip-space scale (xy) and offset (zw) that put the counter texel centres on the pixel centres
@@ -22,6 +24,8 @@ flat out vec3 faceNormal0VS;
 flat out vec3 faceNormal1VS;
 flat out vec2 faceSignsVS;
 flat out vec3 centreNormalVS;
+flat out vec3 pieceMinVS;
+flat out vec3 pieceMaxVS;
 
 void main()
 {
@@ -31,6 +35,8 @@ void main()
   faceNormal1VS = faceNormal1;
   faceSignsVS = faceSigns;
   centreNormalVS = centreNormal;
+  pieceMinVS = pieceMin;
+  pieceMaxVS = pieceMax;
   if (vertexMC.w > 1.5)
   {
     gl_Position = vec4(vertexMC.xy, 1.0, 1.0); // covers every counter texel at any scale
