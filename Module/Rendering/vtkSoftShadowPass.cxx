@@ -135,6 +135,11 @@ public:
   void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
+  /// The largest width or height the light-intensity layers (3D textures) can take here, read
+  /// once per window; 0 until read.
+  int MaxLayerSize = 0;
+  vtkOpenGLRenderWindow* MaxLayerSizeWindow = nullptr;
+  bool WarnedLayerSize = false;
   std::set<vtkLight*> WarnedReachingLights;
 
   std::string ShaderConfiguration;
@@ -422,6 +427,10 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
     internals.LightsPass->Render(s);
     this->CollectShadowingLights(renderer);
+    if (!internals.Lights.empty() && !this->LayersFit(window))
+    {
+      internals.Lights.clear(); // drawn as VTK draws it, unshadowed, rather than black
+    }
   }
   this->UpdateShaderConfiguration();
 
@@ -1365,6 +1374,35 @@ void vtkSoftShadowPass::WarnOfLightsReachingTheScene(vtkRenderer* renderer)
                                   "are wrong. Give it a radius below that distance.");
     }
   }
+}
+
+bool vtkSoftShadowPass::LayersFit(vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.MaxLayerSizeWindow != window)
+  {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
+    internals.MaxLayerSize = size;
+    internals.MaxLayerSizeWindow = window;
+  }
+  const int largest = std::max(internals.Size[0], internals.Size[1]);
+  if (largest <= internals.MaxLayerSize)
+  {
+    internals.WarnedLayerSize = false;
+    return true;
+  }
+  if (!internals.WarnedLayerSize)
+  {
+    vtkWarningMacro("The frame is " << internals.Size[0] << "x" << internals.Size[1]
+                                    << " pixels, but this OpenGL's 3D textures, which hold the "
+                                       "shadows' light intensity, reach "
+                                    << internals.MaxLayerSize
+                                    << " pixels at most: the scene is drawn without shadows "
+                                       "at this size.");
+    internals.WarnedLayerSize = true;
+  }
+  return false;
 }
 
 void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)

@@ -51,6 +51,7 @@
 #include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtk_glew.h"
 
 #include <array>
 #include <cmath>
@@ -915,6 +916,47 @@ void TestDataObjectSwapped()
   }
 }
 
+/// A frame wider or taller than the light-intensity layers can be (3D textures: 2048 pixels on
+/// llvmpipe) is drawn as VTK draws it, unshadowed, with one warning, not black; the shadows come
+/// back at a size that fits.
+void TestOversizedFrame()
+{
+  PassScene view(200, 150);
+  view.Window->SetOffScreenRendering(1); // larger than the screen
+  view.Ground();
+  view.Sphere(0, 1, 0, 0.6);
+  view.Camera(3, 4, 7, 0, 0.5, 0);
+  view.Window->Render();
+  view.Window->MakeCurrent();
+  GLint max3D = 0, max2D = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max2D);
+  if (max3D >= max2D || max3D >= 8192)
+  {
+    std::printf("     3D textures reach %d pixels, 2D %d: no frame to test here\n", max3D, max2D);
+    return;
+  }
+  const WarningLog log(view.Pass);
+  view.Window->SetSize(max3D + 1, 40);
+  view.Window->Render();
+  view.Window->Render();
+  const std::vector<unsigned char> shown = WindowColours(view.Window, view.Renderer);
+  const int lights = view.Pass->GetNumberOfShadowingLights();
+  view.Pass->ShadowsEnabledOff();
+  view.Window->Render();
+  const std::vector<unsigned char> plain = WindowColours(view.Window, view.Renderer);
+  view.Pass->ShadowsEnabledOn();
+  const bool lit = std::any_of(shown.begin(), shown.end(), [](unsigned char c) { return c > 0; });
+  std::printf("     %dx40 (3D textures reach %d): %d shadowing lights, %lld warnings\n", max3D + 1,
+    max3D, lights, static_cast<long long>(log.Count("3D textures")));
+  Check(lit && shown == plain && lights == 0,
+    "a frame too large for the layers is drawn as VTK draws it, unshadowed");
+  Check(log.Count("3D textures") == 1, "one warning for it, not one a frame");
+  view.Window->SetSize(200, 150);
+  view.Window->Render();
+  Check(view.Pass->GetNumberOfShadowingLights() == 1, "a frame that fits has its shadows again");
+}
+
 /// The tight depth range draws the shadows with a copy of the camera: the user's camera is not
 /// modified, so a pipeline that depends on it (vtkDepthSortPolyData) does not run again and a
 /// still scene reuses its shadows. The copy is made active only while VTK draws props into the
@@ -985,6 +1027,7 @@ int main(int argc, char* argv[])
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
     { "CameraLeftAlone", TestCameraLeftAlone },
     { "DataObjectSwapped", TestDataObjectSwapped },
+    { "OversizedFrame", TestOversizedFrame },
   };
   return RunFeatures(argc, argv, features);
 }
