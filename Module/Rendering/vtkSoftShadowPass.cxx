@@ -135,6 +135,8 @@ public:
   void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
+  bool WarnedNested = false;
+  bool WarnedNoDelegate = false;
   /// The largest width or height the light-intensity layers (3D textures) can take here, read
   /// once per window; 0 until read.
   int MaxLayerSize = 0;
@@ -394,11 +396,53 @@ bool vtkSoftShadowPass::LightCastsShadows(vtkLight* light)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// The soft shadow passes rendering on this thread, outermost first, for as long as one scope
+/// lives.
+class RenderingPasses
+{
+public:
+  explicit RenderingPasses(const vtkSoftShadowPass* pass) { Active().push_back(pass); }
+  ~RenderingPasses() { Active().pop_back(); }
+  RenderingPasses(const RenderingPasses&) = delete;
+  RenderingPasses& operator=(const RenderingPasses&) = delete;
+  static std::vector<const vtkSoftShadowPass*>& Active()
+  {
+    static thread_local std::vector<const vtkSoftShadowPass*> active;
+    return active;
+  }
+};
+} // namespace
+
 void vtkSoftShadowPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
   vtkInternals& internals = *this->Internals;
   this->NumberOfRenderedProps = 0;
+  // One pass shadows a frame: another inside its delegate chain would edit the same shaders
+  // again, and a pass inside its own chain would recurse for ever.
+  const std::vector<const vtkSoftShadowPass*>& active = RenderingPasses::Active();
+  if (!active.empty())
+  {
+    const bool cycle = std::find(active.begin(), active.end(), this) != active.end();
+    if (!internals.WarnedNested)
+    {
+      vtkWarningMacro(<< (cycle ? "This pass is in its own delegate chain: it draws nothing "
+                                  "the second time."
+                                : "This pass is in the delegate chain of another "
+                                  "vtkSoftShadowPass, which shadows the frame: it draws its "
+                                  "delegate unshadowed."));
+      internals.WarnedNested = true;
+    }
+    if (!cycle)
+    {
+      RenderingPasses rendering(this);
+      this->RenderDelegate(s);
+    }
+    return;
+  }
+  RenderingPasses rendering(this);
 
   using Stage = penumbra::StageTimes::Stage;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
@@ -609,9 +653,10 @@ void vtkSoftShadowPass::RenderDelegate(const vtkRenderState* s)
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   }
-  else
+  else if (!this->Internals->WarnedNoDelegate)
   {
     vtkWarningMacro("No delegate pass: nothing is rendered.");
+    this->Internals->WarnedNoDelegate = true;
   }
 }
 

@@ -916,6 +916,46 @@ void TestDataObjectSwapped()
   }
 }
 
+/// A soft shadow pass inside another's delegate chain draws its delegate unshadowed (the outer
+/// one shadows the frame) and a pass inside its own chain draws nothing the second time: one
+/// warning each, no receiver shader edited twice, no endless recursion.
+void TestNestedPasses()
+{
+  PassScene view(200, 150);
+  view.Ground();
+  view.Sphere(0, 1, 0, 0.6);
+  view.Camera(3, 4, 7, 0, 0.5, 0);
+  view.Window->Render();
+  const std::vector<unsigned char> alone = WindowColours(view.Window, view.Renderer);
+  vtkNew<vtkSoftShadowPass> inner;
+  const WarningLog innerLog(inner);
+  view.Pass->SetDelegatePass(inner);
+  view.Window->Render();
+  view.Window->Render();
+  const std::vector<unsigned char> nested = WindowColours(view.Window, view.Renderer);
+  std::printf("     nested: %lld warnings, frame %s the pass's alone\n",
+    static_cast<long long>(innerLog.Count("delegate chain of another")),
+    nested == alone ? "equal to" : "unlike");
+  Check(nested == alone && view.Pass->GetNumberOfShadowingLights() == 1,
+    "a pass inside another's chain: the outer one's shadows, drawn once");
+  Check(innerLog.Count("delegate chain of another") == 1, "one warning for the inner pass");
+
+  vtkNew<vtkSoftShadowPass> cyclic;
+  const WarningLog cyclicLog(cyclic);
+  vtkNew<vtkSequencePass> loop;
+  vtkNew<vtkRenderPassCollection> steps;
+  steps->AddItem(cyclic);
+  loop->SetPasses(steps);
+  cyclic->SetDelegatePass(loop);
+  view.Renderer->SetPass(cyclic);
+  view.Window->Render();
+  view.Window->Render();
+  Check(cyclicLog.Count("its own delegate chain") == 1,
+    "a pass inside its own chain: one warning, no endless recursion");
+  cyclic->SetDelegatePass(nullptr); // the cycle holds itself
+  view.Renderer->SetPass(view.Pass);
+}
+
 /// A frame wider or taller than the light-intensity layers can be (3D textures: 2048 pixels on
 /// llvmpipe) is drawn as VTK draws it, unshadowed, with one warning, not black; the shadows come
 /// back at a size that fits.
@@ -1028,6 +1068,7 @@ int main(int argc, char* argv[])
     { "CameraLeftAlone", TestCameraLeftAlone },
     { "DataObjectSwapped", TestDataObjectSwapped },
     { "OversizedFrame", TestOversizedFrame },
+    { "NestedPasses", TestNestedPasses },
   };
   return RunFeatures(argc, argv, features);
 }
