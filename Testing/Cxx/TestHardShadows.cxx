@@ -26,13 +26,19 @@ namespace
 
 using Scene = PassScene;
 
-void TestClassic()
+/// A sphere and a box on the ground, seen from above and in front.
+void AddClassicScene(Scene& scene)
 {
-  Scene scene;
   scene.Ground();
   scene.Sphere(-0.8, 0.9, 0, 0.7);
   scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
   scene.Camera(3, 4, 7, 0, 0.5, 0);
+}
+
+void TestClassic()
+{
+  Scene scene;
+  AddClassicScene(scene);
   CheckAgainstTruth("classic scene, point light", scene.Render());
   Check(scene.Pass->GetNumberOfShadowingLights() == 1, "classic: one shadowing light");
   Check(scene.Pass->GetNumberOfZFailVolumes() == 0, "classic: eye outside all volumes, z-pass");
@@ -48,10 +54,7 @@ void TestClassic()
 void TestExplicitProjection()
 {
   Scene scene;
-  scene.Ground();
-  scene.Sphere(-0.8, 0.9, 0, 0.7);
-  scene.Box(1.0, 0.6, 0.3, 0.8, 1.2, 0.8);
-  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  AddClassicScene(scene);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   vtkNew<vtkMatrix4x4> projection;
   projection->DeepCopy(
