@@ -277,6 +277,12 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
   this->Receivers = receivers;
   this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
                                      : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  this->PiecesInWedgeSpace = receivers.Pieces;
+  for (Box& piece : this->PiecesInWedgeSpace)
+  {
+    piece.Min -= this->Origin;
+    piece.Max -= this->Origin;
+  }
   this->Vertices.clear();
   this->Indices.clear();
   this->Wedges = this->Fallbacks = this->FullViewport = 0;
@@ -301,24 +307,15 @@ void WedgeBuffer::AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from,
   const glm::dvec3& to, const float* attributes, int attributeCount, const EdgeFace* faces,
   bool frontFacesOnly, bool pieceBounds) const
 {
-  auto toWedgeSpace = [this](Box box)
-  {
-    box.Min -= this->Origin;
-    box.Max -= this->Origin;
-    return box;
-  };
-  const Box receivers = toWedgeSpace(this->Receivers.Whole);
+  Box receivers = this->Receivers.Whole;
+  receivers.Min -= this->Origin;
+  receivers.Max -= this->Origin;
   WedgeShape shape;
-  if (pieceBounds && receivers.Valid && !this->Receivers.Pieces.empty())
+  if (pieceBounds && receivers.Valid && !this->PiecesInWedgeSpace.empty())
   {
-    std::vector<Box> pieces;
-    for (const Box& piece : this->Receivers.Pieces)
-    {
-      pieces.push_back(toWedgeSpace(piece));
-    }
-    shape =
-      AppendWedgeBoundInPieces(from, to, this->LightInWedgeSpace(), this->Radius, receivers, pieces,
-        faces, frontFacesOnly, attributes, attributeCount, geometry.Vertices, geometry.Indices);
+    shape = AppendWedgeBoundInPieces(from, to, this->LightInWedgeSpace(), this->Radius, receivers,
+      this->PiecesInWedgeSpace, faces, frontFacesOnly, attributes, attributeCount,
+      geometry.Vertices, geometry.Indices);
   }
   else if (pieceBounds)
   {

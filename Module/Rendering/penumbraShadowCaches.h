@@ -131,7 +131,8 @@ struct WedgeBuffer : WedgeGeometry
   glm::dmat4 ObjectToWorld{ 0.0 };
   glm::dvec4 LightWorld{ 0.0 };
   double Radius = -1.0;
-  ReceiverBounds Receivers; ///< world space; no receiver lies outside them
+  ReceiverBounds Receivers;            ///< world space; no receiver lies outside them
+  std::vector<Box> PiecesInWedgeSpace; ///< Receivers.Pieces relative to Origin
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkOpenGLBufferObject> IndexBuffer;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
