@@ -49,6 +49,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace penumbra
 {
@@ -315,6 +316,22 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
       surfaces[i].ViewProp = prop;
     }
   }
+  // A matrix that flattens the surface (a zero scale) has no inverse to put the light into the
+  // mesh's coordinates: such a surface is left out, said once, rather than cast wrongly.
+  const auto singular = std::remove_if(surfaces.begin(), surfaces.end(),
+    [this, owner](const DrawnSurface& surface)
+    {
+      const double determinant = glm::determinant(glm::dmat3(surface.ObjectToWorld));
+      if (std::abs(determinant) > 0.0 && std::isfinite(determinant))
+      {
+        return false;
+      }
+      this->Warn(owner, surface.Actor,
+        "is drawn through a singular matrix (a zero scale), which flattens it: it casts no "
+        "shadow");
+      return true;
+    });
+  surfaces.erase(singular, surfaces.end());
   this->Clipped.PurgeUnused();
   return surfaces;
 }

@@ -465,6 +465,16 @@ void TestBadInput()
   const std::size_t before = warnings.Messages.size();
   scene.Window->Render();
   Check(warnings.Messages.size() == before, "warnings are not repeated every frame");
+
+  // A zero scale flattens a sphere into a disc, which VTK draws: with no inverse to take the
+  // light into its mesh's coordinates it casts nothing, said once; the others still cast.
+  vtkActor* flattened = scene.Sphere(1.5, 1, 0, 0.4);
+  flattened->SetScale(0, 1, 1);
+  scene.Window->Render();
+  scene.Window->Render();
+  Check(warnings.Count("singular matrix") == 1 && warnings.Messages.size() == before + 1 &&
+      scene.Pass->GetNumberOfShadowVolumeTriangles() > 0,
+    "a flattening matrix: one warning, the other casters still cast");
 }
 
 /// One pass drawn into two windows in turn (found crashing llvmpipe once the second window drew
