@@ -53,6 +53,25 @@ void AppendPolyhedron(const ConvexPolyhedron& cut, const float* attributes, int 
     indices.push_back(first + index);
   }
 }
+
+/// EdgeBound's half-spaces for an edge cut to receivers, with, given the edge's two `faces`, its
+/// silhouette sector's, pushed out by a fraction of the receivers' box (well beyond the depth
+/// buffer's error) so that points on the caster's faces next to the edge stay inside.
+WedgeShape CutBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
+  double radius, const Box& receivers, const EdgeFace* faces, bool frontFacesOnly,
+  std::vector<HalfSpace>& halfSpaces)
+{
+  Wedge wedge;
+  LightPyramid pyramid;
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
+  if (faces && wedge.Valid)
+  {
+    const std::vector<HalfSpace> sector = SilhouetteSector(
+      wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
+    halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
+  }
+  return shape;
+}
 } // namespace
 
 WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec4& light,
@@ -80,33 +99,22 @@ WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const 
       indices.push_back(first + index);
     }
   };
-  Wedge wedge;
-  LightPyramid pyramid;
   std::vector<HalfSpace> halfSpaces;
-  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
   if (receivers.Valid)
   {
-    if (faces && wedge.Valid)
-    {
-      // Pushed out by a fraction of the scene, well beyond the depth buffer's error, so that
-      // points on the caster's faces next to the edge stay inside.
-      const std::vector<HalfSpace> sector = SilhouetteSector(
-        wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
-      halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
-    }
+    const WedgeShape shape =
+      CutBound(from, to, light, radius, receivers, faces, frontFacesOnly, halfSpaces);
     const ConvexPolyhedron cut = ClipBox(receivers, halfSpaces);
     if (cut.Empty())
     {
       return WedgeShape::Nothing;
     }
-    std::vector<glm::dvec4> corners;
-    for (const glm::dvec3& p : cut.Points)
-    {
-      corners.emplace_back(p, 1.0);
-    }
-    emitShape(corners, cut.Triangles);
+    AppendPolyhedron(cut, attributes, attributeCount, nullptr, 0, vertices, indices);
     return shape;
   }
+  Wedge wedge;
+  LightPyramid pyramid;
+  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
   if (shape == WedgeShape::Planes)
   {
     emitShape(wedge.Vertices, Wedge::Triangles());
@@ -129,16 +137,9 @@ WedgeShape AppendWedgeBoundInPieces(const glm::dvec3& from, const glm::dvec3& to
   const EdgeFace* faces, bool frontFacesOnly, const float* attributes, int attributeCount,
   std::vector<float>& vertices, std::vector<std::uint32_t>& indices)
 {
-  Wedge wedge;
-  LightPyramid pyramid;
   std::vector<HalfSpace> halfSpaces;
-  const WedgeShape shape = EdgeBound(from, to, light, radius, wedge, pyramid, halfSpaces);
-  if (faces && wedge.Valid)
-  {
-    const std::vector<HalfSpace> sector = SilhouetteSector(
-      wedge, from, to, faces, 2, frontFacesOnly, SectorMargin * receivers.Diagonal());
-    halfSpaces.insert(halfSpaces.end(), sector.begin(), sector.end());
-  }
+  const WedgeShape shape =
+    CutBound(from, to, light, radius, receivers, faces, frontFacesOnly, halfSpaces);
   bool drawn = false;
   for (const Box& piece : pieces)
   {
