@@ -181,7 +181,7 @@ std::size_t HalfResolutionCounts::GraphicsMemoryBytes() const
 
 void HalfResolutionCounts::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Framebuffer->ReleaseGraphicsResources(window);
+  ReleaseFramebuffer(this->Framebuffer, window);
   this->DepthStencil->ReleaseGraphicsResources(window);
   this->Visibility->ReleaseGraphicsResources(window);
   this->DepthVAO.ReleaseGraphicsResources();

@@ -19,8 +19,9 @@
 #include "penumbraOpenGLHelpers.h"
 
 #include "vtkNew.h"
-#include "vtkOpenGLFramebufferObject.h" // for vtkNew<vtkOpenGLFramebufferObject>
-#include "vtkTextureObject.h"           // for vtkNew<vtkTextureObject>
+#include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer<vtkOpenGLFramebufferObject>
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for vtkNew<vtkTextureObject>
 
 #include <glm/glm.hpp>
 
@@ -72,7 +73,8 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer =
+    vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkTextureObject> DepthStencil;
   vtkNew<vtkTextureObject> Visibility;
   void SetUniforms(

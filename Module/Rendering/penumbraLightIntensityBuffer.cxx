@@ -78,10 +78,10 @@ std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
 
 void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Framebuffer->ReleaseGraphicsResources(window);
+  ReleaseFramebuffer(this->Framebuffer, window);
   this->DepthStencil->ReleaseGraphicsResources(window);
   this->DepthCopy->ReleaseGraphicsResources(window);
-  this->DepthCopyFramebuffer->ReleaseGraphicsResources(window);
+  ReleaseFramebuffer(this->DepthCopyFramebuffer, window);
   this->Layers->ReleaseGraphicsResources(window);
   this->Width = this->Height = this->LayerCount = 0;
 }

@@ -11,8 +11,9 @@
 #define penumbraLightIntensityBuffer_h
 
 #include "vtkNew.h"
-#include "vtkOpenGLFramebufferObject.h" // for vtkNew
-#include "vtkTextureObject.h"           // for vtkNew
+#include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for vtkNew
 
 #include <cstddef>
 
@@ -48,10 +49,12 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer =
+    vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkTextureObject> DepthStencil;
   vtkNew<vtkTextureObject> DepthCopy;
-  vtkNew<vtkOpenGLFramebufferObject> DepthCopyFramebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthCopyFramebuffer =
+    vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkTextureObject> Layers;
   int Width = 0, Height = 0, LayerCount = 0;
 };

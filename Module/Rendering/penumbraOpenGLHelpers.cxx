@@ -1,6 +1,7 @@
 #include "penumbraOpenGLHelpers.h"
 
 #include "vtkObject.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
@@ -22,6 +23,12 @@ std::size_t TextureBytes(vtkTextureObject* texture)
   }
   return static_cast<std::size_t>(texture->GetWidth()) * texture->GetHeight() *
     std::max(1u, texture->GetDepth()) * static_cast<std::size_t>(texture->GetComponents()) * 4;
+}
+
+void ReleaseFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkWindow* window)
+{
+  framebuffer->ReleaseGraphicsResources(window);
+  framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
 }
 
 bool TextureNeedsAllocation(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,

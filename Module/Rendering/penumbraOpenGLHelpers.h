@@ -14,6 +14,7 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLState.h" // for the scoped savers
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkSmartPointer.h"
 
 #include <cstddef>
 #include <functional>
@@ -22,9 +23,11 @@
 #include <vector>
 
 class vtkObject;
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
+class vtkWindow;
 
 namespace penumbra
 {
@@ -38,6 +41,15 @@ std::size_t TextureBytes(vtkTextureObject* texture);
 /// `filter` (a vtkTextureObject filter) for the new storage.
 bool TextureNeedsAllocation(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width,
   int height, int depth, int components, int filter);
+
+/**
+ * Releases `framebuffer` in `window` and puts a new one in its place. VTK 9.1's framebuffer keeps
+ * a plain pointer to its window (SetContext(nullptr) leaves it): a released one would go on
+ * claiming a window that is gone, or one made later at its address, and skip taking the new
+ * window's context.
+ */
+void ReleaseFramebuffer(
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkWindow* window);
 
 /// Readies the pass's shader programs. One that does not build is reported once, with what the
 /// pass does instead, and nullptr returned.

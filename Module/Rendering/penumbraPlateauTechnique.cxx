@@ -285,7 +285,7 @@ std::size_t PlateauTechnique::GraphicsMemoryBytes() const
 void PlateauTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->HardShadowTechnique::ReleaseGraphicsResources(window);
-  this->Framebuffer->ReleaseGraphicsResources(window);
+  ReleaseFramebuffer(this->Framebuffer, window);
   this->Depth->ReleaseGraphicsResources(window);
   this->Vertices->ReleaseGraphicsResources();
   this->VAO->ReleaseGraphicsResources();

@@ -12,8 +12,9 @@
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
-#include "vtkOpenGLFramebufferObject.h" // for vtkNew
-#include "vtkTextureObject.h"           // for vtkNew
+#include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for vtkNew
 
 #include <set>
 #include <vector>
@@ -81,7 +82,8 @@ private:
   std::vector<double> Signature;
   glm::dvec2 Lo{ 0.0 }, Hi{ 0.0 };
   bool TextureCurrent = false;
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer =
+    vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkOpenGLBufferObject> Vertices;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;

@@ -13,6 +13,7 @@
 #include "penumbraSceneWalk.h"
 #include "penumbraShadowInputs.h"
 #include "penumbraStageTimes.h"
+#include "penumbraWindowReleaseCallback.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -172,6 +173,9 @@ public:
   std::vector<vtkProp*> DepthFromMeshes;
   vtkNew<vtkLightsPass> LightsPass;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  /// Releases the GPU resources in Window's context when that window goes, even while the pass
+  /// is off its renderer (which then does not release it).
+  std::unique_ptr<penumbra::WindowReleaseCallback> WindowRelease;
   std::vector<vtkSmartPointer<vtkImageData>> VisibilityImages;
 
   /// Depth, volumes and wedges share one camera; the scene is drawn with the user's.
@@ -230,12 +234,16 @@ vtkSoftShadowPass::vtkSoftShadowPass()
 {
   this->Internals->Owner = this;
   this->Internals->Programs.Owner = this;
+  this->Internals->WindowRelease.reset(new penumbra::WindowReleaseCallback(
+    [this](vtkWindow* w) { this->ReleaseGraphicsResources(w); }));
   vtkNew<vtkRendererSettingsPass> scene;
   this->SetDelegatePass(scene);
 }
 
 vtkSoftShadowPass::~vtkSoftShadowPass()
 {
+  // While Internals and the delegate still exist to be released.
+  this->Internals->WindowRelease->Release();
   this->SetDelegatePass(nullptr);
 }
 
@@ -457,7 +465,6 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   if (this->ShadowsEnabled && window && !selecting)
   {
     this->FollowWindow(window);
-    internals.Window = window;
     renderer->GetTiledSizeAndOrigin(
       &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
     // Inside a pass that draws into a framebuffer of its own (vtkSSAAPass renders into one
@@ -1454,13 +1461,7 @@ void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& internals = *this->Internals;
   vtkOpenGLRenderWindow* previous = internals.Window;
-  if (!previous || previous == window)
-  {
-    return;
-  }
-  // Textures, buffers and vertex arrays belong to the context they were made in: drawn with in
-  // another window's, they crash the driver. Release them in theirs; the next frame remakes them.
-  if (!internals.WarnedWindowChange)
+  if (previous && previous != window && !internals.WarnedWindowChange)
   {
     vtkWarningMacro("This pass draws into a second render window ("
       << window << " after " << previous
@@ -1468,9 +1469,11 @@ void vtkSoftShadowPass::FollowWindow(vtkOpenGLRenderWindow* window)
          "vtkSoftShadowPass of its own.");
     internals.WarnedWindowChange = true;
   }
-  previous->MakeCurrent();
-  this->ReleaseGraphicsResources(previous);
-  window->MakeCurrent();
+  // Textures, buffers and vertex arrays belong to the context they were made in: drawn with in
+  // another context, they crash the driver. The callback releases them in the window followed
+  // until now, in its context, and from now on when this window finalizes its context.
+  internals.WindowRelease->RegisterGraphicsResources(window);
+  internals.Window = window;
 }
 
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
@@ -1488,6 +1491,8 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.ResolveVAO.ReleaseGraphicsResources();
   internals.DepthPass->ReleaseGraphicsResources(w);
   internals.VisibilityImages.clear();
+  // A window made later may take this one's address.
+  internals.MaxLayerSizeWindow = nullptr;
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -440,7 +440,8 @@ private:
   /// Whether the frame's size fits the light-intensity layers (GL_MAX_3D_TEXTURE_SIZE); warns
   /// once while it does not.
   bool LayersFit(vtkOpenGLRenderWindow* window);
-  /// Before drawing into `window`: releases the GPU resources made in another window's context.
+  /// Before drawing into `window`: releases the GPU resources made in another window's context
+  /// and registers for the release of this one's.
   void FollowWindow(vtkOpenGLRenderWindow* window);
   /// Warns once per prop and problem that a receiver's shader could not be edited.
   void WarnShaderEdit(vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem);

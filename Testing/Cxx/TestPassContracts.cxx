@@ -966,6 +966,57 @@ void TestNestedPasses()
   view.Renderer->SetPass(view.Pass);
 }
 
+/// A pass taken off its renderer while its window's context goes (Finalize, or the window
+/// deleted), then set again or set in another window: the window released the pass's GPU
+/// objects in their own context, so it draws as a fresh pass does. Before, it drew with the
+/// dead context's objects: a segmentation fault in Mesa, or lost shadows.
+void TestContextGoneWhileDetached()
+{
+  for (const double radius : { 0.0, 0.3 })
+  {
+    auto setUp = [radius](PassScene& view)
+    {
+      view.Ground();
+      view.Sphere(0, 1, 0, 0.6);
+      view.Camera(3, 4, 7, 0, 0.5, 0);
+      vtkSoftShadowPass::SetLightRadius(view.Light, radius);
+    };
+    PassScene view(200, 150);
+    setUp(view);
+    view.Window->Render();
+    view.Renderer->SetPass(nullptr);
+    view.Window->Finalize();
+    view.Window->Render();
+    view.Renderer->SetPass(view.Pass);
+    view.Window->Render();
+    const int finalized = PixelsOffFreshPass(view);
+
+    // The pass outlives the window it drew into, then draws into a new one.
+    vtkSmartPointer<vtkSoftShadowPass> moved = view.Pass;
+    {
+      PassScene first(200, 150);
+      setUp(first);
+      first.Renderer->SetPass(moved);
+      first.Window->Render();
+      first.Renderer->SetPass(nullptr);
+    }
+    PassScene second(200, 150);
+    setUp(second);
+    second.Renderer->SetPass(moved);
+    second.Window->Render();
+    second.Window->Render();
+    const std::vector<unsigned char> shown = WindowColours(second.Window, second.Renderer);
+    second.Renderer->SetPass(second.Pass);
+    second.Window->Render();
+    const bool sameAsFresh = shown == WindowColours(second.Window, second.Renderer);
+    std::printf("     radius %.1f: %d px off a fresh pass after Finalize; moved pass %s\n", radius,
+      finalized, sameAsFresh ? "equal to a fresh pass" : "unlike a fresh pass");
+    Check(finalized == 0 && view.Pass->GetNumberOfShadowingLights() == 1,
+      "a pass set again after its window was finalized draws as a fresh pass");
+    Check(sameAsFresh, "a pass whose window was deleted draws in a new window as a fresh pass");
+  }
+}
+
 /// A frame wider or taller than the light-intensity layers can be (3D textures: 2048 pixels on
 /// llvmpipe) is drawn as VTK draws it, unshadowed, with one warning, not black; the shadows come
 /// back at a size that fits.
@@ -1079,6 +1130,7 @@ int main(int argc, char* argv[])
     { "DataObjectSwapped", TestDataObjectSwapped },
     { "OversizedFrame", TestOversizedFrame },
     { "NestedPasses", TestNestedPasses },
+    { "ContextGoneWhileDetached", TestContextGoneWhileDetached },
   };
   return RunFeatures(argc, argv, features);
 }
