@@ -13,6 +13,7 @@
 #include "vtkAssemblyPath.h"
 #include "vtkAxesActor.h"
 #include "vtkBitArray.h"
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
@@ -40,6 +41,7 @@
 #include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
@@ -286,7 +288,49 @@ double ImposterReach(vtkProp* prop)
   return reach;
 }
 
-std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* owner)
+std::vector<vtkProp*> PropsCulledInView(const vtkRenderState* s)
+{
+  std::vector<vtkProp*> culled;
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkPropCollection* props = renderer->GetViewProps();
+  const int drawnCount = s->GetPropArrayCount();
+  if (drawnCount >= props->GetNumberOfItems())
+  {
+    return culled;
+  }
+  std::vector<vtkProp*> drawn(s->GetPropArray(), s->GetPropArray() + drawnCount);
+  std::sort(drawn.begin(), drawn.end());
+  double planes[24];
+  renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), planes);
+  vtkCollectionSimpleIterator it;
+  for (props->InitTraversal(it); vtkProp* prop = props->GetNextProp(it);)
+  {
+    const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds) ||
+      std::binary_search(drawn.begin(), drawn.end(), prop))
+    {
+      continue;
+    }
+    const glm::dvec3 lo(bounds[0], bounds[2], bounds[4]), hi(bounds[1], bounds[3], bounds[5]);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = 0.5 * glm::length(hi - lo);
+    bool outside = false;
+    for (int plane = 0; plane < 6 && !outside; ++plane)
+    {
+      outside =
+        glm::dot(glm::make_vec3(planes + 4 * plane), centre) + planes[4 * plane + 3] < -radius;
+    }
+    if (!outside)
+    {
+      culled.push_back(prop);
+    }
+  }
+  std::sort(culled.begin(), culled.end());
+  return culled;
+}
+
+std::vector<DrawnSurface> SceneWalk::Casters(
+  vtkRenderer* renderer, const std::vector<vtkProp*>& culledInView, vtkObject* owner)
 {
   std::vector<DrawnSurface> surfaces;
   vtkPropCollection* props = renderer->GetViewProps();
@@ -294,7 +338,8 @@ std::vector<DrawnSurface> SceneWalk::Casters(vtkRenderer* renderer, vtkObject* o
   vtkProp* prop;
   for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
   {
-    if (!prop->GetVisibility() || !vtkSoftShadowPass::GetCastsShadows(prop))
+    if (!prop->GetVisibility() || !vtkSoftShadowPass::GetCastsShadows(prop) ||
+      std::binary_search(culledInView.begin(), culledInView.end(), prop))
     {
       continue;
     }

@@ -44,6 +44,7 @@ class vtkPolyData;
 class vtkMatrix4x4;
 class vtkObject;
 class vtkProp;
+class vtkRenderState;
 class vtkRenderer;
 
 namespace penumbra
@@ -88,16 +89,27 @@ bool OutsideTheShadows(vtkProp* prop);
 /// half lengths. 0 for anything else; infinite when a radius or size is not finite.
 double ImposterReach(vtkProp* prop);
 
+/**
+ * The visible props of `s`'s renderer that its cullers left out of the frame (`s`'s prop array)
+ * although their bounding sphere meets the camera's view: too small on screen for
+ * vtkFrustumCoverageCuller's MinimumCoverage, or dropped by a culler of the user's. VTK does not
+ * draw them, so they cast nothing either. A prop culled because its sphere lies wholly outside
+ * the view (the test vtkFrustumCoverageCuller makes) is not among them: it may shadow the view.
+ * Sorted by address.
+ */
+std::vector<vtkProp*> PropsCulledInView(const vtkRenderState* s);
+
 /// Finds the surfaces a renderer draws, and warns once about what cannot cast.
 class SceneWalk
 {
 public:
   /// The surfaces (opaque, or translucent with their opacity) of every visible prop of `renderer`
   /// (its view props, not the frustum culler's list: a prop outside the view may shadow inside it)
-  /// that casts shadows (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives
-  /// an assembly's parts the assembly's property keys), through PropsDrawnFor. Warnings go
-  /// through `owner`.
-  std::vector<DrawnSurface> Casters(vtkRenderer* renderer, vtkObject* owner);
+  /// but those in `culledInView` (PropsCulledInView) that casts shadows
+  /// (vtkSoftShadowPass::GetCastsShadows, read on the top-level prop: VTK gives an assembly's
+  /// parts the assembly's property keys), through PropsDrawnFor. Warnings go through `owner`.
+  std::vector<DrawnSurface> Casters(
+    vtkRenderer* renderer, const std::vector<vtkProp*>& culledInView, vtkObject* owner);
 
 private:
   void Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,

@@ -126,6 +126,8 @@ public:
   }
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
+  /// PropsCulledInView this frame: VTK does not draw them, so they cast nothing.
+  std::vector<vtkProp*> CulledInView;
   /// Every receiver's box (penumbra::StableReceiverBox) and its pieces around each receiver:
   /// wedges are cut to them.
   penumbra::ReceiverBounds ReceiverBounds;
@@ -503,6 +505,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
 
   this->AddReceiverKeys(s);
   internals.UpdateSceneBox(renderer);
+  internals.CulledInView = penumbra::PropsCulledInView(s);
   this->WarnOfLightsReachingTheScene(renderer);
   internals.UpdateCamera(renderer, this->UseTightDepthRange);
   const bool reused = this->ShadowsUnchanged(s);
@@ -580,6 +583,12 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   vtkCamera* camera = renderer->GetActiveCamera();
   scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
   scene.AddCoincidentTopologySettings();
+  // A culler's settings (vtkFrustumCoverageCuller's MinimumCoverage) choose the casters too.
+  scene.Add(static_cast<double>(internals.CulledInView.size()));
+  for (vtkProp* culled : internals.CulledInView)
+  {
+    scene.Add(culled);
+  }
   internals.InputsRecorded = scene.AddProps(renderer);
   if (!internals.InputsRecorded)
   {
@@ -1004,7 +1013,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   internals.Caches.BeginFrame();
   internals.Casters.clear();
   internals.UpdateReceiverBox();
-  for (const penumbra::DrawnSurface& surface : internals.SceneWalk.Casters(s->GetRenderer(), this))
+  for (const penumbra::DrawnSurface& surface :
+    internals.SceneWalk.Casters(s->GetRenderer(), internals.CulledInView, this))
   {
     penumbra::MeshCache* mesh =
       internals.Caches.FindMesh(surface.Data, surface.Actor, surface.ViewProp, this);

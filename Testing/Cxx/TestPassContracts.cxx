@@ -15,8 +15,10 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkCoordinate.h"
 #include "vtkCubeSource.h"
+#include "vtkCullerCollection.h"
 #include "vtkDataObject.h"
 #include "vtkDepthSortPolyData.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -716,6 +718,8 @@ void TestReuseUnchangedShadows()
 
   double offsetFactor, offsetUnits;
   vtkMapper::GetResolveCoincidentTopologyPolygonOffsetParameters(offsetFactor, offsetUnits);
+  auto* coverage =
+    vtkFrustumCoverageCuller::SafeDownCast(renderer->GetCullers()->GetItemAsObject(0));
 
   struct Change
   {
@@ -799,6 +803,10 @@ void TestReuseUnchangedShadows()
     { "an actor removed", false, [&] { renderer->RemoveActor(scene.Box); } },
     { "the window resized", false, [&] { scene.View.Window->SetSize(180, 140); } },
     { "the pass's samples", false, [&] { pass->SetLightSamples(24); } },
+    // Culls a prop covering less than 5% of the view: nothing else about the scene changes.
+    { "the coverage culler's minimum coverage", false,
+      [&] { coverage->SetMinimumCoverage(0.05); } },
+    { "the minimum coverage back", false, [&] { coverage->SetMinimumCoverage(0.0); } },
   };
   scene.Render();
   scene.Render(); // the first frame gives the props their keys, which modifies them
@@ -1017,6 +1025,54 @@ void TestContextGoneWhileDetached()
   }
 }
 
+/// VTK's coverage culler leaves out props too small on screen (MinimumCoverage): such a prop
+/// casts nothing, as if it were not there, where before it cast a shadow VTK did not draw it
+/// for. A prop culled because it lies outside the view still casts into it.
+void TestCulledProps()
+{
+  for (const double radius : { 0.0, 0.3 })
+  {
+    PassScene view(200, 150);
+    view.Ground();
+    view.Box(1.2, 0.6, 0, 1.2, 1.2, 1.2);
+    vtkActor* small = view.Sphere(-0.8, 0.6, 0.4, 0.2);
+    view.Camera(3, 4, 7, 0, 0.5, 0);
+    vtkSoftShadowPass::SetLightRadius(view.Light, radius);
+    auto* coverage =
+      vtkFrustumCoverageCuller::SafeDownCast(view.Renderer->GetCullers()->GetItemAsObject(0));
+    coverage->SetMinimumCoverage(0.05);
+    view.Window->Render();
+    const bool culled = small->GetRenderTimeMultiplier() == 0.0;
+    const std::vector<unsigned char> shown = WindowColours(view.Window, view.Renderer);
+    view.Renderer->RemoveActor(small);
+    const int offFresh = PixelsOffFreshPass(view);
+    const std::vector<unsigned char> without = WindowColours(view.Window, view.Renderer);
+    std::printf("     radius %.1f: sphere %s; frame %s the frame without it\n", radius,
+      culled ? "culled" : "drawn", shown == without ? "equal to" : "unlike");
+    Check(culled && offFresh == 0 && shown == without,
+      "a prop the coverage culler leaves out casts nothing: the frame equals one without it");
+  }
+
+  // Above the view, between the light and the ground the camera sees.
+  PassScene view(200, 150);
+  view.Ground();
+  vtkActor* high = view.Sphere(-1.5, 4.5, 2.25, 0.4);
+  view.Camera(0, 1.5, 6, 0, 0, 0);
+  view.Window->Render();
+  const bool outside = high->GetRenderTimeMultiplier() == 0.0;
+  const std::vector<float> culledView = ImageValues(view.Pass->GetVisibilityImage(0));
+  view.Renderer->GetCullers()->RemoveAllItems();
+  view.Window->Render();
+  const std::vector<float> unculled = ImageValues(view.Pass->GetVisibilityImage(0));
+  const auto shadowed = std::count_if(
+    culledView.begin(), culledView.end(), [](float visibility) { return visibility < 0.5f; });
+  std::printf("     sphere above the view: %s, %lld shadowed px, %d px apart without cullers\n",
+    outside ? "culled" : "drawn", static_cast<long long>(shadowed),
+    PixelsApart(culledView, unculled));
+  Check(outside && shadowed > 50 && PixelsApart(culledView, unculled) == 0,
+    "a prop culled outside the view still casts into it");
+}
+
 /// A frame wider or taller than the light-intensity layers can be (3D textures: 2048 pixels on
 /// llvmpipe) is drawn as VTK draws it, unshadowed, with one warning, not black; the shadows come
 /// back at a size that fits.
@@ -1131,6 +1187,7 @@ int main(int argc, char* argv[])
     { "OversizedFrame", TestOversizedFrame },
     { "NestedPasses", TestNestedPasses },
     { "ContextGoneWhileDetached", TestContextGoneWhileDetached },
+    { "CulledProps", TestCulledProps },
   };
   return RunFeatures(argc, argv, features);
 }
