@@ -936,7 +936,7 @@ void WithPoints(vtkPoints* pts, std::vector<glm::dvec3>& copy, const Build& buil
 
 } // namespace
 
-std::string TopologyReport::Describe() const
+std::string TopologyReport::Describe(bool withDegenerate) const
 {
   std::ostringstream os;
   if (this->SkippedVerts || this->SkippedLines)
@@ -953,7 +953,7 @@ std::string TopologyReport::Describe() const
   {
     os << this->InvalidIndexTriangles << " triangles naming points that do not exist dropped; ";
   }
-  if (this->DegenerateTriangles)
+  if (this->DegenerateTriangles && withDegenerate)
   {
     os << this->DegenerateTriangles << " degenerate (zero-area) triangles dropped; ";
   }

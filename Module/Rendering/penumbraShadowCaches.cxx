@@ -84,7 +84,7 @@ bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vt
   // One warning per data object and kind: data that changes every frame (a simulation played
   // back) warns once, not every frame, and data with nothing to cast says what it had instead
   // (points and lines only, or every triangle dropped) in the same sentence.
-  const std::string problems = this->Topology.Report.Describe();
+  const std::string problems = this->Topology.Report.Describe(this->Topology.Empty());
   std::ostringstream caster;
   caster << "Shadow caster " << (prop ? prop->GetClassName() : "prop") << " (" << prop << "), ";
   if (viewProp && viewProp != prop)

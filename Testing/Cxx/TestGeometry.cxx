@@ -460,6 +460,9 @@ void TestDegenerateInput()
   Check(topo.Report.DegenerateTriangles == 2, "degenerate triangles reported");
   Check(topo.Report.SkippedLines == 1 && topo.Report.SkippedVerts == 1, "lines and verts reported");
   Check(!topo.Report.Describe().empty(), "problems described");
+  Check(topo.Report.Describe().find("2 degenerate") != std::string::npos &&
+      topo.Report.Describe(false).find("degenerate") == std::string::npos,
+    "zero-area triangles named only when asked for");
 
   vtkNew<vtkPolyData> empty;
   Check(CasterTopology::Build(empty).Empty(), "empty polydata gives no triangles");
