@@ -118,8 +118,8 @@ public:
     /// The same answer as averaging those samples' hard shadows, for any mesh, in one volume
     /// pass and one wedge pass for the opaque casters; translucent casters' volumes are drawn
     /// for every sample, as averaging draws them. Needs OpenGL 4.4 (or image load/store and
-    /// clear_texture); at most 256 samples; a sample's count is kept in 8 bits, read as signed
-    /// (128 layers overflow).
+    /// clear_texture); at most 256 samples; a sample's count is kept in 8 bits, read from -32
+    /// to 223 (224 layers overflow).
     METHOD_SOFT_SHADOW_VOLUMES = 5
   };
 
@@ -227,7 +227,9 @@ public:
    * The last frame's light intensity for the i-th light of the renderer's light collection, as a
    * one-component float image of the viewport's size (1 lit, 0 in shadow; background 1), or
    * nullptr for a light that cast no shadow. Reads the GPU buffer back: not for every frame.
-   * A pass set on several renderers holds the last renderer's frame.
+   * A pass set on several renderers holds the last renderer's frame. Pixels of props that do
+   * not receive shadows (SetReceivesShadows off) hold no defined value: counted lights cut their
+   * wedges to the receivers, so there such a pixel holds the centre's hard shadow.
    */
   vtkImageData* GetVisibilityImage(int lightIndex);
 

@@ -5,12 +5,15 @@
 // complexity, the centre's count plus the edges' changes (penumbraCountingWedgeFS.glsl), is 0.
 // Pixels that no wedge reached (useCounters 0) see every sample as the centre sees it.
 //
-// A depth complexity cannot be negative. Where one is (8-bit fields read as signed, so counts
-// of 128 and more overflow), the rasterized centre count missed a crossing that the edge terms,
-// taken at the pixel's centre, assume: the counts are shifted up until the smallest is 0.
-// The fields are decoded with 128 added to each beside the centre count: a field whose sum is
-// negative borrows from the next one in the packed word, and the bias keeps every field's sum
-// in [0, 255], where none borrows.
+// A depth complexity cannot be negative. Where one is, the rasterized centre count missed a
+// crossing that the edge terms, taken at the pixel's centre, assume (by one or two surfaces):
+// the counts are shifted up until the smallest is 0. The fields are decoded with `bias` added to
+// each beside the centre count: a field whose sum is negative borrows from the next one in the
+// packed word, and the bias keeps every sum in [0, 255], where none borrows, for counts from
+// -bias to 255 - bias. A count above that (224 or more surfaces between a point and a sample)
+// overflows: it reads as negative and passes for the lowest. Averaging's 8-bit stencil wraps at
+// 256. (With a bias of 128, the stream tubes converging on a critical point, 132 surfaces
+// deep, came out as dark blobs.)
 //
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
@@ -21,6 +24,7 @@ uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler3D counters;
 uniform int useCounters;
 uniform int counterStride; // pixels between counter texels: 1, or 2 at half resolution
+const int bias = 32;
 
 void main()
 {
@@ -36,7 +40,7 @@ void main()
 #endif
     return;
   }
-  uint offset = uint(centre + 128) * 0x01010101u;
+  uint offset = uint(centre + bias) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
   int visible = 0; // samples whose count equals it
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
@@ -44,7 +48,7 @@ void main()
     uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
     for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
     {
-      int count = int((counts >> uint(8 * field)) & 0xFFu) - 128;
+      int count = int((counts >> uint(8 * field)) & 0xFFu) - bias;
       if (count < lowest)
       {
         lowest = count;
