@@ -162,7 +162,7 @@ void CountingTechnique::PrepareCounters(
     this->SampleCounters->SetInternalFormat(GL_R32UI);
     this->SampleCounters->SetFormat(GL_RED_INTEGER);
     this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
-    this->SampleCounters->Allocate3D(texels.x, texels.y, words, 1, VTK_UNSIGNED_INT);
+    this->SampleCounters->AllocateLayers(texels.x, texels.y, words, 1, VTK_UNSIGNED_INT);
   }
   this->ClearCounters();
 }

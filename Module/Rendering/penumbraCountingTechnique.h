@@ -13,6 +13,7 @@
 #define penumbraCountingTechnique_h
 
 #include "penumbraHalfResolutionCounts.h"
+#include "penumbraLayeredTexture.h" // for vtkNew<vtkPenumbraLayeredTexture>
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
@@ -98,7 +99,7 @@ private:
   /// one slice per four samples), allocated once a light is counted and kept until the pass's
   /// ReleaseGraphicsResources (GetGraphicsMemoryBytes counts them while they are held).
   vtkNew<vtkTextureObject> CentreCount;
-  vtkNew<vtkTextureObject> SampleCounters;
+  vtkNew<vtkPenumbraLayeredTexture> SampleCounters;
   /// Per pixel, what makes a visible sample's counter field 0 (R32F), for the translucent
   /// casters' resolve.
   vtkNew<vtkTextureObject> CountOffset;

@@ -28,7 +28,7 @@ void LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int
   if (TextureNeedsAllocation(
         this->Layers, window, width, height, layers, 1, vtkTextureObject::Nearest))
   {
-    this->Layers->Allocate3D(width, height, layers, 1, VTK_FLOAT);
+    this->Layers->AllocateLayers(width, height, layers, 1, VTK_FLOAT);
   }
   this->Width = width;
   this->Height = height;
@@ -45,9 +45,17 @@ void LightIntensityBuffer::BindLayer(int layer)
 
 void LightIntensityBuffer::AttachColour(vtkTextureObject* texture, int layer)
 {
-  // VTK 9.1 ignores a new slice of the attached texture: remove, then add.
+  // VTK 9.1 ignores a new slice of the attached texture, and attaches a layer of a 2D array as
+  // a 3D slice: remove, then add, a layer through the layered texture itself.
   this->Framebuffer->RemoveColorAttachment(0);
-  this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
+  if (auto* layered = vtkPenumbraLayeredTexture::SafeDownCast(texture))
+  {
+    layered->AttachLayer(0, layer);
+  }
+  else
+  {
+    this->Framebuffer->AddColorAttachment(0, texture, static_cast<unsigned int>(layer));
+  }
   this->Framebuffer->ActivateDrawBuffer(0);
 }
 

@@ -10,6 +10,8 @@
 #ifndef penumbraLightIntensityBuffer_h
 #define penumbraLightIntensityBuffer_h
 
+#include "penumbraLayeredTexture.h" // for vtkNew<vtkPenumbraLayeredTexture>
+
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer
 #include "vtkSmartPointer.h"
@@ -32,14 +34,14 @@ public:
   void Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers);
   /// Binds the framebuffer with the depth-stencil attachment and `layer` as colour.
   void BindLayer(int layer);
-  /// Makes `texture` (slice `layer` of a 3D texture) colour attachment 0 and the draw buffer;
-  /// the framebuffer must be bound.
+  /// Makes `texture` (layer `layer` of a vtkPenumbraLayeredTexture, or a 2D texture) colour
+  /// attachment 0 and the draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer);
   /// Copies the depth attachment into DepthCopy.
   void CopyDepth(vtkOpenGLState* ostate);
 
   vtkOpenGLFramebufferObject* GetFramebuffer() { return this->Framebuffer; }
-  /// The LI layers (a 3D texture, one slice per light), for the receivers to sample.
+  /// The LI layers (a 2D array texture, one layer per light), for the receivers to sample.
   vtkTextureObject* GetLayers() { return this->Layers; }
   vtkTextureObject* GetDepthCopy() { return this->DepthCopy; }
   int GetLayerCount() const { return this->LayerCount; }
@@ -55,7 +57,7 @@ private:
   vtkNew<vtkTextureObject> DepthCopy;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthCopyFramebuffer =
     vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-  vtkNew<vtkTextureObject> Layers;
+  vtkNew<vtkPenumbraLayeredTexture> Layers;
   int Width = 0, Height = 0, LayerCount = 0;
 };
 

@@ -131,8 +131,8 @@ struct ShadowFrame
   PixelRect DrawTranslucentVolumes(const ShadowLight& light, std::size_t first, std::size_t count,
     vtkTextureObject* target, int components) const;
 
-  /// Makes `texture` (slice `layer` of a 3D texture) the LI framebuffer's colour attachment 0
-  /// and its draw buffer; the framebuffer must be bound.
+  /// Makes `texture` (layer `layer` of a vtkPenumbraLayeredTexture, or a 2D texture) the LI
+  /// framebuffer's colour attachment 0 and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
   /// Makes `texture` a float target of `components` channels (R32F, RGBA32F) and the
   /// viewport's size in this window, allocating it when it is not one yet, attaches it as

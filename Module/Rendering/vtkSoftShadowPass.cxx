@@ -140,7 +140,7 @@ public:
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
   bool WarnedNoDelegate = false;
-  /// The largest width or height the light-intensity layers (3D textures) can take here, read
+  /// The largest width or height the light-intensity layers (2D array textures) can take here, read
   /// once per window; 0 until read.
   int MaxLayerSize = 0;
   vtkOpenGLRenderWindow* MaxLayerSizeWindow = nullptr;
@@ -1444,7 +1444,7 @@ bool vtkSoftShadowPass::LayersFit(vtkOpenGLRenderWindow* window)
   if (internals.MaxLayerSizeWindow != window)
   {
     GLint size = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
     internals.MaxLayerSize = size;
     internals.MaxLayerSizeWindow = window;
   }
@@ -1457,7 +1457,7 @@ bool vtkSoftShadowPass::LayersFit(vtkOpenGLRenderWindow* window)
   if (!internals.WarnedLayerSize)
   {
     vtkWarningMacro("The frame is " << internals.Size[0] << "x" << internals.Size[1]
-                                    << " pixels, but this OpenGL's 3D textures, which hold the "
+                                    << " pixels, but this OpenGL's 2D textures, which hold the "
                                        "shadows' light intensity, reach "
                                     << internals.MaxLayerSize
                                     << " pixels at most: the scene is drawn without shadows "

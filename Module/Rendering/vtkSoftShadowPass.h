@@ -439,7 +439,7 @@ private:
   void DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /// Warns once per positional light whose sphere reaches a visible prop's box.
   void WarnOfLightsReachingTheScene(vtkRenderer* renderer);
-  /// Whether the frame's size fits the light-intensity layers (GL_MAX_3D_TEXTURE_SIZE); warns
+  /// Whether the frame's size fits the light-intensity layers (GL_MAX_TEXTURE_SIZE); warns
   /// once while it does not.
   bool LayersFit(vtkOpenGLRenderWindow* window);
   /// Before drawing into `window`: releases the GPU resources made in another window's context

@@ -1073,45 +1073,43 @@ void TestCulledProps()
     "a prop culled outside the view still casts into it");
 }
 
-/// A frame wider or taller than the light-intensity layers can be (3D textures: 2048 pixels on
-/// llvmpipe) is drawn as VTK draws it, unshadowed, with one warning, not black; the shadows come
-/// back at a size that fits.
-void TestOversizedFrame()
+/// A frame wider than 3D textures may be (2048 pixels on llvmpipe and many integrated GPUs) has
+/// its shadows, hard and counted, right against the truth: the light-intensity layers and the
+/// counters are 2D array textures, as wide as 2D textures. Until 2026-12-06 they were 3D textures
+/// and such a frame was drawn unshadowed.
+void TestWideFrame()
 {
   PassScene view(200, 150);
   view.Window->SetOffScreenRendering(1); // larger than the screen
-  view.Ground();
-  view.Sphere(0, 1, 0, 0.6);
-  view.Camera(3, 4, 7, 0, 0.5, 0);
+  view.Ground(8.0);
+  for (int i = -3; i <= 3; ++i)
+  {
+    view.Sphere(2.0 * i, 1.0, 0.0, 0.6, 24);
+  }
   view.Window->Render();
   view.Window->MakeCurrent();
-  GLint max3D = 0, max2D = 0;
+  GLint max3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max2D);
-  if (max3D >= max2D || max3D >= 8192)
-  {
-    std::printf("     3D textures reach %d pixels, 2D %d: no frame to test here\n", max3D, max2D);
-    return;
-  }
+  const int width = std::min(max3D + 64, 4160);
+  view.Window->SetSize(width, 120);
+  // A long, flat view along the row of spheres, the light above it.
+  view.Light->SetPosition(0, 9, 3);
+  view.Camera(0, 3.5, 11, 0, 0.5, 0);
+  view.Renderer->GetActiveCamera()->SetViewAngle(12);
   const WarningLog log(view.Pass);
-  view.Window->SetSize(max3D + 1, 40);
-  view.Window->Render();
-  view.Window->Render();
-  const std::vector<unsigned char> shown = WindowColours(view.Window, view.Renderer);
-  const int lights = view.Pass->GetNumberOfShadowingLights();
-  view.Pass->ShadowsEnabledOff();
-  view.Window->Render();
-  const std::vector<unsigned char> plain = WindowColours(view.Window, view.Renderer);
-  view.Pass->ShadowsEnabledOn();
-  const bool lit = std::any_of(shown.begin(), shown.end(), [](unsigned char c) { return c > 0; });
-  std::printf("     %dx40 (3D textures reach %d): %d shadowing lights, %lld warnings\n", max3D + 1,
-    max3D, lights, static_cast<long long>(log.Count("3D textures")));
-  Check(lit && shown == plain && lights == 0,
-    "a frame too large for the layers is drawn as VTK draws it, unshadowed");
-  Check(log.Count("3D textures") == 1, "one warning for it, not one a frame");
-  view.Window->SetSize(200, 150);
-  view.Window->Render();
-  Check(view.Pass->GetNumberOfShadowingLights() == 1, "a frame that fits has its shadows again");
+  for (const double radius : { 0.0, 0.3 })
+  {
+    vtkSoftShadowPass::SetLightRadius(view.Light, radius);
+    view.Pass->SetMethod(radius > 0.0 ? vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES
+                                      : vtkSoftShadowPass::METHOD_HARD_VOLUMES);
+    const Comparison comparison = view.Render();
+    std::printf("     %dx120 (3D textures reach %d), radius %.1f: %d shadowing lights\n", width,
+      max3D, radius, view.Pass->GetNumberOfShadowingLights());
+    Check(view.Pass->GetNumberOfShadowingLights() == 1, "a frame wider than 3D textures shadows");
+    CheckAgainstTruth(
+      std::string("wide frame, ") + (radius > 0.0 ? "counted" : "hard"), comparison, 0.005);
+  }
+  Check(log.Messages.empty(), "no warning for a frame that fits 2D textures");
 }
 
 /// The tight depth range draws the shadows with a copy of the camera: the user's camera is not
@@ -1184,7 +1182,7 @@ int main(int argc, char* argv[])
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
     { "CameraLeftAlone", TestCameraLeftAlone },
     { "DataObjectSwapped", TestDataObjectSwapped },
-    { "OversizedFrame", TestOversizedFrame },
+    { "WideFrame", TestWideFrame },
     { "NestedPasses", TestNestedPasses },
     { "ContextGoneWhileDetached", TestContextGoneWhileDetached },
     { "CulledProps", TestCulledProps },

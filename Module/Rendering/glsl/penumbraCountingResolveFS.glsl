@@ -21,7 +21,7 @@
 //
 // Counter texel t holds the counts of pixel counterStride * t (see the wedges' shader).
 uniform sampler2D centreCount; // minus the centre's shadow-volume count
-uniform usampler3D counters;
+uniform usampler2DArray counters;
 uniform int useCounters;
 uniform int counterStride; // pixels between counter texels: 1, or 2 at half resolution
 const int bias = 32;

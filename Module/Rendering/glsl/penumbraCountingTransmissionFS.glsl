@@ -9,7 +9,7 @@
 // resolve adds the centre: the fields borrow from each other where an edge change was
 // negative, and only the word's sum is exact.
 uniform sampler2D countOffset;
-uniform usampler3D counters;
+uniform usampler2DArray counters;
 uniform sampler2D logTransmission;
 uniform int word;
 uniform int groupSize;

@@ -23,7 +23,7 @@ uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
 uniform int counterStride;  // pixels between counter texels: 1, or 2 at half resolution
-layout(r32ui) uniform uimage3D counters;
+layout(r32ui) uniform uimage2DArray counters;
 
 flat in vec3 edgeFromVS;
 flat in vec3 edgeToVS;

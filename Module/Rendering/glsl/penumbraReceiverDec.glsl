@@ -1,6 +1,6 @@
 // Added by vtkSoftShadowPass to the fragment shaders of receiving props: the fraction of each
 // shadowing light that this pixel's surface sees, read from the light-intensity (LI) buffer.
-uniform sampler3D penumbraLI;       // one layer per shadowing light
+uniform sampler2DArray penumbraLI;  // one layer per shadowing light
 uniform int penumbraApply;          // 0 while the depth pre-pass renders, or for non-receivers
 uniform ivec2 penumbraOrigin;       // viewport origin in window pixels
 uniform ivec2 penumbraSize;         // viewport size in pixels
