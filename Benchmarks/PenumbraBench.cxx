@@ -159,7 +159,7 @@ void Usage(const char* program)
     "                        soft_volumes_16, soft_volumes_64 (counting), automatic_64\n"
     "                        (default all of these);\n"
     "                        also soft_volumes_16_half, soft_volumes_64_half: counted at\n"
-    "                        half resolution (HalfResolutionCounting);\n"
+    "                        half resolution (HalfResolutionCounting); automatic_16;\n"
     "                        also shadowmap_1024_vtkaspect, shadowmap_4096_vtkaspect: VTK's\n"
     "                        shadow maps without the benchmark's square-bake fix;\n"
     "                        hard_volumes_vtkdepth, averaged_16_vtkdepth: with VTK drawing\n"
@@ -741,6 +741,9 @@ std::vector<MethodSpec> AllMethods()
   // The default: counting or averaging 64 samples, whichever the cost model expects faster.
   methods.push_back(
     { "automatic_64", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AUTOMATIC, 64); } });
+  // The same choice for 16 samples (only with --methods).
+  methods.push_back({ "automatic_16",
+    []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_AUTOMATIC, 16); }, false });
   // Haines' plateaus on the ground plane; hard shadows of the light's centre elsewhere.
   methods.push_back(
     { "plateaus", []() { return MakeSoftShadow(vtkSoftShadowPass::METHOD_PLATEAUS, 1); } });

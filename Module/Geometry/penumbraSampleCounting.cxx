@@ -228,7 +228,7 @@ bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
   double potential = 0.0, weighted = 0.0, silhouettes = 0.0;
   for (const CountingCost& caster : casters)
   {
-    const double spread = std::pow(std::max(caster.AngularRadius, 0.0) / 0.016, 0.83);
+    const double spread = std::pow(std::max(caster.AngularRadius, 0.0) / 0.016, 0.72);
     const double weight = std::max(static_cast<double>(caster.SilhouetteEdges), 1.0);
     potential += static_cast<double>(caster.PotentialEdges);
     weighted += weight * (std::isfinite(spread) ? spread : 1e300);
@@ -238,9 +238,9 @@ bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
   {
     return true; // nothing to draw beyond the centre's volume
   }
-  const double edges = std::pow(potential / silhouettes, 0.68);
-  const double perSample = std::pow(16.0 / std::max(samples, 1), 0.64);
-  return 0.89 * edges * (weighted / silhouettes) * perSample < 1.0;
+  const double edges = std::pow(potential / silhouettes, 0.73);
+  const double perSample = std::pow(16.0 / std::max(samples, 1), 0.70);
+  return 0.64 * edges * (weighted / silhouettes) * perSample < 1.0;
 }
 
 } // namespace penumbra

@@ -145,13 +145,14 @@ struct CountingCost
  * averaging as many hard shadows (one volume pass each). Both give the same image, so a wrong
  * guess costs time, never accuracy. Fitted to the benchmark on llvmpipe at 1024x768
  * (Documentation/wedges.md, "Cost": 24 rows, six scenes, two radii, 16 and 64 samples, after
- * averaging began to draw each side of an open caster's volume once): the ratio grows with the
+ * the counting wedges were cut to each receiver's piece), to lose the least time on the rows
+ * it gets wrong: the ratio grows with the
  * potential silhouette P against the centre silhouette's distinct edges E, and with the light's
  * angular radius rho (the penumbra, and how many edges cross the light seen from a pixel), and
  * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
  * a wedge reaches):
  *
- *   counting / averaging = 0.89 (P / E)^0.68 (rho / 0.016)^0.83 (16 / N)^0.64,
+ *   counting / averaging = 0.64 (P / E)^0.73 (rho / 0.016)^0.72 (16 / N)^0.70,
  *
  * P and E summed over the casters, rho averaged over them weighted by E.
  */
