@@ -1,11 +1,14 @@
 #include "vtkRendererSettingsPass.h"
 
+#include "penumbraWindowReleaseCallback.h"
+
 #include "vtkCameraPass.h"
 #include "vtkHardwareSelector.h"
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFXAAFilter.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
@@ -13,6 +16,7 @@
 #include "vtkRenderState.h"
 #include "vtkVolumetricPass.h"
 
+#include <memory>
 #include <vector>
 
 namespace
@@ -128,6 +132,9 @@ class vtkRendererSettingsPass::vtkInternals
 public:
   vtkNew<vtkCameraPass> Camera;
   vtkNew<vtkRendererSettingsSteps> Steps;
+  /// Releases FXAA's and the steps' GPU resources when the window goes, even while the pass is
+  /// off its renderer (which then does not release it).
+  std::unique_ptr<penumbra::WindowReleaseCallback> WindowRelease;
 };
 
 vtkStandardNewMacro(vtkRendererSettingsPass);
@@ -136,12 +143,19 @@ vtkRendererSettingsPass::vtkRendererSettingsPass()
   : Internals(new vtkInternals)
 {
   this->Internals->Camera->SetDelegatePass(this->Internals->Steps);
+  this->Internals->WindowRelease.reset(new penumbra::WindowReleaseCallback(
+    [this](vtkWindow* w) { this->ReleaseGraphicsResources(w); }));
 }
 
-vtkRendererSettingsPass::~vtkRendererSettingsPass() = default;
+vtkRendererSettingsPass::~vtkRendererSettingsPass()
+{
+  this->Internals->WindowRelease->Release();
+}
 
 void vtkRendererSettingsPass::Render(const vtkRenderState* s)
 {
+  this->Internals->WindowRelease->RegisterGraphicsResources(
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
   this->Internals->Camera->Render(s);
   this->NumberOfRenderedProps = this->Internals->Camera->GetNumberOfRenderedProps();
 }

@@ -39,6 +39,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkRendererSettingsPass.h"
 #include "vtkScalarBarActor.h"
 #include "vtkScalarBarRepresentation.h"
 #include "vtkSelection.h"
@@ -1023,6 +1024,27 @@ void TestContextGoneWhileDetached()
       "a pass set again after its window was finalized draws as a fresh pass");
     Check(sameAsFresh, "a pass whose window was deleted draws in a new window as a fresh pass");
   }
+
+  // The default delegate on its own, with FXAA (GPU resources of its own): the same contract.
+  PassScene view(200, 150);
+  view.Ground();
+  view.Sphere(0, 1, 0, 0.6);
+  view.Camera(3, 4, 7, 0, 0.5, 0);
+  view.Renderer->SetUseFXAA(true);
+  vtkNew<vtkRendererSettingsPass> settings;
+  view.Renderer->SetPass(settings);
+  view.Window->Render();
+  view.Renderer->SetPass(nullptr);
+  view.Window->Finalize();
+  view.Window->Render();
+  view.Renderer->SetPass(settings);
+  view.Window->Render();
+  const std::vector<unsigned char> again = WindowColours(view.Window, view.Renderer);
+  vtkNew<vtkRendererSettingsPass> freshSettings;
+  view.Renderer->SetPass(freshSettings);
+  view.Window->Render();
+  Check(again == WindowColours(view.Window, view.Renderer),
+    "vtkRendererSettingsPass set again after its window was finalized draws as a fresh one");
 }
 
 /// VTK's coverage culler leaves out props too small on screen (MinimumCoverage): such a prop
