@@ -238,9 +238,9 @@ bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
   {
     return true; // nothing to draw beyond the centre's volume
   }
-  const double edges = std::pow(potential / silhouettes, 0.73);
+  const double edges = std::pow(potential / silhouettes, 0.67);
   const double perSample = std::pow(16.0 / std::max(samples, 1), 0.70);
-  return 0.64 * edges * (weighted / silhouettes) * perSample < 1.0;
+  return 0.61 * edges * (weighted / silhouettes) * perSample < 1.0;
 }
 
 } // namespace penumbra

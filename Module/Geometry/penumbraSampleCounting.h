@@ -152,7 +152,7 @@ struct CountingCost
  * falls with the samples N (averaging pays for each one, counting for each sample of each pixel
  * a wedge reaches):
  *
- *   counting / averaging = 0.64 (P / E)^0.73 (rho / 0.016)^0.72 (16 / N)^0.70,
+ *   counting / averaging = 0.61 (P / E)^0.67 (rho / 0.016)^0.72 (16 / N)^0.70,
  *
  * P and E summed over the casters, rho averaged over them weighted by E.
  */
