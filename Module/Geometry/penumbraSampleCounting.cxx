@@ -223,7 +223,7 @@ bool EdgePlaneMissesSamples(const glm::dvec3& p, const glm::dvec3& a, const glm:
     (spread + 1e-5 * glm::length(edgeToCentre)) * glm::length(sampleSide);
 }
 
-bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
+double CountingToAveraging(const std::vector<CountingCost>& casters, int samples)
 {
   double potential = 0.0, weighted = 0.0, silhouettes = 0.0;
   for (const CountingCost& caster : casters)
@@ -236,11 +236,17 @@ bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples)
   }
   if (potential == 0.0)
   {
-    return true; // nothing to draw beyond the centre's volume
+    return 0.0; // nothing to draw beyond the centre's volume
   }
   const double edges = std::pow(potential / silhouettes, 0.67);
   const double perSample = std::pow(16.0 / std::max(samples, 1), 0.70);
-  return 0.61 * edges * (weighted / silhouettes) * perSample < 1.0;
+  return 0.61 * edges * (weighted / silhouettes) * perSample;
+}
+
+bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples, LastChoice last)
+{
+  const double limit = last == LastChoice::Counted ? 1.1 : last == LastChoice::Averaged ? 0.9 : 1.0;
+  return CountingToAveraging(casters, samples) < limit;
 }
 
 } // namespace penumbra

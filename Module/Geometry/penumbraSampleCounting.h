@@ -156,8 +156,26 @@ struct CountingCost
  *
  * P and E summed over the casters, rho averaged over them weighted by E.
  */
-VTKPENUMBRAGEOMETRY_EXPORT bool CountingIsCheaper(
+VTKPENUMBRAGEOMETRY_EXPORT double CountingToAveraging(
   const std::vector<CountingCost>& casters, int samples);
+
+/// What a light drew in its last frame, for CountingIsCheaper's hysteresis.
+enum class LastChoice
+{
+  None,     ///< nothing yet (or not chosen by the model)
+  Counted,  ///< counted its samples
+  Averaged, ///< averaged them
+};
+
+/**
+ * Whether to count rather than average: CountingToAveraging below 1, or, after a choice, below
+ * 1.1 to go on counting and below 0.9 to start. Casters whose data changes every frame (a
+ * simulation played back) move P and E a little each frame; near the boundary the light would
+ * change method every few frames, and as the two methods differ on pixel boundaries (wedges.md),
+ * its terminator's dots would flicker.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool CountingIsCheaper(
+  const std::vector<CountingCost>& casters, int samples, LastChoice last = LastChoice::None);
 
 } // namespace penumbra
 

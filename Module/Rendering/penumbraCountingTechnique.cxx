@@ -95,7 +95,7 @@ std::vector<glm::dvec4> CountingTechnique::ChooseSamples(
 }
 
 bool CountingTechnique::IsCheaper(
-  const ShadowLight& light, const std::vector<CasterCache*>& casters) const
+  const ShadowLight& light, const std::vector<CasterCache*>& casters, LastChoice last) const
 {
   std::vector<CountingCost> costs;
   for (CasterCache* caster : casters)
@@ -119,7 +119,7 @@ bool CountingTechnique::IsCheaper(
     }
     costs.push_back(cost);
   }
-  return CountingIsCheaper(costs, static_cast<int>(light.CountingSamples.size()));
+  return CountingIsCheaper(costs, static_cast<int>(light.CountingSamples.size()), last);
 }
 
 void CountingTechnique::PrepareLight(

@@ -14,6 +14,7 @@
 
 #include "penumbraHalfResolutionCounts.h"
 #include "penumbraLayeredTexture.h" // for vtkNew<vtkPenumbraLayeredTexture>
+#include "penumbraSampleCounting.h" // for LastChoice
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
@@ -36,8 +37,10 @@ public:
   std::vector<glm::dvec4> ChooseSamples(vtkObject* owner, const glm::dvec4& light, double radius,
     int requested, const glm::dvec3& target);
   /// Whether counting the light's samples should be cheaper than averaging them
-  /// (penumbra::CountingIsCheaper), from its casters' potential silhouettes.
-  bool IsCheaper(const ShadowLight& light, const std::vector<CasterCache*>& casters) const;
+  /// (penumbra::CountingIsCheaper, with the light's `last` choice), from its casters' potential
+  /// silhouettes.
+  bool IsCheaper(
+    const ShadowLight& light, const std::vector<CasterCache*>& casters, LastChoice last) const;
   /// Whether lights without translucent casters are counted at half the viewport's resolution
   /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
   void SetHalfResolution(bool half) { this->HalfResolution = half; }

@@ -81,8 +81,14 @@ void TechniqueChooser::FindPlateauPlane(
 bool TechniqueChooser::Reconsider(
   ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples)
 {
-  if (light.Technique != &this->Counting || !light.CountingChosenAutomatically ||
-    this->Counting.IsCheaper(light, casters))
+  if (light.Technique != &this->Counting || !light.CountingChosenAutomatically)
+  {
+    return false;
+  }
+  LastChoice& last = this->LastChoices[light.Light];
+  const bool counted = this->Counting.IsCheaper(light, casters, last);
+  last = counted ? LastChoice::Counted : LastChoice::Averaged;
+  if (counted)
   {
     return false;
   }

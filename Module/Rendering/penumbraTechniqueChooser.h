@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -56,12 +57,15 @@ public:
   void FindPlateauPlane(vtkRenderer* renderer, vtkObject* owner, std::vector<ShadowLight>& lights);
 
   /// Once the light's casters are up to date: Automatic averages the counted samples instead
-  /// where that is expected to be cheaper (the same samples, the same image). Returns true when
-  /// it changed the light's samples, whose casters then need updating again.
+  /// where that is expected to be cheaper (the same samples, the same image), with hysteresis
+  /// on the light's last choice (penumbra::CountingIsCheaper). Returns true when it changed the
+  /// light's samples, whose casters then need updating again.
   bool Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples);
 
 private:
   std::set<vtkLight*> WarnedRadius;
+  /// Automatic's last choice for each light.
+  std::map<vtkLight*, LastChoice> LastChoices;
 };
 
 } // namespace penumbra

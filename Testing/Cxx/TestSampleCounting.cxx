@@ -514,6 +514,22 @@ void TestCostModel()
     "casters weigh by their silhouettes: the large one near the light decides");
   Check(CountingIsCheaper({ { 0, 0, 0.5 } }, 16), "no wedges: counting");
   Check(!CountingIsCheaper({ { 10, 0, 1e300 } }, 16), "huge angular radius: averaging");
+
+  // Hysteresis: near the boundary the last choice stands; beyond 10% the model decides.
+  const std::vector<CountingCost> even = { { 504, 296, 0.0175 } };
+  const double ratio = CountingToAveraging(even, 16);
+  std::printf("classic, r 0.2, 16 samples, rho 0.0175: counting / averaging %.3f\n", ratio);
+  Check(ratio > 0.9 && ratio < 1.0, "a row just below the boundary");
+  Check(CountingIsCheaper(even, 16) && CountingIsCheaper(even, 16, LastChoice::Counted) &&
+      !CountingIsCheaper(even, 16, LastChoice::Averaged),
+    "just below the boundary: the last choice stands");
+  const std::vector<CountingCost> above = { { 504, 296, 0.0215 } };
+  const double over = CountingToAveraging(above, 16);
+  Check(over > 1.0 && over < 1.1 && CountingIsCheaper(above, 16, LastChoice::Counted) &&
+      !CountingIsCheaper(above, 16),
+    "just above the boundary: counting goes on once chosen");
+  Check(!CountingIsCheaper({ { 504, 296, 0.08 } }, 16, LastChoice::Counted),
+    "far above the boundary: averaging, whatever the last choice");
 }
 } // namespace
 
