@@ -150,21 +150,44 @@ void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight&)
   frame.AttachClearedFloatTarget(this->CentreCount);
 }
 
-void CountingTechnique::PrepareCounters(
+bool CountingTechnique::AllocateCounters(
   vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples)
 {
   // Allocated for these texels and samples only when a light is counted, so averaging lights
   // hold none.
   const int words = static_cast<int>((samples + 3) / 4);
-  if (TextureNeedsAllocation(
+  if (!TextureNeedsAllocation(
         this->SampleCounters, window, texels.x, texels.y, words, 1, vtkTextureObject::Nearest))
   {
-    this->SampleCounters->SetInternalFormat(GL_R32UI);
-    this->SampleCounters->SetFormat(GL_RED_INTEGER);
-    this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
-    this->SampleCounters->AllocateLayers(texels.x, texels.y, words, 1, VTK_UNSIGNED_INT);
+    return true;
   }
-  this->ClearCounters();
+  this->SampleCounters->SetInternalFormat(GL_R32UI);
+  this->SampleCounters->SetFormat(GL_RED_INTEGER);
+  this->SampleCounters->SetDataType(GL_UNSIGNED_INT);
+  return this->SampleCounters->AllocateLayers(texels.x, texels.y, words, 1, VTK_UNSIGNED_INT);
+}
+
+bool CountingTechnique::ReadyCounters(
+  vtkOpenGLRenderWindow* window, const int size[2], std::size_t samples, vtkObject* owner)
+{
+  const std::size_t bytes = static_cast<std::size_t>(size[0]) * size[1] * ((samples + 3) / 4) * 4;
+  if (this->RefusedCounterBytes && bytes >= this->RefusedCounterBytes)
+  {
+    return false;
+  }
+  if (this->AllocateCounters(window, glm::ivec2(size[0], size[1]), samples))
+  {
+    return true;
+  }
+  this->RefusedCounterBytes = bytes;
+  vtkWarningWithObjectMacro(owner,
+    "The sample counters for " << samples << " light samples at " << size[0] << "x" << size[1]
+                               << " pixels need " << bytes / (1 << 20)
+                               << " MiB of GPU memory in one texture, which this OpenGL "
+                                  "refused: such lights average their samples' hard shadows "
+                                  "instead (the same image, more slowly). Fewer LightSamples or "
+                                  "a smaller frame count them.");
+  return false;
 }
 
 void CountingTechnique::ClearCounters()
@@ -201,9 +224,15 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   const bool half = this->HalfResolution && !light.ShadowedByTranslucentCasters &&
     this->HalfResolutionTargets.Begin(frame);
   // Full size either way: at half resolution the counters' corner holds the counted pixels,
-  // then the whole every pixel that the counted ones leave uncertain.
-  this->PrepareCounters(
-    window, glm::ivec2(frame.Size[0], frame.Size[1]), light.CountingSamples.size());
+  // then the whole every pixel that the counted ones leave uncertain. Allocated already
+  // (ReadyCounters), unless OpenGL lost them since.
+  if (!this->AllocateCounters(
+        window, glm::ivec2(frame.Size[0], frame.Size[1]), light.CountingSamples.size()))
+  {
+    ostate->PopFramebufferBindings();
+    return false;
+  }
+  this->ClearCounters();
   bool drawn;
   if (half)
   {
@@ -463,6 +492,7 @@ void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
   this->OffsetVAO.ReleaseGraphicsResources();
   this->TransmissionVAO.ReleaseGraphicsResources();
   this->Support = -1;
+  this->RefusedCounterBytes = 0;
 }
 
 } // namespace penumbra

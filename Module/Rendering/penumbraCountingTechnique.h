@@ -41,6 +41,12 @@ public:
   /// silhouettes.
   bool IsCheaper(
     const ShadowLight& light, const std::vector<CasterCache*>& casters, LastChoice last) const;
+  /// Allocates the per-sample counters for a frame of `size` pixels and `samples` samples, or
+  /// says, once per size refused, that OpenGL refused them (GL_OUT_OF_MEMORY: on llvmpipe a 4K
+  /// frame's for more than about 200 samples, an 8K frame's for 64): the light must then average
+  /// its samples. A size refused is not tried again until the counters are released.
+  bool ReadyCounters(
+    vtkOpenGLRenderWindow* window, const int size[2], std::size_t samples, vtkObject* owner);
   /// Whether lights without translucent casters are counted at half the viewport's resolution
   /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
   void SetHalfResolution(bool half) { this->HalfResolution = half; }
@@ -88,8 +94,8 @@ private:
   bool Draw(ShadowFrame& frame, const ShadowLight& light);
   /// Adds every opaque caster's wedges' changes into the counters at `pixels`.
   bool CountWedges(ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels);
-  /// Sizes the counters for `texels` and `samples` and clears them.
-  void PrepareCounters(
+  /// Sizes the counters for `texels` and `samples`; false when OpenGL refuses them.
+  bool AllocateCounters(
     vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples);
   void ClearCounters();
   /// Into `target`, at every geometry pixel (or counted pixel at half resolution).
@@ -103,6 +109,8 @@ private:
   /// ReleaseGraphicsResources (GetGraphicsMemoryBytes counts them while they are held).
   vtkNew<vtkTextureObject> CentreCount;
   vtkNew<vtkPenumbraLayeredTexture> SampleCounters;
+  /// The smallest counters' size OpenGL refused (0: none).
+  std::size_t RefusedCounterBytes = 0;
   /// Per pixel, what makes a visible sample's counter field 0 (R32F), for the translucent
   /// casters' resolve.
   vtkNew<vtkTextureObject> CountOffset;

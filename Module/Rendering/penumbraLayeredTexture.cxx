@@ -1,7 +1,6 @@
 #include "penumbraLayeredTexture.h"
 
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtk_glew.h"
 
@@ -28,12 +27,20 @@ bool vtkPenumbraLayeredTexture::AllocateLayers(
   this->Context->ActivateTexture(this);
   this->CreateTexture();
   this->Bind();
+  // Errors left by others are drained first, so that a refusal is this call's.
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
   glTexImage3D(this->Target, 0, static_cast<GLint>(this->InternalFormat),
     static_cast<GLsizei>(width), static_cast<GLsizei>(height), static_cast<GLsizei>(layers), 0,
     this->Format, this->Type, nullptr);
-  vtkOpenGLCheckErrorMacro("failed at glTexImage3D");
+  const bool allocated = glGetError() == GL_NO_ERROR;
   this->Deactivate();
-  return true;
+  if (!allocated)
+  {
+    this->ReleaseGraphicsResources(this->Context);
+  }
+  return allocated;
 }
 
 void vtkPenumbraLayeredTexture::AttachLayer(unsigned int index, int layer)

@@ -24,7 +24,8 @@ public:
 
   /// Allocates `layers` layers of width x height texels of `components` of `vtkType` (or of
   /// the internal format, format and type set before), as vtkTextureObject::Allocate3D does for
-  /// a 3D texture.
+  /// a 3D texture. False, with nothing held, when OpenGL refuses it: a 4K frame's counters for
+  /// 256 samples (2 GB) are GL_OUT_OF_MEMORY on llvmpipe, which vtkTextureObject would not tell.
   bool AllocateLayers(
     unsigned int width, unsigned int height, unsigned int layers, int components, int vtkType);
 

@@ -9,8 +9,18 @@
 namespace penumbra
 {
 
-void LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers)
+std::size_t LightIntensityBuffer::LayerBytes(int width, int height, int layers)
 {
+  return static_cast<std::size_t>(width) * height * layers * 4;
+}
+
+bool LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers)
+{
+  const std::size_t bytes = LayerBytes(width, height, layers);
+  if (this->RefusedBytes && bytes >= this->RefusedBytes)
+  {
+    return false;
+  }
   // A new window releases every texture (SetContext), so all are allocated again.
   const bool newWindow = this->Framebuffer->GetContext() != window;
   if (newWindow)
@@ -26,13 +36,17 @@ void LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int
     this->DepthCopy->AllocateDepthStencil(width, height);
   }
   if (TextureNeedsAllocation(
-        this->Layers, window, width, height, layers, 1, vtkTextureObject::Nearest))
+        this->Layers, window, width, height, layers, 1, vtkTextureObject::Nearest) &&
+    !this->Layers->AllocateLayers(width, height, layers, 1, VTK_FLOAT))
   {
-    this->Layers->AllocateLayers(width, height, layers, 1, VTK_FLOAT);
+    this->ReleaseGraphicsResources(window);
+    this->RefusedBytes = bytes;
+    return false;
   }
   this->Width = width;
   this->Height = height;
   this->LayerCount = layers;
+  return true;
 }
 
 void LightIntensityBuffer::BindLayer(int layer)
@@ -92,6 +106,7 @@ void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
   ReleaseFramebuffer(this->DepthCopyFramebuffer, window);
   this->Layers->ReleaseGraphicsResources(window);
   this->Width = this->Height = this->LayerCount = 0;
+  this->RefusedBytes = 0;
 }
 
 } // namespace penumbra

@@ -30,8 +30,12 @@ class LightIntensityBuffer
 {
 public:
   /// Sizes the buffer for a viewport of width x height and `layers` lights, reallocating only
-  /// what changed.
-  void Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers);
+  /// what changed. False, with nothing held, when OpenGL refuses the layers (GL_OUT_OF_MEMORY:
+  /// on llvmpipe a texture of about 1.7 GB, an 8K frame's 14 lights); a size refused is not
+  /// tried again until the buffer is released.
+  bool Prepare(vtkOpenGLRenderWindow* window, int width, int height, int layers);
+  /// Bytes the layers of Prepare's arguments take.
+  static std::size_t LayerBytes(int width, int height, int layers);
   /// Binds the framebuffer with the depth-stencil attachment and `layer` as colour.
   void BindLayer(int layer);
   /// Makes `texture` (layer `layer` of a vtkPenumbraLayeredTexture, or a 2D texture) colour
@@ -59,6 +63,8 @@ private:
     vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkPenumbraLayeredTexture> Layers;
   int Width = 0, Height = 0, LayerCount = 0;
+  /// The smallest layers' size OpenGL refused (0: none).
+  std::size_t RefusedBytes = 0;
 };
 
 } // namespace penumbra

@@ -78,17 +78,24 @@ void TechniqueChooser::FindPlateauPlane(
   }
 }
 
-bool TechniqueChooser::Reconsider(
-  ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples)
+bool TechniqueChooser::Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters,
+  int lightSamples, vtkOpenGLRenderWindow* window, const int size[2], vtkObject* owner)
 {
-  if (light.Technique != &this->Counting || !light.CountingChosenAutomatically)
+  if (light.Technique != &this->Counting)
   {
     return false;
   }
-  LastChoice& last = this->LastChoices[light.Light];
-  const bool counted = this->Counting.IsCheaper(light, casters, last);
-  last = counted ? LastChoice::Counted : LastChoice::Averaged;
-  if (counted)
+  if (light.CountingChosenAutomatically)
+  {
+    LastChoice& last = this->LastChoices[light.Light];
+    const bool cheaper = this->Counting.IsCheaper(light, casters, last);
+    last = cheaper ? LastChoice::Counted : LastChoice::Averaged;
+    if (cheaper && this->Counting.ReadyCounters(window, size, light.CountingSamples.size(), owner))
+    {
+      return false;
+    }
+  }
+  else if (this->Counting.ReadyCounters(window, size, light.CountingSamples.size(), owner))
   {
     return false;
   }

@@ -58,9 +58,11 @@ public:
 
   /// Once the light's casters are up to date: Automatic averages the counted samples instead
   /// where that is expected to be cheaper (the same samples, the same image), with hysteresis
-  /// on the light's last choice (penumbra::CountingIsCheaper). Returns true when it changed the
-  /// light's samples, whose casters then need updating again.
-  bool Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples);
+  /// on the light's last choice (penumbra::CountingIsCheaper), and any counted light averages
+  /// where OpenGL refuses the counters for a frame of `size` (warned through `owner`). Returns
+  /// true when it changed the light's samples, whose casters then need updating again.
+  bool Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples,
+    vtkOpenGLRenderWindow* window, const int size[2], vtkObject* owner);
 
 private:
   std::set<vtkLight*> WarnedRadius;

@@ -621,7 +621,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
   vtkInternals& internals = *this->Internals;
   using Stage = penumbra::StageTimes::Stage;
   this->ResetShadowStatistics(internals.DepthKept);
-  this->PrepareFramebuffer(window);
+  internals.VisibilityImages.clear();
   if (!internals.DepthKept)
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
@@ -903,14 +903,6 @@ void vtkSoftShadowPass::RemoveReceiverKeys()
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::PrepareFramebuffer(vtkOpenGLRenderWindow* window)
-{
-  vtkInternals& internals = *this->Internals;
-  internals.LI.Prepare(
-    window, internals.Size[0], internals.Size[1], static_cast<int>(internals.Lights.size()));
-  internals.VisibilityImages.clear();
-}
-
 namespace
 {
 /// Binds the LI framebuffer for the depth pass: no colour output at all (the LI texture is
@@ -1066,7 +1058,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     }
     internals.SortOutTranslucentCasters(light);
     this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
-    if (internals.Techniques.Reconsider(light, internals.Casters, this->LightSamples))
+    if (internals.Techniques.Reconsider(
+          light, internals.Casters, this->LightSamples, internals.Window, internals.Size, this))
     {
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     }
@@ -1448,20 +1441,36 @@ bool vtkSoftShadowPass::LayersFit(vtkOpenGLRenderWindow* window)
     internals.MaxLayerSize = size;
     internals.MaxLayerSizeWindow = window;
   }
+  const int layers = static_cast<int>(internals.Lights.size());
   const int largest = std::max(internals.Size[0], internals.Size[1]);
-  if (largest <= internals.MaxLayerSize)
+  const bool sizeFits = largest <= internals.MaxLayerSize;
+  if (sizeFits && internals.LI.Prepare(window, internals.Size[0], internals.Size[1], layers))
   {
     internals.WarnedLayerSize = false;
     return true;
   }
   if (!internals.WarnedLayerSize)
   {
-    vtkWarningMacro("The frame is " << internals.Size[0] << "x" << internals.Size[1]
-                                    << " pixels, but this OpenGL's 2D textures, which hold the "
-                                       "shadows' light intensity, reach "
-                                    << internals.MaxLayerSize
-                                    << " pixels at most: the scene is drawn without shadows "
-                                       "at this size.");
+    if (sizeFits)
+    {
+      vtkWarningMacro("The shadows' light intensity for "
+        << layers << " lights at " << internals.Size[0] << "x" << internals.Size[1]
+        << " pixels needs "
+        << penumbra::LightIntensityBuffer::LayerBytes(
+             internals.Size[0], internals.Size[1], layers) /
+          (1 << 20)
+        << " MiB of GPU memory in one texture, which this OpenGL refused: the scene is drawn "
+           "without shadows at this size. Fewer shadowing lights or a smaller frame fit.");
+    }
+    else
+    {
+      vtkWarningMacro("The frame is " << internals.Size[0] << "x" << internals.Size[1]
+                                      << " pixels, but this OpenGL's 2D textures, which hold the "
+                                         "shadows' light intensity, reach "
+                                      << internals.MaxLayerSize
+                                      << " pixels at most: the scene is drawn without shadows "
+                                         "at this size.");
+    }
     internals.WarnedLayerSize = true;
   }
   return false;

@@ -439,8 +439,8 @@ private:
   void DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /// Warns once per positional light whose sphere reaches a visible prop's box.
   void WarnOfLightsReachingTheScene(vtkRenderer* renderer);
-  /// Whether the frame's size fits the light-intensity layers (GL_MAX_TEXTURE_SIZE); warns
-  /// once while it does not.
+  /// Whether the frame's light-intensity layers fit: its size within GL_MAX_TEXTURE_SIZE, and the
+  /// layers allocated (OpenGL may refuse them for memory); warns once while they do not.
   bool LayersFit(vtkOpenGLRenderWindow* window);
   /// Before drawing into `window`: releases the GPU resources made in another window's context
   /// and registers for the release of this one's.
@@ -451,7 +451,6 @@ private:
   void UpdateShaderConfiguration();
   void AddReceiverKeys(const vtkRenderState* s);
   void RemoveReceiverKeys();
-  void PrepareFramebuffer(vtkOpenGLRenderWindow* window);
   /// Clears the depth and draws, through VTK, that of the props not left to RenderCasterDepth.
   void RenderDepth(const vtkRenderState* s);
   /// After UpdateCasters: the depth of the props left to it, from their caster meshes.

@@ -26,6 +26,7 @@
 #include "vtkLightsPass.h"
 #include "vtkLookupTable.h"
 #include "vtkMapper.h"
+#include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
@@ -1134,6 +1135,69 @@ void TestWideFrame()
   Check(log.Messages.empty(), "no warning for a frame that fits 2D textures");
 }
 
+/// Buffers OpenGL refuses for memory (GL_OUT_OF_MEMORY; llvmpipe refuses a texture of about
+/// 1.7 GB): a counted light whose counters do not fit averages the same samples, and a frame
+/// whose light-intensity layers do not fit is drawn unshadowed, each with one warning. Before,
+/// the first silently drew the centre's hard shadow and the second a black frame. Where the GPU
+/// allocates them, the test says so and checks that they were used.
+void TestRefusedAllocations()
+{
+  PassScene view(200, 150, PassScene::StartLight::None);
+  view.Window->SetOffScreenRendering(1); // larger than the screen
+  view.Ground(4.0);
+  view.Sphere(0, 1, 0, 0.6, 32);
+  view.Camera(3, 5, 8, 0, 0.5, 0);
+  vtkLight* key = view.PointLight(-2, 6, 3, 0.4);
+  const WarningLog log(view.Pass);
+
+  // 4K with 256 samples: 64 counter words a pixel, 2 GB.
+  view.Window->SetSize(3840, 2160);
+  view.Pass->SetMethod(vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES);
+  view.Pass->SetLightSamples(256);
+  view.Window->Render();
+  const std::vector<float> soft = ImageValues(view.Pass->GetVisibilityImage(0));
+  const auto penumbra =
+    std::count_if(soft.begin(), soft.end(), [](float v) { return v > 0.001f && v < 0.999f; });
+  const bool counted = view.Pass->GetNumberOfCountedLights() == 1;
+  std::printf("     3840x2160, 256 samples: %s, %lld penumbra px, %lld warnings\n",
+    counted ? "counted" : "averaged", static_cast<long long>(penumbra),
+    static_cast<long long>(log.Count("refused")));
+  Check(penumbra > static_cast<long long>(soft.size() / 400),
+    "counters too large for OpenGL: soft shadows all the same (averaged), not the hard one");
+  Check(counted ? log.Messages.empty() : log.Count("sample counters for 256 light samples") == 1,
+    "refused counters: one warning saying so");
+  view.Window->Render();
+  Check(log.Messages.size() == (counted ? 0u : 1u), "the warning is not repeated every frame");
+
+  // 8K with 14 hard lights: 14 float layers, 1.8 GB.
+  key->SetIntensity(1.0 / 14);
+  vtkSoftShadowPass::SetLightRadius(key, 0.0);
+  for (int i = 1; i < 14; ++i)
+  {
+    const double angle = 2.0 * vtkMath::Pi() * i / 14;
+    view.PointLight(4 * std::cos(angle), 6, 4 * std::sin(angle), 0.0)->SetIntensity(1.0 / 14);
+  }
+  view.Pass->SetMethod(vtkSoftShadowPass::METHOD_HARD_VOLUMES);
+  view.Window->SetSize(7680, 4320);
+  view.Window->Render();
+  const int lights = view.Pass->GetNumberOfShadowingLights();
+  const std::vector<unsigned char> shown = WindowColours(view.Window, view.Renderer);
+  const bool lit = std::count(shown.begin(), shown.end(), 0) < static_cast<long>(shown.size() / 2);
+  // Where the layers were drawn, the first light's shadow is a small part of the view.
+  const std::vector<float> first =
+    lights ? ImageValues(view.Pass->GetVisibilityImage(0)) : std::vector<float>();
+  const auto dark = std::count_if(first.begin(), first.end(), [](float v) { return v < 0.5f; });
+  std::printf("     7680x4320, 14 lights: %d shadowing, frame %s, %lld px of light 0 shadowed\n",
+    lights, lit ? "lit" : "black", static_cast<long long>(dark));
+  Check(lit && dark <= static_cast<long long>(first.size() / 10),
+    "layers too large for OpenGL: neither a black frame nor a light shadowing everything");
+  Check(lights == 14 || (lights == 0 && log.Count("light intensity for 14 lights") == 1),
+    "refused layers: drawn unshadowed with one warning");
+  view.Window->SetSize(200, 150);
+  view.Window->Render();
+  Check(view.Pass->GetNumberOfShadowingLights() == 14, "a frame that fits has its shadows again");
+}
+
 /// The tight depth range draws the shadows with a copy of the camera: the user's camera is not
 /// modified, so a pipeline that depends on it (vtkDepthSortPolyData) does not run again and a
 /// still scene reuses its shadows. The copy is made active only while VTK draws props into the
@@ -1208,6 +1272,7 @@ int main(int argc, char* argv[])
     { "NestedPasses", TestNestedPasses },
     { "ContextGoneWhileDetached", TestContextGoneWhileDetached },
     { "CulledProps", TestCulledProps },
+    { "RefusedAllocations", TestRefusedAllocations },
   };
   return RunFeatures(argc, argv, features);
 }
