@@ -26,7 +26,6 @@ def main():
     args = scene_arguments(60, 5, "timed frames per block")
     e = args.extent
     contour, renderer, window, _ = make_scene(e)
-    contour.Update()
     camera = renderer.GetActiveCamera()
     sphere = vtkSphereSource()
     sphere.SetCenter(1.2 * e, 0.4 * e, 0.6 * e)

@@ -24,8 +24,6 @@ def main():
     args = scene_arguments(120, 5, "timed frames per block")
     e = args.extent
     contour, renderer, window, moving = make_scene(e)
-    contour.Update()
-    renderer.ResetCameraClippingRange()
     triangles = contour.GetOutput().GetNumberOfPolys()
 
     passes = {}

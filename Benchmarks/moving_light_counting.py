@@ -20,8 +20,6 @@ def main():
     args = scene_arguments(30, 6, "timed frames")
     e = args.extent
     contour, renderer, window, light = make_scene(e)
-    contour.Update()
-    renderer.ResetCameraClippingRange()
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToSoftShadowVolumes()
     shadows.SetLightSamples(16)

@@ -24,8 +24,6 @@ from time_varying import make_scene, scene_arguments
 def main():
     args = scene_arguments(120, 5, "timed frames per block")
     contour, renderer, window, _ = make_scene(args.extent)
-    contour.Update()
-    renderer.ResetCameraClippingRange()
     triangles = contour.GetOutput().GetNumberOfPolys()
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToHardVolumes()

@@ -46,7 +46,8 @@ def scene_arguments(extent, frames, frames_help="timed frames"):
 
 def make_scene(e):
     """The wavelet's isosurface (half extent `e`, open where the extent clips it) over a ground,
-    one shadowing light, a 1024x768 off-screen window: (contour, renderer, window, light)."""
+    one shadowing light, a 1024x768 off-screen window, the contour run and the camera's range
+    set to it: (contour, renderer, window, light)."""
     wavelet = vtkRTAnalyticSource()
     wavelet.SetWholeExtent(-e, e, -e, e, -e, e)
     contour = vtkFlyingEdges3D()
@@ -70,14 +71,14 @@ def make_scene(e):
     camera = renderer.GetActiveCamera()
     camera.SetPosition(2 * e, 2.5 * e, 3 * e)
     camera.SetFocalPoint(0, 0, 0)
+    contour.Update()
+    renderer.ResetCameraClippingRange()
     return contour, renderer, window, light
 
 
 def main():
     args = scene_arguments(60, 8, "timed frames of each configuration")
     contour, renderer, window, _ = make_scene(args.extent)
-
-    contour.Update()
     triangles = contour.GetOutput().GetNumberOfPolys()
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToHardVolumes()

@@ -56,6 +56,12 @@ std::string CountingShader(const char* source, std::size_t samples, const char* 
   return text;
 }
 
+/// The counters' 32-bit words for each pixel: four 8-bit counts to a word.
+std::size_t CounterWords(std::size_t samples)
+{
+  return (samples + 3) / 4;
+}
+
 /// Whether the caster's shadow is counted for the light: translucent casters are drawn one
 /// sample at a time instead.
 bool Counted(const CasterCache& caster, const ShadowLight& light)
@@ -155,7 +161,7 @@ bool CountingTechnique::AllocateCounters(
 {
   // Allocated for these texels and samples only when a light is counted, so averaging lights
   // hold none.
-  const int words = static_cast<int>((samples + 3) / 4);
+  const int words = static_cast<int>(CounterWords(samples));
   if (!TextureNeedsAllocation(
         this->SampleCounters, window, texels.x, texels.y, words, 1, vtkTextureObject::Nearest))
   {
@@ -170,7 +176,7 @@ bool CountingTechnique::AllocateCounters(
 bool CountingTechnique::ReadyCounters(
   vtkOpenGLRenderWindow* window, const int size[2], std::size_t samples, vtkObject* owner)
 {
-  const std::size_t bytes = static_cast<std::size_t>(size[0]) * size[1] * ((samples + 3) / 4) * 4;
+  const std::size_t bytes = static_cast<std::size_t>(size[0]) * size[1] * CounterWords(samples) * 4;
   if (this->RefusedCounterBytes && bytes >= this->RefusedCounterBytes)
   {
     return false;

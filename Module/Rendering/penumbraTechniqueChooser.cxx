@@ -85,17 +85,14 @@ bool TechniqueChooser::Reconsider(ShadowLight& light, const std::vector<CasterCa
   {
     return false;
   }
+  bool count = true;
   if (light.CountingChosenAutomatically)
   {
     LastChoice& last = this->LastChoices[light.Light];
-    const bool cheaper = this->Counting.IsCheaper(light, casters, last);
-    last = cheaper ? LastChoice::Counted : LastChoice::Averaged;
-    if (cheaper && this->Counting.ReadyCounters(window, size, light.CountingSamples.size(), owner))
-    {
-      return false;
-    }
+    count = this->Counting.IsCheaper(light, casters, last);
+    last = count ? LastChoice::Counted : LastChoice::Averaged;
   }
-  else if (this->Counting.ReadyCounters(window, size, light.CountingSamples.size(), owner))
+  if (count && this->Counting.ReadyCounters(window, size, light.CountingSamples.size(), owner))
   {
     return false;
   }
