@@ -316,9 +316,9 @@ bool CountingTechnique::CountWedges(
   program->SetUniformi("counterStride", counted ? 2 : 1);
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
-  // Samples in wedge coordinates: relative to the light's centre, which is every caster's wedge
-  // origin for a positional light, or directions, which no origin moves. Their spread about the
-  // centre lets a fragment skip an edge whose plane through it misses them all
+  // Samples as offsets from the light's centre, which each caster's wedge coordinates place
+  // (lightWedge), or directions, which no origin moves. Their spread about the centre lets a
+  // fragment skip an edge whose plane through it misses them all
   // (penumbra::EdgePlaneMissesSamples).
   const glm::dvec3 centre = light.World.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(light.World);
   std::vector<float> samples;

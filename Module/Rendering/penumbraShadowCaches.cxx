@@ -258,7 +258,8 @@ void AppendInRuns(WedgeGeometry& into, std::size_t count, int floatsPerVertex, A
 
 glm::dvec4 WedgeBuffer::LightInWedgeSpace() const
 {
-  return this->LightWorld.w != 0.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : this->LightWorld;
+  return this->LightWorld.w != 0.0 ? glm::dvec4(glm::dvec3(this->LightWorld) - this->Origin, 1.0)
+                                   : this->LightWorld;
 }
 
 bool WedgeBuffer::BuiltFor(
@@ -275,8 +276,7 @@ void WedgeBuffer::Reset(const glm::dmat4& objectToWorld, const glm::dvec4& light
   this->LightWorld = lightWorld;
   this->Radius = radius;
   this->Receivers = receivers;
-  this->Origin = lightWorld.w != 0.0 ? glm::dvec3(lightWorld)
-                                     : glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  this->Origin = glm::dvec3(objectToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   this->PiecesInWedgeSpace = receivers.Pieces;
   for (Box& piece : this->PiecesInWedgeSpace)
   {

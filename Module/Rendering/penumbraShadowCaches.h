@@ -123,8 +123,9 @@ struct WedgeGeometry
 /// where there is one, and drawn as the closed convex polyhedron left; without a box it is drawn
 /// whole, to infinity: 8 outward triangles over 6 vertices (a light pyramid's 6 over 5, or a
 /// full-viewport triangle).
-/// Vertices are in wedge coordinates: world space relative to Origin (the light's centre, or the
-/// caster's for a directional light), so float precision follows the light, not the world origin.
+/// Vertices are in wedge coordinates: world space relative to Origin, the caster's centre, so that
+/// float precision follows the caster, not the world origin or a far light (whose centre, 700,000
+/// away, would leave edges and points float steps of 0.06).
 struct WedgeBuffer : WedgeGeometry
 {
   glm::dvec3 Origin{ 0.0 };
@@ -149,7 +150,7 @@ struct WedgeBuffer : WedgeGeometry
   /// Whether the buffer was built for this caster matrix and light (its Receivers say for which
   /// box).
   bool BuiltFor(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius) const;
-  /// Sets Origin from the matrix and light, and empties the buffer for a rebuild.
+  /// Sets Origin from the matrix, and empties the buffer for a rebuild.
   void Reset(const glm::dmat4& objectToWorld, const glm::dvec4& lightWorld, double radius,
     const ReceiverBounds& receivers);
   /// Appends the wedge of edge from -> to (wedge coordinates) to `geometry` (this buffer's, or

@@ -18,7 +18,8 @@ layout(early_fragment_tests) in;
 
 //PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;    // (centre, 1) or (direction towards the light, 0), wedge coordinates
-uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT]; // wedge coordinates, same w as lightWedge
+// Positional: each sample's offset from the centre; directional: directions towards the light.
+uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT];
 uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
@@ -66,7 +67,8 @@ void main()
   vec3 edge = edgeToVS - edgeFromVS;
   vec3 sampleSide = cross(fromP, edge);
   vec3 edgeToCentre = lightWedge.xyz - lightWedge.w * edgeFromVS;
-  if (abs(dot(edgeToCentre, sampleSide)) >
+  float centreSide = dot(edgeToCentre, sampleSide);
+  if (abs(centreSide) >
     (sampleSpread + 1e-5 * length(edgeToCentre)) * length(sampleSide))
   {
     discard;
@@ -92,12 +94,13 @@ void main()
   // four (triple products rearranged): the side of the plane through the edge and s, the sides
   // of the edge's ends from the plane through p and the path to s, and the path's end along the
   // edge's normal. The ends' expressions depend on p, the end and the path alone, so edges that
-  // share an end still decide it alike.
+  // share an end still decide it alike. For a positional light s is the centre plus an offset,
+  // and the tests are the centre's (the paths' planes hold the centre) plus the offset's: no
+  // float cancels the centre's distance, however far the light.
   vec3 pathFrom = cross(fromP, towardsCentre);
   vec3 pathTo = cross(edgeToVS - p, towardsCentre);
   mat4x3 toTests = mat4x3(sampleSide, pathFrom, pathTo, alongAxis);
-  vec4 atCentre = lightWedge.w *
-    vec4(dot(edgeFromVS, sampleSide), dot(p, pathFrom), dot(p, pathTo), dot(p, alongAxis));
+  vec4 atCentre = lightWedge.w * vec4(centreSide, 0.0, 0.0, alongCentre);
 
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
   {
@@ -109,7 +112,7 @@ void main()
       {
         break;
       }
-      vec4 tests = lightSamples[i].xyz * toTests - atCentre; // (ds, sa, sb, along the normal)
+      vec4 tests = lightSamples[i].xyz * toTests + atCentre; // (ds, sa, sb, along the normal)
       float ds = tests.x;
       bool crossesEdgePlane = dc != 0.0 && ds != 0.0 && (dc < 0.0) != (ds < 0.0);
       bool crossesPath = tests.y != 0.0 && tests.z != 0.0 && (tests.y < 0.0) != (tests.z < 0.0);
