@@ -8,12 +8,14 @@
 // A depth complexity cannot be negative. Where one is, the rasterized centre count missed a
 // crossing that the edge terms, taken at the pixel's centre, assume (by one or two surfaces):
 // the counts are shifted up until the smallest is 0. The fields are decoded with `bias` added to
-// each beside the centre count: a field whose sum is negative borrows from the next one in the
-// packed word, and the bias keeps every sum in [0, 255], where none borrows, for counts from
-// -bias to 255 - bias. A count above that (224 or more surfaces between a point and a sample)
-// overflows: it reads as negative and passes for the lowest. Averaging's 8-bit stencil wraps at
-// 256. (With a bias of 128, the stream tubes converging on a critical point, 132 surfaces
-// deep, came out as dark blobs.)
+// each beside the centre count (mod 256: the centre itself may be deeper): a field whose sum is
+// negative borrows from the next one in the packed word, and the bias keeps every sum in
+// [0, 255], where none borrows, for counts from -bias to 255 - bias. A count above that (252 or
+// more surfaces between a point and a sample) overflows: it reads as any count, and as the
+// lowest where it reads negative. Averaging's 8-bit stencil wraps at 256. The bias is small
+// because a wrapped count reads negative with odds bias/256: 32 turned stream tubes converging
+// on a critical point, hundreds of surfaces deep, into dark blobs; 128, earlier, did so from
+// 132 surfaces on.
 //
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
@@ -24,7 +26,7 @@ uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler2DArray counters;
 uniform int useCounters;
 uniform int counterStride; // pixels between counter texels: 1, or 2 at half resolution
-const int bias = 32;
+const int bias = 4;
 
 void main()
 {
@@ -40,7 +42,7 @@ void main()
 #endif
     return;
   }
-  uint offset = uint(centre + bias) * 0x01010101u;
+  uint offset = (uint(centre + bias) & 0xFFu) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
   int visible = 0; // samples whose count equals it
   for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)

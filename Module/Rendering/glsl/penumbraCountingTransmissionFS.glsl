@@ -25,7 +25,8 @@ void main()
     discard; // no translucent surface in the way: most pixels of the rectangle
   }
   int offset = int(round(texelFetch(countOffset, pixel, 0).r));
-  uint counts = texelFetch(counters, ivec3(pixel, word), 0).r + uint(offset) * 0x01010101u;
+  uint counts =
+    texelFetch(counters, ivec3(pixel, word), 0).r + (uint(offset) & 0xFFu) * 0x01010101u;
   float taken = 0.0;
   for (int c = 0; c < groupSize; ++c)
   {
