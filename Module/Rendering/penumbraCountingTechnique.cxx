@@ -46,14 +46,37 @@ float SmoothLimit(std::size_t samples)
 /// and `define` defined when given.
 std::string CountingShader(const char* source, std::size_t samples, const char* define = nullptr)
 {
+  // Compiled for a power-of-two capacity, the sample count a constant where it fills it and a
+  // uniform otherwise: every program stays in the window's shader cache until the window goes,
+  // so one program per distinct LightSamples would keep megabytes of compiled code each (0.8 GB
+  // for 1 to 256 on llvmpipe). The constant keeps the loops unrolled (the wedges took 6% longer
+  // with a uniform count of 16).
+  std::size_t capacity = 4;
+  while (capacity < samples)
+  {
+    capacity *= 2;
+  }
   std::string text = source;
-  std::string defines = "#define PENUMBRA_SAMPLE_COUNT " + std::to_string(samples) + "\n";
+  std::string defines = "#define PENUMBRA_SAMPLE_CAPACITY " + std::to_string(capacity) + "\n";
+  if (samples == capacity)
+  {
+    defines += "#define PENUMBRA_SAMPLES_FILL_CAPACITY\n";
+  }
   if (define)
   {
     defines += std::string("#define ") + define + "\n";
   }
   vtkShaderProgram::Substitute(text, "//PENUMBRA::SampleCount", defines, false);
   return text;
+}
+
+/// Sets the sample count of a CountingShader program that does not hold it as a constant.
+void SetSampleCount(vtkShaderProgram* program, std::size_t samples)
+{
+  if (program->IsUniformUsed("sampleCount"))
+  {
+    program->SetUniformi("sampleCount", static_cast<int>(samples));
+  }
 }
 
 /// The counters' 32-bit words for each pixel: four 8-bit counts to a word.
@@ -314,6 +337,7 @@ bool CountingTechnique::CountWedges(
     counted ? HalfResolutionCounts::ClipToCounters(frame.Size) : glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
   program->SetUniform4f("clipToCounters", glm::value_ptr(clipToCounters));
   program->SetUniformi("counterStride", counted ? 2 : 1);
+  SetSampleCount(program, sampleCount);
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   // Samples as offsets from the light's centre, which each caster's wedge coordinates place
@@ -399,6 +423,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   resolve->SetUniformi("centreCount", this->CentreCount->GetTextureUnit());
   resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
   resolve->SetUniformi("counterStride", target == ResolveInto::HalfResolution ? 2 : 1);
+  SetSampleCount(resolve, light.CountingSamples.size());
   // Counted again only at the uncertain pixels (CountWedges); every other pixel is written.
   const int counted =
     target == ResolveInto::UncertainPixels ? HalfResolutionCounts::UncertainStencil : 0;

@@ -26,7 +26,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
+
+#include <unistd.h>
 
 using namespace penumbra_test;
 
@@ -195,6 +198,53 @@ void TestAutomaticChoice(const SceneMaker& make)
     view.Window->Render();
     Check(Visibility(pass) == automatic, "Automatic's image is its chosen method's");
   }
+}
+
+/// Resident memory of this process in bytes (Linux), 0 where /proc cannot tell.
+std::size_t ResidentBytes()
+{
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+/// Light sample counts that are not powers of two count as averaging does, and sweeping the
+/// count compiles a few shader programs, not some for every count: the window's shader cache
+/// keeps every program it compiled until the window goes (about 3 MB each count on llvmpipe).
+void TestSampleCounts(const SceneMaker& make)
+{
+  SceneWindow view(make());
+  vtkSoftShadowPass* pass = view.Pass;
+  for (const int samples : { 7, 24 })
+  {
+    pass->SetLightSamples(samples);
+    pass->SetMethodToAveragedHardShadows();
+    view.Window->Render();
+    const std::vector<float> averaged = Visibility(pass);
+    pass->SetMethodToSoftShadowVolumes();
+    view.Window->Render();
+    const SampleAgreement agreement = CompareSampledVisibility(averaged, Visibility(pass), samples);
+    std::printf("%d samples: differ > 1/N on %.2f%% of %d shadowed px\n", samples,
+      100.0 * agreement.Step, agreement.Shadowed);
+    Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003,
+      std::to_string(samples) + " samples: counting equals averaging within 1/N");
+  }
+  // Both programs of each capacity (32 and 64) compiled before the sweep.
+  for (const int samples : { 17, 32, 33, 64 })
+  {
+    pass->SetLightSamples(samples);
+    view.Window->Render();
+  }
+  const std::size_t before = ResidentBytes();
+  for (int samples = 18; samples < 64; ++samples)
+  {
+    pass->SetLightSamples(samples);
+    view.Window->Render();
+  }
+  const double grownMB = (double(ResidentBytes()) - double(before)) / (1 << 20);
+  std::printf("sweeping 18 to 63 light samples: resident memory grew by %.1f MB\n", grownMB);
+  Check(before == 0 || grownMB < 40.0, "a sweep of light sample counts compiles no new programs");
 }
 
 /// Counting wedges are cut to the receivers' box (penumbra::StableReceiverBox): a receiver that
@@ -530,6 +580,7 @@ int main()
   RunScene(stacked, { true, 0.003, 0.0005 });
   TestHalfResolutionEdges(scenes[0]);
   TestAutomaticChoice(scenes[0]);
+  TestSampleCounts(scenes[0]);
   TestReceiversBox();
   TestStageTimes(scenes[0]);
   return penumbra_test::Finish();

@@ -26,6 +26,11 @@ uniform sampler2D centreCount; // minus the centre's shadow-volume count
 uniform usampler2DArray counters;
 uniform int useCounters;
 uniform int counterStride; // pixels between counter texels: 1, or 2 at half resolution
+#ifdef PENUMBRA_SAMPLES_FILL_CAPACITY
+const int sampleCount = PENUMBRA_SAMPLE_CAPACITY;
+#else
+uniform int sampleCount; // counted samples, fewer than PENUMBRA_SAMPLE_CAPACITY
+#endif
 const int bias = 4;
 
 void main()
@@ -45,10 +50,10 @@ void main()
   uint offset = (uint(centre + bias) & 0xFFu) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
   int visible = 0; // samples whose count equals it
-  for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
+  for (int word = 0; word * 4 < sampleCount; ++word)
   {
     uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
-    for (int field = 0; field < 4 && word * 4 + field < PENUMBRA_SAMPLE_COUNT; ++field)
+    for (int field = 0; field < 4 && word * 4 + field < sampleCount; ++field)
     {
       int count = int((counts >> uint(8 * field)) & 0xFFu) - bias;
       if (count < lowest)
@@ -62,6 +67,6 @@ void main()
 #ifdef PENUMBRA_COUNT_OFFSET
   gl_FragData[0] = vec4(float(centre - lowest));
 #else
-  gl_FragData[0] = vec4(float(visible) / float(PENUMBRA_SAMPLE_COUNT));
+  gl_FragData[0] = vec4(float(visible) / float(sampleCount));
 #endif
 }

@@ -19,7 +19,12 @@ layout(early_fragment_tests) in;
 //PENUMBRA::DepthPoint::Dec
 uniform vec4 lightWedge;    // (centre, 1) or (direction towards the light, 0), wedge coordinates
 // Positional: each sample's offset from the centre; directional: directions towards the light.
-uniform vec4 lightSamples[PENUMBRA_SAMPLE_COUNT];
+uniform vec4 lightSamples[PENUMBRA_SAMPLE_CAPACITY];
+#ifdef PENUMBRA_SAMPLES_FILL_CAPACITY
+const int sampleCount = PENUMBRA_SAMPLE_CAPACITY; // a constant bound unrolls the loops
+#else
+uniform int sampleCount; // samples set in lightSamples
+#endif
 uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
@@ -102,13 +107,13 @@ void main()
   mat4x3 toTests = mat4x3(sampleSide, pathFrom, pathTo, alongAxis);
   vec4 atCentre = lightWedge.w * vec4(centreSide, 0.0, 0.0, alongCentre);
 
-  for (int word = 0; word * 4 < PENUMBRA_SAMPLE_COUNT; ++word)
+  for (int word = 0; word * 4 < sampleCount; ++word)
   {
     uint changes = 0u;
     for (int field = 0; field < 4; ++field)
     {
       int i = word * 4 + field;
-      if (i >= PENUMBRA_SAMPLE_COUNT)
+      if (i >= sampleCount)
       {
         break;
       }
