@@ -45,9 +45,11 @@ void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const
     light.Technique = &this->Wedges;
     return;
   }
-  if ((method == vtkSoftShadowPass::METHOD_AUTOMATIC ||
-        method == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES) &&
-    this->Counting.Supported(pass))
+  // Automatic averages more samples than counting holds, as asked; the forced method clamps.
+  const bool countable = method == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES ||
+    (method == vtkSoftShadowPass::METHOD_AUTOMATIC &&
+      pass->GetLightSamples() <= CountingTechnique::MaximumSamples);
+  if (countable && this->Counting.Supported(pass))
   {
     light.Technique = &this->Counting;
     this->Counting.SetHalfResolution(pass->GetHalfResolutionCounting());

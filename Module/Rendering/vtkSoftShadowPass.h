@@ -94,7 +94,8 @@ public:
     /// hard shadows of the same LightSamples, which give the same image, whichever a cost model
     /// fitted to the benchmark expects to be faster (penumbra::CountingIsCheaper: counting for
     /// small lights and coarse casters, averaging for large lights over finely tessellated
-    /// ones); averaging where the OpenGL context lacks image atomics.
+    /// ones); averaging where the OpenGL context lacks image atomics or LightSamples is above
+    /// the 256 that counting holds.
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
@@ -118,8 +119,8 @@ public:
     /// The same answer as averaging those samples' hard shadows, for any mesh, in one volume
     /// pass and one wedge pass for the opaque casters; translucent casters' volumes are drawn
     /// for every sample, as averaging draws them. Needs OpenGL 4.4 (or image load/store and
-    /// clear_texture); at most 256 samples; a sample's count is kept in 8 bits, read from -32
-    /// to 223 (224 layers overflow).
+    /// clear_texture); at most 256 samples (more are clamped, with a warning); a sample's count
+    /// is kept in 8 bits, read from -4 to 251 (252 layers overflow).
     METHOD_SOFT_SHADOW_VOLUMES = 5
   };
 

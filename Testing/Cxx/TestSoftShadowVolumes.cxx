@@ -198,6 +198,19 @@ void TestAutomaticChoice(const SceneMaker& make)
     view.Window->Render();
     Check(Visibility(pass) == automatic, "Automatic's image is its chosen method's");
   }
+  // More samples than counting holds (256): Automatic averages them all, without a warning;
+  // the forced method clamps them, with one.
+  WarningLog warnings(pass);
+  vtkSoftShadowPass::SetLightRadius(view.Light, 0.05);
+  pass->SetLightSamples(300);
+  pass->SetMethodToAutomatic();
+  view.Window->Render();
+  Check(pass->GetNumberOfAveragedLights() == 1 && warnings.Messages.empty(),
+    "Automatic averages 300 samples, silently");
+  pass->SetMethodToSoftShadowVolumes();
+  view.Window->Render();
+  Check(pass->GetNumberOfCountedLights() == 1 && warnings.Count("clamped") == 1,
+    "soft shadow volumes clamp 300 samples to 256, with a warning");
 }
 
 /// Resident memory of this process in bytes (Linux), 0 where /proc cannot tell.
