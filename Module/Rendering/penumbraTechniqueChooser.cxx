@@ -8,6 +8,23 @@
 namespace penumbra
 {
 
+TechniqueChooser::LightRecord& TechniqueChooser::Record(vtkLight* light)
+{
+  auto found = this->Records.find(light);
+  if (found != this->Records.end() && found->second.Light == light)
+  {
+    return found->second;
+  }
+  for (auto it = this->Records.begin(); it != this->Records.end();)
+  {
+    it = it->second.Light ? std::next(it) : this->Records.erase(it);
+  }
+  LightRecord& record = this->Records[light];
+  record = LightRecord();
+  record.Light = light;
+  return record;
+}
+
 void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target)
 {
   const glm::dvec4& world = light.World;
@@ -24,8 +41,10 @@ void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const
   }
   if (world.w == 0.0 && radius >= 90.0)
   {
-    if (this->WarnedRadius.insert(light.Light).second)
+    bool& warned = this->Record(light.Light).WarnedRadius;
+    if (!warned)
     {
+      warned = true;
       vtkWarningWithObjectMacro(pass,
         "Directional light " << light.Light << " has an angular radius of " << radius
                              << " degrees; clamped to 89.");
@@ -90,7 +109,7 @@ bool TechniqueChooser::Reconsider(ShadowLight& light, const std::vector<CasterCa
   bool count = true;
   if (light.CountingChosenAutomatically)
   {
-    LastChoice& last = this->LastChoices[light.Light];
+    LastChoice& last = this->Record(light.Light).Last;
     count = this->Counting.IsCheaper(light, casters, last);
     last = count ? LastChoice::Counted : LastChoice::Averaged;
   }

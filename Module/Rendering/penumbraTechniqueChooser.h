@@ -11,14 +11,15 @@
 #include "penumbraPlateauTechnique.h"
 #include "penumbraWedgeTechnique.h"
 
+#include "vtkLight.h"
+#include "vtkWeakPointer.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
 #include <map>
-#include <set>
 #include <vector>
 
-class vtkLight;
 class vtkObject;
 class vtkRenderer;
 class vtkSoftShadowPass;
@@ -65,9 +66,18 @@ public:
     vtkOpenGLRenderWindow* window, const int size[2], vtkObject* owner);
 
 private:
-  std::set<vtkLight*> WarnedRadius;
-  /// Automatic's last choice for each light.
-  std::map<vtkLight*, LastChoice> LastChoices;
+  /// What the chooser remembers of a light. Held weakly: once the light is deleted, a new light
+  /// that VTK allocates at its address starts afresh, warned again and without hysteresis.
+  struct LightRecord
+  {
+    vtkWeakPointer<vtkLight> Light;
+    bool WarnedRadius = false;
+    LastChoice Last = LastChoice::None; ///< Automatic's last choice
+  };
+  /// The record of `light`, new if the light is; records of deleted lights are dropped then.
+  LightRecord& Record(vtkLight* light);
+
+  std::map<vtkLight*, LightRecord> Records;
 };
 
 } // namespace penumbra

@@ -30,6 +30,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
+#include "vtkOpenGLLight.h"
 #include "vtkOverlayPass.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
@@ -59,6 +60,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <limits>
 #include <set>
@@ -706,6 +708,60 @@ public:
   int PixelsOffFresh() { return PixelsOffFreshPass(this->View); }
 };
 
+/// A light that always lives at the same address: a light the allocator places where a deleted
+/// light was, every time.
+class SameAddressLight : public vtkOpenGLLight
+{
+public:
+  static SameAddressLight* New()
+  {
+    auto* light = new SameAddressLight;
+    light->InitializeObjectBase();
+    return light;
+  }
+  static void* operator new(std::size_t size)
+  {
+    alignas(std::max_align_t) static unsigned char storage[sizeof(vtkOpenGLLight)];
+    return size <= sizeof(storage) ? storage : nullptr;
+  }
+  static void operator delete(void*) {}
+};
+
+/// What the pass remembers of a light (its one warning, Automatic's last choice) goes with the
+/// light: a new light at a deleted light's address is warned again.
+void TestLightRecordsFollowLights()
+{
+  std::vector<vtkSmartPointer<vtkObject>> keep;
+  PassScene view(160, 120, PassScene::StartLight::None);
+  AddGroundAndSphere(view.Renderer, keep);
+  PlaceCamera(view.Renderer, 0, 5, 6, 0, 0, 0);
+  const WarningLog log(view.Pass);
+  const auto wideSun = []
+  {
+    vtkSmartPointer<vtkLight> light = vtkSmartPointer<SameAddressLight>::New();
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetPosition(0.3, 1.0, 0.2);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+    vtkSoftShadowPass::SetLightRadius(light, 95.0);
+    return light;
+  };
+  vtkSmartPointer<vtkLight> light = wideSun();
+  const vtkLight* first = light.Get();
+  view.Renderer->AddLight(light);
+  view.Window->Render();
+  view.Window->Render();
+  Check(log.Count("clamped to 89") == 1, "a directional light of 95 degrees: one warning");
+
+  view.Renderer->RemoveLight(light);
+  light = nullptr;
+  light = wideSun();
+  view.Renderer->AddLight(light);
+  view.Window->Render();
+  Check(light.Get() == first && log.Count("clamped to 89") == 2,
+    "a new light of 95 degrees at the deleted one's address: warned again");
+}
+
 void TestReuseUnchangedShadows()
 {
   ReuseScene scene;
@@ -1265,6 +1321,7 @@ int main(int argc, char* argv[])
     { "Picking", TestPicking },
     { "TwoWindows", TestTwoWindows },
     { "LightReachingScene", TestLightReachingScene },
+    { "LightRecordsFollowLights", TestLightRecordsFollowLights },
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
     { "CameraLeftAlone", TestCameraLeftAlone },
     { "DataObjectSwapped", TestDataObjectSwapped },
