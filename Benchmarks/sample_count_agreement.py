@@ -1,0 +1,44 @@
+"""Counting against averaging the same samples as N grows: the share of shadowed pixels where
+they differ by more than 1/N and by more than 0.5, on the tests' ground and sphere
+(penumbra_testing.ground_and_sphere), light at (-2, 6, 3) of radius 0.4, 320x240.
+
+    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
+        /usr/bin/python3 Benchmarks/sample_count_agreement.py
+"""
+import numpy as np
+import penumbra
+from penumbra_testing import actor_of, ground_and_sphere, image, light_pass_and_truth
+from vtkmodules.vtkRenderingCore import vtkRenderer
+
+WIDTH, HEIGHT = 320, 240
+
+
+def main():
+    renderer = vtkRenderer()
+    plane, sphere = ground_and_sphere()
+    renderer.AddActor(actor_of(plane, (0.9, 0.9, 0.9)))
+    renderer.AddActor(actor_of(sphere, (0.9, 0.3, 0.3)))
+    light, window, shadows, _ = light_pass_and_truth(renderer, WIDTH, HEIGHT)
+    light.SetPosition(-2, 6, 3)
+    penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.4)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(3, 5, 8)
+    camera.SetFocalPoint(0, 0.5, 0)
+    renderer.ResetCameraClippingRange()
+    for samples in (16, 64, 255):
+        shadows.SetLightSamples(samples)
+        shadows.SetMethodToAveragedHardShadows()
+        window.Render()
+        averaged = image(shadows.GetVisibilityImage(0), WIDTH, HEIGHT)
+        shadows.SetMethodToSoftShadowVolumes()
+        window.Render()
+        counted = image(shadows.GetVisibilityImage(0), WIDTH, HEIGHT)
+        shadowed = (averaged < 1) | (counted < 1)
+        difference = np.abs(averaged - counted)[shadowed]
+        print("N %3d: %d shadowed px, differ by more than 1/N %.2f%%, by more than 0.5 %.2f%%"
+              % (samples, shadowed.sum(), 100 * (difference > 1.0 / samples + 1e-6).mean(),
+                 100 * (difference > 0.5).mean()))
+
+
+if __name__ == "__main__":
+    main()
