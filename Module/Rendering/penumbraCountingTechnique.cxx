@@ -79,6 +79,9 @@ void SetSampleCount(vtkShaderProgram* program, std::size_t samples)
   }
 }
 
+/// The image unit of the resolve's deepest-count report (the wedges bind the counters to 0).
+constexpr int DeepCountsImageUnit = 1;
+
 /// The counters' 32-bit words for each pixel: four 8-bit counts to a word.
 std::size_t CounterWords(std::size_t samples)
 {
@@ -424,6 +427,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   resolve->SetUniformi("counters", this->SampleCounters->GetTextureUnit());
   resolve->SetUniformi("counterStride", target == ResolveInto::HalfResolution ? 2 : 1);
   SetSampleCount(resolve, light.CountingSamples.size());
+  this->Deep.Bind(window, resolve, DeepCountsImageUnit, light.Light);
   // Counted again only at the uncertain pixels (CountWedges); every other pixel is written.
   const int counted =
     target == ResolveInto::UncertainPixels ? HalfResolutionCounts::UncertainStencil : 0;
@@ -435,6 +439,7 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
     resolve->SetUniformi("useCounters", reached ? 1 : 0);
     frame.FullScreen->Draw(resolve, countOffset ? this->OffsetVAO : this->ResolveVAO);
   }
+  DeepCounts::Unbind(DeepCountsImageUnit);
   this->SampleCounters->Deactivate();
   this->CentreCount->Deactivate();
   if (countOffset)
@@ -509,7 +514,7 @@ std::size_t CountingTechnique::GraphicsMemoryBytes() const
 {
   return TextureBytes(this->CentreCount) + TextureBytes(this->SampleCounters) +
     TextureBytes(this->CountOffset) + TextureBytes(this->LogTransmission) +
-    this->HalfResolutionTargets.GraphicsMemoryBytes();
+    this->HalfResolutionTargets.GraphicsMemoryBytes() + this->Deep.GraphicsMemoryBytes();
 }
 
 void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
@@ -519,6 +524,7 @@ void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
   this->CountOffset->ReleaseGraphicsResources(window);
   this->LogTransmission->ReleaseGraphicsResources(window);
   this->HalfResolutionTargets.ReleaseGraphicsResources(window);
+  this->Deep.ReleaseGraphicsResources(window);
   this->ResolveVAO.ReleaseGraphicsResources();
   this->OffsetVAO.ReleaseGraphicsResources();
   this->TransmissionVAO.ReleaseGraphicsResources();

@@ -12,6 +12,7 @@
 #ifndef penumbraCountingTechnique_h
 #define penumbraCountingTechnique_h
 
+#include "penumbraDeepCounts.h"
 #include "penumbraHalfResolutionCounts.h"
 #include "penumbraLayeredTexture.h" // for vtkNew<vtkPenumbraLayeredTexture>
 #include "penumbraSampleCounting.h" // for LastChoice
@@ -47,6 +48,12 @@ public:
   /// its samples. A size refused is not tried again until the counters are released.
   bool ReadyCounters(
     vtkOpenGLRenderWindow* window, const int size[2], std::size_t samples, vtkObject* owner);
+  /// The deepest count that `light`'s resolves met in the frames drawn since the last call, 0
+  /// unless it reached DeepCounts::ReportedCount (near what the 8-bit counters hold).
+  int TakeDeepestCount(vtkOpenGLRenderWindow* window, vtkLight* light)
+  {
+    return this->Deep.Take(window, light);
+  }
   /// Whether lights without translucent casters are counted at half the viewport's resolution
   /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
   void SetHalfResolution(bool half) { this->HalfResolution = half; }
@@ -117,6 +124,7 @@ private:
   /// log(1 - opacity) summed over the translucent surfaces in the way of four samples (RGBA32F).
   vtkNew<vtkTextureObject> LogTransmission;
   HalfResolutionCounts HalfResolutionTargets;
+  DeepCounts Deep;
   FullScreenTriangle::VAO ResolveVAO, OffsetVAO, TransmissionVAO;
   int Support = -1;
   bool WarnedSamples = false;

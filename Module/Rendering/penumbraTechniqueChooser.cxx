@@ -25,7 +25,29 @@ TechniqueChooser::LightRecord& TechniqueChooser::Record(vtkLight* light)
   return record;
 }
 
-void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target)
+bool TechniqueChooser::CountsCameNearLimit(
+  vtkSoftShadowPass* pass, const ShadowLight& light, vtkOpenGLRenderWindow* window)
+{
+  LightRecord& record = this->Record(light.Light);
+  const int deepest = this->Counting.TakeDeepestCount(window, light.Light);
+  if (deepest > 0 && !record.DeepCounts)
+  {
+    record.DeepCounts = true;
+    if (pass->GetMethod() == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES)
+    {
+      vtkWarningWithObjectMacro(pass,
+        "Soft shadow volumes of light "
+          << light.Light << " met a point " << deepest
+          << " casting surfaces deep (seen from the light's centre or a sample): their 8-bit "
+             "counters hold 251, so deeper points may be shadowed wrongly. METHOD_AUTOMATIC "
+             "averages such a light's samples instead; averaging's stencil holds 255.");
+    }
+  }
+  return record.DeepCounts;
+}
+
+void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target,
+  vtkOpenGLRenderWindow* window)
 {
   const glm::dvec4& world = light.World;
   double radius = vtkSoftShadowPass::GetLightRadius(light.Light);
@@ -64,15 +86,18 @@ void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const
     light.Technique = &this->Wedges;
     return;
   }
-  // Automatic averages more samples than counting holds, as asked; the forced method clamps.
-  const bool countable = method == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES ||
-    (method == vtkSoftShadowPass::METHOD_AUTOMATIC &&
-      pass->GetLightSamples() <= CountingTechnique::MaximumSamples);
+  // Automatic averages more samples than counting holds, as asked, and a light whose counts
+  // came near what the counters hold; the forced method clamps the samples and warns.
+  const bool automatic = method == vtkSoftShadowPass::METHOD_AUTOMATIC;
+  const bool forced = method == vtkSoftShadowPass::METHOD_SOFT_SHADOW_VOLUMES;
+  const bool nearLimit = (automatic || forced) && this->CountsCameNearLimit(pass, light, window);
+  const bool countable = forced ||
+    (automatic && pass->GetLightSamples() <= CountingTechnique::MaximumSamples && !nearLimit);
   if (countable && this->Counting.Supported(pass))
   {
     light.Technique = &this->Counting;
     this->Counting.SetHalfResolution(pass->GetHalfResolutionCounting());
-    light.CountingChosenAutomatically = method == vtkSoftShadowPass::METHOD_AUTOMATIC;
+    light.CountingChosenAutomatically = automatic;
     light.CountingSamples =
       this->Counting.ChooseSamples(pass, world, radius, pass->GetLightSamples(), target);
     return;

@@ -33,7 +33,9 @@ namespace penumbra
  * Automatic and soft shadow volumes count where the context allows, and average the same
  * samples where it does not). Reconsider, once the light's casters are up to date: plateaus
  * without a receiver plane draw hard shadows, and Automatic averages the counted samples where
- * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper.
+ * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper, or once the
+ * light's counts came near what the counters hold (penumbra::DeepCounts; the forced method
+ * warns instead).
  */
 class TechniqueChooser
 {
@@ -51,7 +53,9 @@ public:
   /// Sets the light's technique, samples and radii from `pass`'s Method and LightSamples and
   /// the light's radius (vtkSoftShadowPass::GetLightRadius); the samples face `target`. A
   /// directional light's radius of 90 degrees or more is clamped to 89, with one warning.
-  void Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target);
+  /// Reads back, from `window`, how deep the last frames' counts went (penumbra::DeepCounts).
+  void Choose(vtkSoftShadowPass* pass, ShadowLight& light, const glm::dvec3& target,
+    vtkOpenGLRenderWindow* window);
 
   /// Plateaus need a receiver plane: finds this frame's, and without one makes every light
   /// draw hard shadows (warned once). Call after Choose, before the casters are updated.
@@ -73,9 +77,16 @@ private:
     vtkWeakPointer<vtkLight> Light;
     bool WarnedRadius = false;
     LastChoice Last = LastChoice::None; ///< Automatic's last choice
+    /// Its counts came near what counting's counters hold (penumbra::DeepCounts): warned for
+    /// the forced method, averaged by Automatic from then on.
+    bool DeepCounts = false;
   };
   /// The record of `light`, new if the light is; records of deleted lights are dropped then.
   LightRecord& Record(vtkLight* light);
+  /// Whether the light's counts came near what the counters hold, in the frames read back so
+  /// far (for as long as the light lives); the first time, the forced method warns.
+  bool CountsCameNearLimit(
+    vtkSoftShadowPass* pass, const ShadowLight& light, vtkOpenGLRenderWindow* window);
 
   std::map<vtkLight*, LightRecord> Records;
 };

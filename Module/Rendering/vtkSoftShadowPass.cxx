@@ -749,7 +749,8 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     shadowLight.World = world;
     shadowLight.Attenuation = static_cast<float>(light->GetShadowAttenuation());
     internals.Techniques.Choose(this, shadowLight,
-      haveBounds ? sceneCentre : glm::make_vec3(light->GetTransformedFocalPoint()));
+      haveBounds ? sceneCentre : glm::make_vec3(light->GetTransformedFocalPoint()),
+      internals.Window);
     internals.Lights.push_back(shadowLight);
   }
 }

@@ -94,8 +94,9 @@ public:
     /// hard shadows of the same LightSamples, which give the same image, whichever a cost model
     /// fitted to the benchmark expects to be faster (penumbra::CountingIsCheaper: counting for
     /// small lights and coarse casters, averaging for large lights over finely tessellated
-    /// ones); averaging where the OpenGL context lacks image atomics or LightSamples is above
-    /// the 256 that counting holds.
+    /// ones); averaging where the OpenGL context lacks image atomics, LightSamples is above
+    /// the 256 that counting holds, or, from the next frame on, the light's counts came near
+    /// what the counters hold (200 surfaces deep).
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
@@ -120,7 +121,8 @@ public:
     /// pass and one wedge pass for the opaque casters; translucent casters' volumes are drawn
     /// for every sample, as averaging draws them. Needs OpenGL 4.4 (or image load/store and
     /// clear_texture); at most 256 samples (more are clamped, with a warning); a sample's count
-    /// is kept in 8 bits, read from -4 to 251 (252 layers overflow).
+    /// is kept in 8 bits, read from -4 to 251 (252 layers overflow; counts of 200 and more are
+    /// warned about a frame later).
     METHOD_SOFT_SHADOW_VOLUMES = 5
   };
 

@@ -213,6 +213,41 @@ void TestAutomaticChoice(const SceneMaker& make)
     "soft shadow volumes clamp 300 samples to 256, with a warning");
 }
 
+/// Counts near what the 8-bit counters hold are read back a frame later: the forced method
+/// warns once, Automatic averages the light from then on; a shallow scene does neither.
+void TestDeepCounts(const SceneMaker& deep, const SceneMaker& shallow)
+{
+  SceneWindow view(deep());
+  vtkSoftShadowPass* pass = view.Pass;
+  WarningLog warnings(pass);
+  pass->SetMethodToSoftShadowVolumes();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    view.Window->Render();
+  }
+  for (const std::string& message : warnings.Messages)
+  {
+    std::printf("     warning: %s", message.c_str());
+  }
+  Check(warnings.Count("casting surfaces deep") == 1 && pass->GetNumberOfCountedLights() == 1,
+    "240 stacked sheets, counted: one warning that counts came near the counters' limit");
+  pass->SetMethodToAutomatic();
+  view.Window->Render();
+  Check(pass->GetNumberOfAveragedLights() == 1 && warnings.Messages.size() == 1,
+    "240 stacked sheets: Automatic averages, silently");
+
+  SceneWindow shallowView(shallow());
+  WarningLog none(shallowView.Pass);
+  vtkSoftShadowPass::SetLightRadius(shallowView.Light, 0.05); // Automatic counts it
+  shallowView.Pass->SetMethodToAutomatic();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    shallowView.Window->Render();
+  }
+  Check(shallowView.Pass->GetNumberOfCountedLights() == 1 && none.Messages.empty(),
+    "the sphere and box: Automatic keeps counting, no warning");
+}
+
 /// Resident memory of this process in bytes (Linux), 0 where /proc cannot tell.
 std::size_t ResidentBytes()
 {
@@ -591,6 +626,7 @@ int main()
       false, 0.5, { -0.37, 3.13, 0.27 });
   };
   RunScene(stacked, { true, 0.003, 0.0005 });
+  TestDeepCounts(stacked, scenes[0]);
   TestHalfResolutionEdges(scenes[0]);
   TestAutomaticChoice(scenes[0]);
   TestSampleCounts(scenes[0]);

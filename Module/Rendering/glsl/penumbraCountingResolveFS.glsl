@@ -1,4 +1,5 @@
 //VTK::System::Dec
+#extension GL_ARB_shader_image_load_store : require
 //VTK::Output::Dec
 //PENUMBRA::SampleCount
 // Turns the per-sample counters into the light's visibility: sample i is visible where its depth
@@ -17,6 +18,10 @@
 // on a critical point, hundreds of surfaces deep, into dark blobs; 128, earlier, did so from
 // 132 surfaces on.
 //
+// Where the deepest count decoded, or the centre's, reaches reportedCount, it goes into the
+// light's texel of deepCounts (penumbra::DeepCounts): the pass learns that the light's counts
+// approach the limit, where a deeper point overflows unseen.
+//
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
 // translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads one sample at a time.
@@ -32,6 +37,9 @@ const int sampleCount = PENUMBRA_SAMPLE_CAPACITY;
 uniform int sampleCount; // counted samples, fewer than PENUMBRA_SAMPLE_CAPACITY
 #endif
 const int bias = 4;
+layout(r32ui) uniform uimage2D deepCounts;
+uniform int deepCountSlot; // this light's texel of deepCounts; -1: not reported
+uniform int reportedCount;
 
 void main()
 {
@@ -50,6 +58,7 @@ void main()
   uint offset = (uint(centre + bias) & 0xFFu) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
   int visible = 0; // samples whose count equals it
+  int deepest = centre;
   for (int word = 0; word * 4 < sampleCount; ++word)
   {
     uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
@@ -62,7 +71,12 @@ void main()
         visible = 0;
       }
       visible += count == lowest ? 1 : 0;
+      deepest = max(deepest, count);
     }
+  }
+  if (deepest >= reportedCount && deepCountSlot >= 0)
+  {
+    imageAtomicMax(deepCounts, ivec2(deepCountSlot, 0), uint(deepest));
   }
 #ifdef PENUMBRA_COUNT_OFFSET
   gl_FragData[0] = vec4(float(centre - lowest));
