@@ -4,7 +4,7 @@ where they differ by more than 1/N, how many tube walls lie between the point an
 (vtkOBBTree, independent of the pass). Then what Automatic picks in three frames: it counts the
 first, and averages once the counts it read back came near the counters' limit.
 
-    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
+    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/stream_tube_counts.py [WIDTH HEIGHT]
 
 Scene: vtkStreamTracer over the gradient of vtkRTAnalyticSource (extent -10..10), 60 seeds in a
@@ -15,6 +15,7 @@ import sys
 
 import numpy as np
 import penumbra
+from penumbra_testing import actor_of
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
@@ -22,8 +23,7 @@ from vtkmodules.vtkFiltersFlowPaths import vtkStreamTracer
 from vtkmodules.vtkFiltersGeneral import vtkGradientFilter, vtkOBBTree
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkPointSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                         vtkRenderWindow, vtkRenderer)
+from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 SAMPLES = 32
@@ -58,15 +58,6 @@ def stream_tubes():
     return tubes
 
 
-def actor(algorithm, colour):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(algorithm.GetOutputPort())
-    mapper.ScalarVisibilityOff()
-    result = vtkActor()
-    result.SetMapper(mapper)
-    result.GetProperty().SetColor(*colour)
-    return result
-
 
 def walls_towards(locator, point, targets):
     """Tube walls crossed by the segments from `point` to each of `targets`."""
@@ -87,8 +78,8 @@ def main():
     ground.SetPoint1(20, -20, -12)
     ground.SetPoint2(-20, 20, -12)
     renderer = vtkRenderer()
-    renderer.AddActor(actor(tubes, (0.4, 0.7, 0.5)))
-    renderer.AddActor(actor(ground, (0.9, 0.9, 0.9)))
+    renderer.AddActor(actor_of(tubes, (0.4, 0.7, 0.5)))
+    renderer.AddActor(actor_of(ground, (0.9, 0.9, 0.9)))
     light = vtkLight()
     light.SetLightTypeToSceneLight()
     light.SetPosition(*LIGHT)

@@ -2,28 +2,21 @@
 volumes, minus that under averaged hard shadows and minus the counters (4 + N bytes a pixel),
 over GetNumberOfPenumbraWedges, for a sphere and for an isosurface over a ground.
 
-    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages \\
+    xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/wedge_memory.py
 
 Approximate: averaging's own targets are subtracted with it.
 """
 import penumbra
+from penumbra_testing import actor_of
 from vtkmodules.vtkFiltersCore import vtkContourFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                         vtkRenderWindow, vtkRenderer)
+from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 WIDTH, HEIGHT, SAMPLES = 400, 300, 16
 
-
-def actor(source):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(source.GetOutputPort())
-    result = vtkActor()
-    result.SetMapper(mapper)
-    return result
 
 
 def sphere():
@@ -56,8 +49,8 @@ def main():
         ground.SetPoint2(-30, ground_height, 30)
         renderer = vtkRenderer()
         window.AddRenderer(renderer)
-        renderer.AddActor(actor(source))
-        renderer.AddActor(actor(ground))
+        renderer.AddActor(actor_of(source, (0.9, 0.3, 0.3)))
+        renderer.AddActor(actor_of(ground, (0.9, 0.9, 0.9)))
         light = vtkLight()
         light.SetLightTypeToSceneLight()
         light.SetPosition(*position)
