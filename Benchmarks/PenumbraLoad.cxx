@@ -24,6 +24,7 @@
 
 #include "penumbraBenchSupport.h"
 #include "penumbraOptions.h"
+#include "penumbraProcessMemory.h"
 #include "penumbraSceneDescription.h"
 
 #include "vtkSoftShadowPass.h"
@@ -55,7 +56,6 @@
 #include "vtk_glew.h"
 
 #include <X11/Xlib.h> // the display, opened here so that a refused connection is retried
-#include <malloc.h>   // malloc_trim: give freed heap back so VmRSS tracks what is live
 
 #include <algorithm>
 #include <cerrno>
@@ -112,29 +112,8 @@ int DrainGLErrors(vtkRenderWindow* window)
 //--------------------------------------------------------------------------------------------------
 // CPU memory from /proc/self/status.
 //--------------------------------------------------------------------------------------------------
-struct ProcessMemory
-{
-  double RssMiB = -1.0;
-  double HwmMiB = -1.0;
-};
-
-ProcessMemory ReadProcessMemory()
-{
-  // Freed heap stays in RSS until glibc trims it: trim first, so RSS is what is live.
-  malloc_trim(0);
-  ProcessMemory memory;
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-  {
-    const bool rss = line.rfind("VmRSS:", 0) == 0, hwm = line.rfind("VmHWM:", 0) == 0;
-    if (rss || hwm)
-    {
-      const double kib = std::strtod(line.c_str() + 6, nullptr);
-      (rss ? memory.RssMiB : memory.HwmMiB) = kib / 1024.0;
-    }
-  }
-  return memory;
-}
+using penumbra::ProcessMemory;
+using penumbra::ReadProcessMemory;
 
 //--------------------------------------------------------------------------------------------------
 // Options

@@ -10,6 +10,7 @@
 // 0.06%), at most 0.05% by more than 0.5 (measured 0.01% at most); against the truth the
 // counting method's MAE is at most the averaged method's plus 0.01. With the range left as VTK
 // set it the limits are 5% and 0.5% (measured up to 3.81% and 0.37%): what the tight range buys.
+#include "penumbraProcessMemory.h"
 #include "penumbraTestHarness.h"
 
 #include "vtkAppendPolyData.h"
@@ -26,10 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <functional>
-
-#include <unistd.h>
 
 using namespace penumbra_test;
 
@@ -248,15 +246,6 @@ void TestDeepCounts(const SceneMaker& deep, const SceneMaker& shallow)
     "the sphere and box: Automatic keeps counting, no warning");
 }
 
-/// Resident memory of this process in bytes (Linux), 0 where /proc cannot tell.
-std::size_t ResidentBytes()
-{
-  std::ifstream statm("/proc/self/statm");
-  std::size_t pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
-
 /// Light sample counts that are not powers of two count as averaging does, and sweeping the
 /// count compiles a few shader programs, not some for every count: the window's shader cache
 /// keeps every program it compiled until the window goes (about 3 MB each count on llvmpipe).
@@ -284,15 +273,15 @@ void TestSampleCounts(const SceneMaker& make)
     pass->SetLightSamples(samples);
     view.Window->Render();
   }
-  const std::size_t before = ResidentBytes();
+  const double before = penumbra::ReadProcessMemory().RssMiB;
   for (int samples = 18; samples < 64; ++samples)
   {
     pass->SetLightSamples(samples);
     view.Window->Render();
   }
-  const double grownMB = (double(ResidentBytes()) - double(before)) / (1 << 20);
-  std::printf("sweeping 18 to 63 light samples: resident memory grew by %.1f MB\n", grownMB);
-  Check(before == 0 || grownMB < 40.0, "a sweep of light sample counts compiles no new programs");
+  const double grownMB = penumbra::ReadProcessMemory().RssMiB - before;
+  std::printf("sweeping 18 to 63 light samples: resident memory grew by %.1f MiB\n", grownMB);
+  Check(before < 0.0 || grownMB < 40.0, "a sweep of light sample counts compiles no new programs");
 }
 
 /// Counting wedges are cut to the receivers' box (penumbra::StableReceiverBox): a receiver that
