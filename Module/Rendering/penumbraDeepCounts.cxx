@@ -48,14 +48,14 @@ void DeepCounts::Unbind(int unit)
 void DeepCounts::ReadBack(vtkOpenGLRenderWindow* window)
 {
   this->Deepest.clear();
-  if (this->Pending.empty() || this->Report->GetContext() != window || !this->Report->GetHandle())
+  if (this->Report->GetContext() != window || !this->Report->GetHandle())
   {
     this->Pending.clear();
     return;
   }
   std::vector<GLuint> deepest(Slots, 0);
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  this->Report->Bind();
+  this->Report->Activate();
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, deepest.data());
   this->Report->Deactivate();
   const GLuint zero = 0;

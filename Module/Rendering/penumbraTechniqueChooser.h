@@ -31,11 +31,11 @@ namespace penumbra
  * Holds the methods and chooses between them in two steps. Choose, when the frame's lights are
  * collected: from the pass's Method and the light's radius (hard shadows without a radius;
  * Automatic and soft shadow volumes count where the context allows, and average the same
- * samples where it does not). Reconsider, once the light's casters are up to date: plateaus
+ * samples where it does not; Automatic also averages more samples than counting holds, and a
+ * light whose counts came near what the counters hold, penumbra::DeepCounts, where the forced
+ * method warns instead). Reconsider, once the light's casters are up to date: plateaus
  * without a receiver plane draw hard shadows, and Automatic averages the counted samples where
- * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper, or once the
- * light's counts came near what the counters hold (penumbra::DeepCounts; the forced method
- * warns instead).
+ * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper.
  */
 class TechniqueChooser
 {
