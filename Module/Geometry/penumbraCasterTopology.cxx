@@ -566,7 +566,8 @@ struct TopologyScratch
   std::vector<std::uint32_t> GroupStart; ///< per point: its first half-edge
   ScratchArray<std::uint32_t> GroupFill; ///< per part of the triangles and point (GroupHalfEdges)
   ScratchArray<std::uint32_t> EdgeStart; ///< per point: its first edge
-  ScratchArray<TriangleFate> TriangleFates; ///< per input triangle: AddTriangles' verdict
+  ScratchArray<TriangleFate> TriangleFates;         ///< per input triangle: AddTriangles' verdict
+  std::array<std::vector<double>, 3> OriginSamples; ///< per axis: coordinates MeshOrigin sorts
 };
 
 namespace
@@ -770,6 +771,59 @@ void WeldSeams(
   BuildEdges(scratch, topo);
 }
 
+/**
+ * The bounds' centre, except along an axis where the middle 90% of the mesh's points span less
+ * than a tenth of the bounds (of up to 1,024 of its finite points, taken evenly through them):
+ * there, the centre of that middle span. Points are stored, and later uploaded as floats,
+ * relative to it, so that float coordinates keep their precision where most of the surface is.
+ * A stray vertex 1,000 units off would otherwise move the origin 500 units from the rest, where
+ * float steps are 6e-5 and volumes and wedges drawn from them disagree at shadow boundaries.
+ * Only the bounds' centre where their size is not finite, so that no point relative to it
+ * overflows.
+ */
+template <typename Points>
+glm::dvec3 MeshOrigin(const Points& points, const glm::dvec3& lo, const glm::dvec3& hi,
+  std::array<std::vector<double>, 3>& samples)
+{
+  glm::dvec3 origin = 0.5 * lo + 0.5 * hi; // halves first: lo + hi may overflow
+  if (!IsFinite(hi - lo))
+  {
+    return origin;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / 1024);
+  for (std::vector<double>& axis : samples)
+  {
+    axis.clear();
+  }
+  for (std::size_t i = 0; i < points.size(); i += stride)
+  {
+    const glm::dvec3 p = points[i];
+    if (IsFinite(p))
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        samples[axis].push_back(p[axis]);
+      }
+    }
+  }
+  for (int axis = 0; axis < 3 && !samples[axis].empty(); ++axis)
+  {
+    std::vector<double>& values = samples[axis];
+    const auto at = [&](double share)
+    {
+      const auto nth = values.begin() + static_cast<std::ptrdiff_t>(share * (values.size() - 1));
+      std::nth_element(values.begin(), nth, values.end());
+      return *nth;
+    };
+    const double low = at(0.05), high = at(0.95);
+    if (high - low < 0.1 * (hi[axis] - lo[axis]))
+    {
+      origin[axis] = 0.5 * low + 0.5 * high;
+    }
+  }
+  return origin;
+}
+
 /// The build from any indexable points (glm::dvec3) and triangles (glm::uvec3).
 template <typename Points, typename Triangles>
 void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangles& triangles,
@@ -796,9 +850,7 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
     topo.Report = report;
     return;
   }
-  // Halves first: lo + hi overflows to Inf for points near the largest doubles, and an infinite
-  // origin would drop every point as non-finite (and reach the renderer's matrices).
-  topo.Origin = 0.5 * lo + 0.5 * hi;
+  topo.Origin = MeshOrigin(points, lo, hi, scratch.OriginSamples);
   const double diagonal = glm::length(hi - lo);
 
   // Points are taken as they are indexed first. Only the ends of boundary edges can be seams

@@ -84,7 +84,9 @@ struct TopologyReport
 
 struct VTKPENUMBRAGEOMETRY_EXPORT CasterTopology
 {
-  glm::dvec3 Origin{ 0.0 };          ///< centre of the bounds; Points are relative to it
+  /// The bounds' centre, moved along an axis where a few stray points stretch the bounds to the
+  /// middle of the rest: Points, and the floats uploaded from them, are relative to it.
+  glm::dvec3 Origin{ 0.0 };
   std::vector<glm::dvec3> Points;    ///< welded, relative to Origin
   std::vector<glm::uvec3> Triangles; ///< indices into Points, none degenerate
   std::vector<Edge> Edges;

@@ -123,9 +123,10 @@ struct WedgeGeometry
 /// where there is one, and drawn as the closed convex polyhedron left; without a box it is drawn
 /// whole, to infinity: 8 outward triangles over 6 vertices (a light pyramid's 6 over 5, or a
 /// full-viewport triangle).
-/// Vertices are in wedge coordinates: world space relative to Origin, the caster's centre, so that
-/// float precision follows the caster, not the world origin or a far light (whose centre, 700,000
-/// away, would leave edges and points float steps of 0.06).
+/// Vertices are in wedge coordinates: world space relative to Origin, the caster mesh's origin
+/// (penumbra::CasterTopology::Origin, where most of the mesh is), so that float precision follows
+/// the caster, not the world origin or a far light (whose centre, 700,000 away, would leave edges
+/// and points float steps of 0.06).
 struct WedgeBuffer : WedgeGeometry
 {
   glm::dvec3 Origin{ 0.0 };

@@ -651,6 +651,54 @@ void TestSameWithAnyThreads()
   Check(SameTopology(one, two), "one and two threads build the same topology");
 }
 
+/// CasterTopology::Origin: a mesh's bounds centre, except along an axis where a few stray points
+/// stretch the bounds: there it stays with the rest, so that float coordinates relative to it keep
+/// their precision. Two equal parts far apart keep the centre; bounds of no finite size too.
+void TestMeshOrigin()
+{
+  std::vector<glm::dvec3> points;
+  std::vector<glm::uvec3> triangles;
+  AwkwardTorus(60, 40, points, triangles);
+  const CasterTopology alone = CasterTopology::Build(points, triangles);
+  // `points` and `triangles` with `extra` points and triangles (indices from 0) added.
+  auto with = [&](
+                const std::vector<glm::dvec3>& extra, const std::vector<glm::uvec3>& extraTriangles)
+  {
+    std::vector<glm::dvec3> morePoints = points;
+    std::vector<glm::uvec3> moreTriangles = triangles;
+    const auto base = glm::uvec3(static_cast<std::uint32_t>(points.size()));
+    morePoints.insert(morePoints.end(), extra.begin(), extra.end());
+    for (const glm::uvec3& triangle : extraTriangles)
+    {
+      moreTriangles.push_back(triangle + base);
+    }
+    return CasterTopology::Build(morePoints, moreTriangles);
+  };
+  // One 0.01-unit triangle 1,000 units off along x.
+  const CasterTopology stray =
+    with({ { 1000, 0, 0 }, { 1000.01, 0, 0 }, { 1000, 0.01, 0 } }, { { 0, 1, 2 } });
+  std::printf("     origin: %.4f %.4f %.4f alone, %.4f %.4f %.4f with a stray triangle\n",
+    alone.Origin.x, alone.Origin.y, alone.Origin.z, stray.Origin.x, stray.Origin.y, stray.Origin.z);
+  Check(glm::length(stray.Origin - alone.Origin) < 0.3,
+    "a stray triangle 1,000 units off leaves the origin with the rest of the mesh");
+  Check(stray.Triangles.size() == alone.Triangles.size() + 1 &&
+      stray.BoundsMax.x + stray.Origin.x > 1000.0,
+    "the stray triangle stays in the mesh and its bounds");
+  // The torus again, 1,000 units off along x.
+  std::vector<glm::dvec3> copy;
+  for (const glm::dvec3& p : points)
+  {
+    copy.push_back(p + glm::dvec3(1000, 0, 0));
+  }
+  const CasterTopology halves = with(copy, triangles);
+  Check(
+    std::abs(halves.Origin.x - 500.0) < 1.0, "two equal parts far apart keep the bounds' centre");
+  const CasterTopology huge =
+    with({ { 1e308, 0, 0 }, { -1e308, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
+  Check(huge.Origin.x == 0.0 && std::isfinite(huge.Origin.y) && std::isfinite(huge.Origin.z),
+    "bounds of no finite size keep their centre");
+}
+
 void TestBuilderReuse()
 {
   // A builder kept between builds (time-varying data) must give what a fresh build gives,
@@ -939,6 +987,7 @@ int main()
   TestMirrored(rng);
   TestDegenerateInput();
   TestPolygonsCutAsVTKDraws();
+  TestMeshOrigin();
   TestBuilderReuse();
   TestSameWithAnyThreads();
   TestOutwardWinding();
