@@ -1,6 +1,7 @@
 #include "penumbraCulling.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -15,6 +16,72 @@ struct Plane
   double Offset;
   double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) - this->Offset; }
 };
+
+/**
+ * The (nearest, farthest) view depths of the part of `box` inside the half-spaces of `frustum`:
+ * (inf, -inf) where none is, NaN where the box is not finite. Where the whole box lies in front
+ * of the eye the nearest is its own nearest corner's: a near plane moved up to the nearest point
+ * in view would cut shadow volumes that the box's nearest depth leaves whole, and those would
+ * need z-fail.
+ */
+glm::dvec2 DepthsInView(
+  const Box& box, const std::vector<HalfSpace>& frustum, const glm::dmat4& worldToView)
+{
+  const double none = std::numeric_limits<double>::infinity();
+  const auto finite = [](const glm::dvec3& p)
+  { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+  if (!finite(box.Min) || !finite(box.Max))
+  {
+    return glm::dvec2(std::nan(""));
+  }
+  std::array<glm::dvec3, 8> corners;
+  double cornerNearest = none, cornerFarthest = -none;
+  for (int i = 0; i < 8; ++i)
+  {
+    corners[i] = BoxCorner(box.Min, box.Max, i);
+    const double depth = -(worldToView * glm::dvec4(corners[i], 1.0)).z;
+    cornerNearest = std::min(cornerNearest, depth);
+    cornerFarthest = std::max(cornerFarthest, depth);
+  }
+  if (!std::isfinite(cornerNearest + cornerFarthest))
+  {
+    return glm::dvec2(std::nan(""));
+  }
+  bool allInside = true;
+  for (const HalfSpace& half : frustum)
+  {
+    int outside = 0;
+    for (const glm::dvec3& corner : corners)
+    {
+      outside += glm::dot(half.Normal, corner) > half.Offset;
+    }
+    if (outside == 8)
+    {
+      return glm::dvec2(none, -none);
+    }
+    allInside = allInside && outside == 0;
+  }
+  if (allInside)
+  {
+    return glm::dvec2(cornerNearest, cornerFarthest);
+  }
+  // Grown a little, so that a flat box (a single plane) still leaves a solid to cut.
+  Box grown = box;
+  const glm::dvec3 margin(1e-6 * box.Diagonal());
+  grown.Min -= margin;
+  grown.Max += margin;
+  glm::dvec2 depths(none, -none);
+  for (const glm::dvec3& point : ClipBox(grown, frustum).Points)
+  {
+    const double depth = -(worldToView * glm::dvec4(point, 1.0)).z;
+    depths = glm::dvec2(std::min(depths.x, depth), std::max(depths.y, depth));
+  }
+  if (cornerNearest > 0.0 && depths.y >= depths.x)
+  {
+    depths.x = cornerNearest;
+  }
+  return depths;
+}
 
 } // namespace
 
@@ -139,20 +206,44 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, cons
   return true;
 }
 
-glm::dvec2 TightClippingRange(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
-  const glm::dmat4& worldToView, const glm::dvec2& current)
+glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& worldToView,
+  const glm::dmat4& worldToClip, const glm::dvec2& current)
 {
-  double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double depth = -(worldToView * glm::dvec4(BoxCorner(boxMin, boxMax, corner), 1.0)).z;
-    nearest = std::min(nearest, depth);
-    farthest = std::max(farthest, depth);
-  }
-  if (!(nearest > 0.0) || !std::isfinite(farthest) || !(current.x > 0.0) ||
-    !(current.y > current.x))
+  if (!(current.x > 0.0) || !(current.y > current.x) || !std::isfinite(current.y))
   {
     return current;
+  }
+  // The six frustum planes, -w <= x, y, z <= w, as half-spaces of world points.
+  const glm::dmat4 rows = glm::transpose(worldToClip);
+  std::vector<HalfSpace> frustum;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (const double side : { 1.0, -1.0 })
+    {
+      const glm::dvec4 plane = rows[3] + side * rows[axis];
+      if (!std::isfinite(plane.x + plane.y + plane.z + plane.w))
+      {
+        return current;
+      }
+      frustum.push_back(HalfSpace{ -glm::dvec3(plane), plane.w });
+    }
+  }
+  glm::dvec2 depths(
+    std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+  for (const Box& box : props)
+  {
+    const glm::dvec2 inView =
+      box.Valid ? DepthsInView(box, frustum, worldToView) : glm::dvec2(std::nan(""));
+    if (std::isnan(inView.x))
+    {
+      return current;
+    }
+    depths = glm::dvec2(std::min(depths.x, inView.x), std::max(depths.y, inView.y));
+  }
+  const double nearest = depths.x, farthest = depths.y;
+  if (!(nearest > 0.0) || !std::isfinite(farthest))
+  {
+    return current; // nothing in view, or a box reaching the eye's plane in view
   }
   const double tightFar = std::min(current.y, farthest * (1.0 + 1e-3));
   // No nearer to the far plane than 0.8 of it: float depth from the vertex transforms loses

@@ -161,17 +161,23 @@ VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin
   const std::array<glm::dvec3, 4>& nearCorners);
 
 /**
- * The camera clipping range (near, far) narrowed to the view depths of the box that holds
- * everything drawn (`worldToView`: VTK's view matrix, looking down -z), with a relative margin of
- * 1e-3 so that nothing inside the box is clipped: never wider than `current`, and `current`
- * itself where the box reaches the eye's plane (its nearest depth is not positive) or is not
- * finite. A 24-bit depth buffer's steps then span the scene's depth, not VTK's range, which is
- * expanded by half its length and has its near plane clamped to 1/1000 of the far one. The near
- * plane stays at most 0.8 of the far one, so that a thin or distant scene's (far + near) /
- * (far - near), by which the vertex transforms' float depth loses precision, is at most 9.
+ * The camera clipping range (near, far) narrowed to the view depths of what the view frustum
+ * holds of the boxes of the props drawn (`props`, one box each): `worldToView` is VTK's view
+ * matrix (looking down -z), `worldToClip` the projection (with `current` as its range) times it,
+ * in OpenGL's clip space. Only those parts can reach the depth buffer, so props behind the eye
+ * or out of view, and a prop whose bounds reach far out of view, do not widen the range. A prop
+ * wholly in front of the eye keeps its box's nearest depth: a near plane moved up to the nearest
+ * point in view would cut more shadow volumes, which then need z-fail. A relative margin of
+ * 1e-3 keeps everything in view unclipped, and the range is never wider than `current`;
+ * `current` itself where nothing is in view, where what is in view reaches the eye's plane, or
+ * where a box is invalid or not finite. A 24-bit depth buffer's steps then span the visible
+ * scene's depth, not VTK's range, which is expanded by half its length and has its near plane
+ * clamped to 1/1000 of the far one. The near plane stays at most 0.8 of the far one, so that a
+ * thin or distant scene's (far + near) / (far - near), by which the vertex transforms' float
+ * depth loses precision, is at most 9.
  */
-VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 TightClippingRange(const glm::dvec3& boxMin,
-  const glm::dvec3& boxMax, const glm::dmat4& worldToView, const glm::dvec2& current);
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 TightClippingRange(const std::vector<Box>& props,
+  const glm::dmat4& worldToView, const glm::dmat4& worldToClip, const glm::dvec2& current);
 
 } // namespace penumbra
 

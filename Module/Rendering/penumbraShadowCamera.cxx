@@ -12,7 +12,8 @@
 namespace penumbra
 {
 
-vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, bool tight)
+vtkOpenGLCamera* ShadowCamera::Update(
+  vtkRenderer* renderer, const Box& scene, const std::vector<Box>& props, bool tight)
 {
   auto* active = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
   this->Current = active;
@@ -23,8 +24,9 @@ vtkOpenGLCamera* ShadowCamera::Update(vtkRenderer* renderer, const Box& scene, b
     return active;
   }
   const glm::dvec2 own = glm::make_vec2(active->GetClippingRange());
-  const glm::dvec2 range =
-    TightClippingRange(scene.Min, scene.Max, ToGlm(active->GetViewTransformMatrix()), own);
+  const glm::dvec2 range = TightClippingRange(props, ToGlm(active->GetViewTransformMatrix()),
+    ToGlm(active->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1)),
+    own);
   if (range == own)
   {
     return active;

@@ -3,8 +3,9 @@
  * @brief  The camera vtkSoftShadowPass draws its depth, volumes and wedges with.
  *
  * With the tight depth range, that is a copy of the renderer's active camera whose clipping
- * range is narrowed to the depths of the visible props (penumbra::TightClippingRange); without
- * it, or where narrowing changes nothing, the active camera itself. The user's camera is never
+ * range is narrowed to the depths of the visible props' parts in view
+ * (penumbra::TightClippingRange); without it, or where narrowing changes nothing, the active
+ * camera itself. The user's camera is never
  * modified: camera observers and pipelines that depend on the camera's time
  * (vtkDepthSortPolyData) see nothing of the shadows, and a still scene stays still. The copy is
  * modified only when its view or projection changed.
@@ -24,6 +25,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 class vtkRenderer;
 
 namespace penumbra
@@ -32,8 +35,10 @@ namespace penumbra
 class ShadowCamera
 {
 public:
-  /// Follows `renderer`'s active camera; with `tight`, narrows its copy's range to `scene`.
-  vtkOpenGLCamera* Update(vtkRenderer* renderer, const Box& scene, bool tight);
+  /// Follows `renderer`'s active camera; with `tight` and a valid `scene` (the box of every
+  /// visible prop), narrows its copy's range to what the view holds of the props' boxes.
+  vtkOpenGLCamera* Update(
+    vtkRenderer* renderer, const Box& scene, const std::vector<Box>& props, bool tight);
   /// The camera of the last Update.
   vtkOpenGLCamera* Get() const { return this->Current; }
 

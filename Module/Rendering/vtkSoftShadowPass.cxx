@@ -134,7 +134,8 @@ public:
   void UpdateReceiverBox();
   /// Holds every visible prop, UseBounds or not, so every pixel's visible point: the depth
   /// range and the volumes' scissors are narrowed to it. Invalid when a prop has no finite bounds.
-  penumbra::Box SceneBox;
+  penumbra::Box SceneBox;               ///< holds every visible prop; invalid if one is unbounded
+  std::vector<penumbra::Box> PropBoxes; ///< each visible prop's, for the tight depth range
   void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
@@ -191,7 +192,7 @@ public:
   {
     vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
     vtkMatrix3x3* normals;
-    this->Camera.Update(renderer, this->SceneBox, tightDepthRange)
+    this->Camera.Update(renderer, this->SceneBox, this->PropBoxes, tightDepthRange)
       ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
     // VTK keeps its key matrices transposed for OpenGL.
     this->WorldToClip = glm::transpose(penumbra::ToGlm(worldToClip));
@@ -856,18 +857,28 @@ double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
 void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
 {
   this->SceneBox = penumbra::Box();
+  this->PropBoxes.clear();
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   vtkProp* prop;
   for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
   {
-    // 2D props, widgets and empty props add nothing in depth; one of unknown extent, no box at
-    // all.
-    if (prop->GetVisibility() && !penumbra::OutsideTheShadows(prop) &&
-      ExtendByProp(this->SceneBox, prop) == PropExtent::Unknown)
+    if (!prop->GetVisibility() || penumbra::OutsideTheShadows(prop))
+    {
+      continue;
+    }
+    // Empty props add nothing in depth; one of unknown extent, no box at all.
+    penumbra::Box box;
+    if (ExtendByProp(box, prop) == PropExtent::Unknown)
     {
       this->SceneBox = penumbra::Box();
+      this->PropBoxes.clear();
       return;
+    }
+    if (box.Valid)
+    {
+      this->SceneBox.Extend(box.Min, box.Max);
+      this->PropBoxes.push_back(box);
     }
   }
 }

@@ -16,6 +16,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -196,52 +197,128 @@ void TestShadowScissor(std::mt19937& rng)
     "united rectangles hold both, and an empty one adds nothing");
 }
 
-/// TightClippingRange: every point of random boxes, seen by random cameras, lies within the
-/// range; the range is never wider than the camera's, is narrower for a box well in front of
-/// the eye, and stays the camera's where the box reaches the eye's plane.
+/// The range TightClippingRange gives props of boxes `boxes` for a camera at `eye` looking at
+/// `target` with a 40-degree view, aspect 4:3 and the clipping range `current`.
+glm::dvec2 RangeFor(const std::vector<penumbra::Box>& boxes, const glm::dvec3& eye,
+  const glm::dvec3& target, const glm::dvec2& current)
+{
+  const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0.0, 1.0, 0.0));
+  const glm::dmat4 toClip =
+    glm::perspective(glm::radians(40.0), 4.0 / 3.0, current.x, current.y) * view;
+  return penumbra::TightClippingRange(boxes, view, toClip, current);
+}
+
+/// TightClippingRange: every point of random props' boxes that random cameras see lies within
+/// the range; the range is never wider than the camera's, is narrower for props well in front
+/// of the eye, and starts at the camera's near plane where a prop holds the eye. Only what is in
+/// view counts: a box reaching far out of view or behind the eye, as a prop with one stray
+/// triangle does, is narrowed to its part in view, and a prop behind the eye beside the scene
+/// changes nothing; a prop wholly in front keeps its nearest depth; a flat box is narrowed; a
+/// box out of view, a NaN or invalid box and a NaN matrix keep the camera's range.
 void TestTightClippingRange(std::mt19937& rng)
 {
   std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
-  int clipped = 0, wider = 0, narrowed = 0, keptAtEye = 0, boxesAtEye = 0, thick = 0;
+  int clipped = 0, wider = 0, narrowed = 0, nearAtEye = 0, eyeInside = 0, thick = 0;
   for (int trial = 0; trial < 2000; ++trial)
   {
-    const glm::dvec3 eye(10.0 * u(rng), 10.0 * u(rng), 10.0 * u(rng));
-    const glm::dvec3 centre(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
-    const glm::dvec3 half(0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng));
-    const glm::dmat4 view = glm::lookAt(eye, centre, glm::dvec3(0.0, 1.0, 0.0));
-    const double distance = glm::length(centre - eye);
-    const glm::dvec2 current(distance / 1000.0, 3.0 * distance + 10.0);
-    const glm::dvec2 range =
-      penumbra::TightClippingRange(centre - half, centre + half, view, current);
-    wider += range.x < current.x || range.y > current.y;
-    bool reachesEye = false;
-    for (int k = 0; k < 200; ++k)
+    // One to three props, near each other.
+    std::vector<penumbra::Box> boxes(1 + trial % 3);
+    for (penumbra::Box& box : boxes)
     {
-      const glm::dvec3 p = centre + half * glm::dvec3(u(rng), u(rng), u(rng));
-      const double depth = -(view * glm::dvec4(p, 1.0)).z;
-      reachesEye |= depth <= 0.0;
-      clipped += depth > current.x && depth < current.y && (depth < range.x || depth > range.y);
+      const glm::dvec3 centre(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+      const glm::dvec3 half(0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng), 0.1 + 2.0 * unit(rng));
+      box = penumbra::Box{ true, centre - half, centre + half };
     }
-    if (reachesEye)
+    const penumbra::Box& first = boxes.front();
+    const glm::dvec3 centre = 0.5 * (first.Min + first.Max), half = 0.5 * (first.Max - first.Min);
+    // One eye in eight inside the first box.
+    const glm::dvec3 eye = trial % 8 == 0 ? centre + 0.9 * half * glm::dvec3(u(rng), u(rng), u(rng))
+                                          : glm::dvec3(10.0 * u(rng), 10.0 * u(rng), 10.0 * u(rng));
+    // Looking at the box or past it, so that part of it is out of view.
+    const glm::dvec3 target = centre + 3.0 * glm::dvec3(u(rng), u(rng), u(rng));
+    const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0.0, 1.0, 0.0));
+    const double distance = glm::length(eye) + 10.0;
+    const glm::dvec2 current(distance / 1000.0, 3.0 * distance);
+    const glm::dmat4 toClip = glm::perspective(glm::radians(20.0 + 50.0 * unit(rng)),
+                                0.5 + unit(rng), current.x, current.y) *
+      view;
+    const glm::dvec2 range = penumbra::TightClippingRange(boxes, view, toClip, current);
+    wider += range.x < current.x || range.y > current.y;
+    for (const penumbra::Box& box : boxes)
     {
-      ++boxesAtEye;
-      keptAtEye += range == current;
+      for (int k = 0; k < 100; ++k)
+      {
+        const glm::dvec3 p =
+          glm::mix(box.Min, box.Max, glm::dvec3(unit(rng), unit(rng), unit(rng)));
+        const glm::dvec4 clip = toClip * glm::dvec4(p, 1.0);
+        const double depth = -(view * glm::dvec4(p, 1.0)).z;
+        const bool inView = std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
+          depth > current.x && depth < current.y;
+        clipped += inView && (depth < range.x || depth > range.y);
+      }
+    }
+    if (trial % 8 == 0)
+    {
+      ++eyeInside;
+      nearAtEye += range.x == current.x;
     }
     narrowed += range.x > 2.0 * current.x;
     thick += range == current || range.x <= 0.8 * range.y;
   }
-  std::printf("     tight range: %d narrowed, %d points clipped, %d wider, %d of %d boxes at the "
-              "eye kept the camera's range\n",
-    narrowed, clipped, wider, keptAtEye, boxesAtEye);
-  Check(clipped == 0 && wider == 0, "the tight range clips nothing of the box and is never wider");
-  Check(narrowed > 500, "the tight range narrows the near plane for boxes in front of the eye");
-  Check(boxesAtEye > 0 && keptAtEye == boxesAtEye, "a box at the eye keeps the camera's range");
+  std::printf("     tight range: %d narrowed, %d points clipped, %d wider, %d of %d ranges with "
+              "the eye in a prop start at the camera's near plane\n",
+    narrowed, clipped, wider, nearAtEye, eyeInside);
+  Check(clipped == 0 && wider == 0, "the tight range clips nothing in view and is never wider");
+  Check(narrowed > 500, "the tight range narrows the near plane for props in front of the eye");
+  Check(eyeInside > 0 && nearAtEye == eyeInside,
+    "a prop holding the eye keeps the camera's near plane");
   Check(thick == 2000, "the tight near plane stays within 0.8 of the far one");
+
+  // A scene below the eye; the same scene's box reaching 1,000 units to the side (behind the
+  // eye's plane) and 1,000 units ahead, out of view to the right; a copy of it behind the eye.
+  const glm::dvec3 eye(3.0, 5.0, 8.0), target(0.0, 0.5, 0.0);
+  const glm::dvec2 current(0.025, 25.0);
+  const penumbra::Box sceneBox{ true, { -4, 0, -4 }, { 4, 1.7, 4 } };
+  const penumbra::Box copyBehind{ true, sceneBox.Min + glm::dvec3(6, 9, 16),
+    sceneBox.Max + glm::dvec3(6, 9, 16) };
+  const glm::dvec2 scene = RangeFor({ sceneBox }, eye, target, current);
+  const glm::dvec2 reaching =
+    RangeFor({ { true, { -4, 0, -4 }, { 1000, 1.7, 4 } } }, eye, target, current);
+  const glm::dvec2 ahead =
+    RangeFor({ { true, { -4, 0, -1000 }, { 4, 1.7, 4 } } }, eye, target, current);
+  const glm::dvec2 withCopy = RangeFor({ sceneBox, copyBehind }, eye, target, current);
+  std::printf("     tight range of a scene %.3f..%.3f; reaching behind the eye %.3f..%.3f, far "
+              "ahead %.3f..%.3f; with a copy behind the eye %.3f..%.3f\n",
+    scene.x, scene.y, reaching.x, reaching.y, ahead.x, ahead.y, withCopy.x, withCopy.y);
+  const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0.0, 1.0, 0.0));
+  double boxNearest = current.y;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 p = penumbra::BoxCorner(sceneBox.Min, sceneBox.Max, corner);
+    boxNearest = std::min(boxNearest, -(view * glm::dvec4(p, 1.0)).z);
+  }
+  Check(scene.x > 2.0 && scene.y < 20.0, "a scene in view is narrowed");
+  Check(std::abs(scene.x - (1.0 - 1e-3) * boxNearest) < 1e-9,
+    "a prop in front of the eye keeps its nearest depth as the near plane (z-pass stays safe)");
+  Check(reaching.x > 2.0 && reaching.y < 1.5 * scene.y,
+    "a box reaching out of view behind the eye is narrowed to its part in view");
+  Check(ahead.x > 2.0 && ahead.y == current.y,
+    "a box reaching ahead out of view keeps its part in view up to the far plane");
+  Check(withCopy == scene, "a prop behind the eye changes nothing");
+  const glm::dvec2 flat = RangeFor({ { true, { -4, 0, -4 }, { 4, 0, 4 } } }, eye, target, current);
+  Check(flat.x > 2.0 && flat.y < current.y, "a flat box is narrowed");
+  Check(RangeFor({ { true, { 100, 0, 0 }, { 101, 1, 1 } } }, eye, target, current) == current,
+    "a box out of view keeps the camera's range");
   const double nan = std::nan("");
-  Check(penumbra::TightClippingRange({ nan, 0, 0 }, { 1, 1, 1 }, glm::dmat4(1.0), { 0.1, 10 }) ==
-      glm::dvec2(0.1, 10),
+  Check(
+    RangeFor({ sceneBox, { true, { nan, 0, 0 }, { 1, 1, 1 } } }, eye, target, current) == current,
     "a NaN box keeps the camera's range");
+  Check(RangeFor({ sceneBox, penumbra::Box() }, eye, target, current) == current,
+    "an invalid box keeps the camera's range");
+  Check(penumbra::TightClippingRange({ sceneBox }, view, glm::dmat4(nan), current) == current,
+    "a NaN projection keeps the camera's range");
 }
+
 /// BoxBeyondNearPlane against points of the box: true only where every point lies beyond the
 /// near plane; false for every box that holds the eye; true for many boxes in front of it.
 void TestBoxBeyondNearPlane(std::mt19937& rng)
