@@ -1,7 +1,9 @@
 // Soft shadow volumes (per-light-sample counting) against averaged hard shadows of the same
 // samples, and both against the ray-traced truth, on scenes the centre-silhouette wedges get
 // wrong: open, non-orientable, non-manifold, mirrored and overlapping casters, a directional
-// light, the eye inside a penumbra, a light inside a caster's bounds and a light 700,000 away.
+// light, the eye inside a penumbra, a light inside a caster's bounds, a light 700,000 away, and
+// props reaching out of view (a stray triangle 1,000 units off in a caster's polydata, a box
+// behind the eye).
 //
 // Tolerances (see Documentation/wedges.md), with the camera's range as VTK resets it (near plane
 // at 1/1000 of the far one) and the pass narrowing it to the scene (UseTightDepthRange, the
@@ -15,10 +17,12 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricMobius.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
@@ -489,6 +493,22 @@ void TestHalfResolutionEdges(const SceneMaker& make)
   pass->SetLightSamples(Samples);
 }
 
+/// A right triangle of legs 0.01 at `corner`.
+vtkSmartPointer<vtkPolyData> StrayTriangle(const Point& corner)
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(corner[0], corner[1], corner[2]);
+  points->InsertNextPoint(corner[0] + 0.01, corner[1], corner[2]);
+  points->InsertNextPoint(corner[0], corner[1] + 0.01, corner[2]);
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType ids[3] = { 0, 1, 2 };
+  triangles->InsertNextCell(3, ids);
+  auto triangle = vtkSmartPointer<vtkPolyData>::New();
+  triangle->SetPoints(points);
+  triangle->SetPolys(triangles);
+  return triangle;
+}
+
 vtkSmartPointer<vtkAlgorithm> Mobius()
 {
   vtkNew<vtkParametricMobius> mobius;
@@ -579,6 +599,24 @@ int main()
           s.Add(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
         },
         false, 0.5e5, { -2.0e5, 6.0e5, 3.0e5 });
+    },
+    []
+    {
+      // The first scene with a 0.01-unit triangle 1,000 units to the side, behind the eye's
+      // plane, in the sphere's own polydata, and a box behind the eye: the sphere's bounds and
+      // the props' together reach behind the eye. Only what is in view may set the depth range,
+      // and the sphere's float coordinates must stay relative to the sphere, not to the middle
+      // of its bounds.
+      return MakeScene("props reaching out of view",
+        [](Scene& s)
+        {
+          vtkNew<vtkAppendPolyData> sphere;
+          sphere->AddInputConnection(SphereSource(-0.8, 1.0, 0.0, 0.7, 48, 24)->GetOutputPort());
+          sphere->AddInputData(StrayTriangle({ 1000.0, 0.0, 0.0 }));
+          s.Add(MakeActor(sphere, 0.9, 0.3, 0.3));
+          s.Add(MakeActor(BoxSource(1.2, 0.6, 0.5, 0.8, 1.2, 0.8), 0.3, 0.6, 0.9));
+          s.Add(MakeActor(BoxSource(6.0, 9.5, 16.0, 1.0, 1.0, 1.0), 0.3, 0.6, 0.9));
+        });
     },
   };
 
