@@ -9,9 +9,13 @@
 //             raised), each mesh made before its build is timed
 //   volume    ShadowVolume::Build for one point light (silhouette, sides, caps)
 //   winding   CasterTopology::OutwardWinding (closed meshes only: the torus)
+// and, once a frame whatever the data, the tight depth range (TightClippingRange) of 1,001 unit
+// boxes spread over 100 units and a ground of 120, seen from above at 30 degrees (actors1000's
+// layout in PenumbraLoad): a share of the boxes straddle the frustum and are cut by ClipBox.
 //
-//   build/bin/PenumbraGeometryBench [--runs N]
+//   build/bin/PenumbraGeometryBench [--runs N] [--depth-range-only]
 #include "penumbraCasterTopology.h"
+#include "penumbraCulling.h"
 #include "penumbraOptions.h"
 #include "penumbraShadowVolume.h"
 
@@ -22,10 +26,13 @@
 #include "vtkPolyData.h"
 #include "vtkRTAnalyticSource.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -72,21 +79,54 @@ double GrownMs(int runs, penumbra::TopologyBuilder& builder, penumbra::CasterTop
 void Usage(const char* program)
 {
   std::fprintf(stderr,
-    "usage: %s [--runs N]\n"
+    "usage: %s [--runs N] [--depth-range-only]\n"
     "  CPU geometry per triangle on time-varying data: the median of N runs (default 5)\n"
     "  of a first topology build, a rebuild, a rebuild on a grown mesh, a shadow volume and\n"
-    "  the outward winding, per mesh.\n",
+    "  the outward winding, per mesh; then the tight depth range of 1,002 props a frame.\n",
     program);
+}
+
+/// The median time of TightClippingRange for 1,001 unit boxes scattered over 100 x 100 units
+/// and a 120-unit ground, seen from (30, 20, 30) towards the origin at 30 degrees.
+void PrintDepthRangeTime(int runs)
+{
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> spread(-50.0, 50.0);
+  std::vector<penumbra::Box> boxes;
+  for (int i = 0; i < 1001; ++i)
+  {
+    const glm::dvec3 centre(spread(rng), 0.5, spread(rng));
+    boxes.push_back({ true, centre - 0.5, centre + 0.5 });
+  }
+  boxes.push_back({ true, { -60, -0.1, -60 }, { 60, 0, 60 } });
+  const glm::dmat4 view = glm::lookAt(glm::dvec3(30, 20, 30), glm::dvec3(0), glm::dvec3(0, 1, 0));
+  const glm::dvec2 current(0.1, 200.0);
+  const glm::dmat4 toClip =
+    glm::perspective(glm::radians(30.0), 4.0 / 3.0, current.x, current.y) * view;
+  glm::dvec2 range;
+  const double ms =
+    MedianMs(runs, [&] { range = penumbra::TightClippingRange(boxes, view, toClip, current); });
+  std::printf("tight depth range of %zu props: %.3f ms (range %.2f to %.2f)\n", boxes.size(), ms,
+    range.x, range.y);
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
   int runs = 5;
+  bool depthRangeOnly = false;
   using namespace penumbra::bench;
-  if (!ParseOptions(argc, argv, { IntOption("--runs", 1, 1000, runs) }, Usage))
+  if (!ParseOptions(argc, argv,
+        { IntOption("--runs", 1, 1000, runs),
+          FlagOption("--depth-range-only", [&] { depthRangeOnly = true; }) },
+        Usage))
   {
     return 2;
+  }
+  if (depthRangeOnly)
+  {
+    PrintDepthRangeTime(runs);
+    return 0;
   }
   std::printf("%-8s %10s %10s %8s %11s %8s %10s %8s %10s %8s %11s\n", "extent", "triangles",
     "first ms", "ns/tri", "rebuild ms", "ns/tri", "grown ms", "ns/tri", "volume ms", "ns/tri",
@@ -139,5 +179,6 @@ int main(int argc, char* argv[])
       1e6 * firstMs / triangles, rebuildMs, 1e6 * rebuildMs / triangles, grownMs,
       1e6 * grownMs / triangles, volumeMs, 1e6 * volumeMs / triangles, windingMs);
   }
+  PrintDepthRangeTime(runs);
   return 0;
 }
