@@ -1,8 +1,8 @@
 """Counter overflow on stream tubes converging on a critical point: soft shadow volumes against
 averaged hard shadows of the same samples and the ray-traced truth, and, at the first pixels
 where they differ by more than 1/N, how many tube walls lie between the point and the light
-(vtkOBBTree, independent of the pass). Then what Automatic picks in three frames: it counts the
-first, and averages once the counts it read back came near the counters' limit.
+(vtkOBBTree, independent of the pass). Then what Automatic shows in three frames: averaged from
+the first, whose count it reads back at once, finds near the counters' limit and draws again.
 
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/stream_tube_counts.py [WIDTH HEIGHT]

@@ -142,10 +142,37 @@ bool TechniqueChooser::Reconsider(ShadowLight& light, const std::vector<CasterCa
   {
     return false;
   }
+  AverageSamples(light, lightSamples);
+  return true;
+}
+
+bool TechniqueChooser::AverageIfFirstCountWentDeep(
+  ShadowLight& light, int lightSamples, vtkOpenGLRenderWindow* window)
+{
+  if (light.Technique != &this->Counting || !light.CountingChosenAutomatically)
+  {
+    return false;
+  }
+  LightRecord& record = this->Record(light.Light);
+  if (record.FirstCountChecked)
+  {
+    return false;
+  }
+  record.FirstCountChecked = true;
+  if (this->Counting.TakeDeepestCount(window, light.Light) == 0)
+  {
+    return false;
+  }
+  record.DeepCounts = true;
+  AverageSamples(light, lightSamples);
+  return true;
+}
+
+void TechniqueChooser::AverageSamples(ShadowLight& light, int lightSamples)
+{
   light.Technique = &this->Hard;
   light.Samples =
     SpreadLightSamples(light.World, light.SampleRadius, lightSamples, light.SampleTarget);
-  return true;
 }
 
 } // namespace penumbra

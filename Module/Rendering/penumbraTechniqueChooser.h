@@ -28,14 +28,16 @@ namespace penumbra
 {
 
 /**
- * Holds the methods and chooses between them in two steps. Choose, when the frame's lights are
- * collected: from the pass's Method and the light's radius (hard shadows without a radius;
- * Automatic and soft shadow volumes count where the context allows, and average the same
- * samples where it does not; Automatic also averages more samples than counting holds, and a
- * light whose counts came near what the counters hold, penumbra::DeepCounts, where the forced
- * method warns instead). Reconsider, once the light's casters are up to date: plateaus
- * without a receiver plane draw hard shadows, and Automatic averages the counted samples where
- * its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper.
+ * Holds the methods and chooses between them in two steps, and a third once in a light's life.
+ * Choose, when the frame's lights are collected: from the pass's Method and the light's radius
+ * (hard shadows without a radius; Automatic and soft shadow volumes count where the context allows,
+ * and average the same samples where it does not; Automatic also averages more samples than
+ * counting holds, and a light whose counts came near what the counters hold, penumbra::DeepCounts,
+ * where the forced method warns instead). Reconsider, once the light's casters are up to date:
+ * plateaus without a receiver plane draw hard shadows, and Automatic averages the counted samples
+ * where its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper. And
+ * AverageIfFirstCountWentDeep, after Automatic's first count of a light is drawn: a light whose
+ * counts already came near the limit is averaged in that same frame.
  */
 class TechniqueChooser
 {
@@ -69,6 +71,15 @@ public:
   bool Reconsider(ShadowLight& light, const std::vector<CasterCache*>& casters, int lightSamples,
     vtkOpenGLRenderWindow* window, const int size[2], vtkObject* owner);
 
+  /// After a light's layer is drawn: the first time Automatic counted the light, whether its
+  /// counts came near what the counters hold in this very frame, read back at once from
+  /// `window` (a wait for the GPU, once in the light's life). If so the light is recorded as
+  /// deep and set to average its samples, and the caller updates its casters and draws its
+  /// layer again: a single frame, as a regression test renders, is averaged, not overflowed.
+  /// Later frames see deep counts a frame late (Choose).
+  bool AverageIfFirstCountWentDeep(
+    ShadowLight& light, int lightSamples, vtkOpenGLRenderWindow* window);
+
 private:
   /// What the chooser remembers of a light. Held weakly: once the light is deleted, a new light
   /// that VTK allocates at its address starts afresh, warned again and without hysteresis.
@@ -80,7 +91,11 @@ private:
     /// Its counts came near what counting's counters hold (penumbra::DeepCounts): warned for
     /// the forced method, averaged by Automatic from then on.
     bool DeepCounts = false;
+    /// Automatic's first count of it was read back in its own frame.
+    bool FirstCountChecked = false;
   };
+  /// Makes the light average its samples (lightSamples of them) instead of counting them.
+  void AverageSamples(ShadowLight& light, int lightSamples);
   /// The record of `light`, new if the light is; records of deleted lights are dropped then.
   LightRecord& Record(vtkLight* light);
   /// Whether the light's counts came near what the counters hold, in the frames read back so

@@ -1157,13 +1157,8 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
   ostate->vtkglBlendFunc(GL_ONE, GL_ONE);
-  for (const auto& light : internals.Lights)
+  auto drawLayer = [&](const vtkInternals::ShadowLight& light)
   {
-    if (internals.LayersKept[light.Layer])
-    {
-      continue; // drawn by the last frame from the same light and scene
-    }
-    ++this->NumberOfRedrawnLights;
     // Each light's volumes and technique leave the state as they found it.
     penumbra::ScopedDrawState savedForLight(ostate);
     // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
@@ -1184,6 +1179,24 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
     internals.StageTimes.End(penumbra::StageTimes::Volumes);
     penumbra::StageTimes::Scope timedWedges(internals.StageTimes, penumbra::StageTimes::Wedges);
     light.Technique->Finish(frame, light);
+  };
+  for (auto& light : internals.Lights)
+  {
+    if (internals.LayersKept[light.Layer])
+    {
+      continue; // drawn by the last frame from the same light and scene
+    }
+    ++this->NumberOfRedrawnLights;
+    const penumbra::TechniqueCounts before = frame.Counts;
+    drawLayer(light);
+    if (internals.Techniques.AverageIfFirstCountWentDeep(light, this->LightSamples, window))
+    {
+      frame.Counts = before; // the count drawn is replaced, not shown
+      this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
+      light.Technique->PrepareLight(light, internals.Casters);
+      this->NumberOfSilhouetteUpdates += internals.UpdateTranslucentVolumes(light);
+      drawLayer(light);
+    }
     this->NumberOfAveragedLights += light.Samples.size() > 1 ? 1 : 0;
   }
   this->NumberOfShadowVolumeTriangles = internals.Volumes.GetTriangles();

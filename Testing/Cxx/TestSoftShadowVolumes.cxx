@@ -219,6 +219,22 @@ void TestAutomaticChoice(const SceneMaker& make)
 /// warns once, Automatic averages the light from then on; a shallow scene does neither.
 void TestDeepCounts(const SceneMaker& deep, const SceneMaker& shallow)
 {
+  {
+    // Automatic's very first frame, as a regression test renders it: counted, read back at
+    // once, found deep and drawn again averaged; the image is averaging's, without a warning.
+    SceneWindow first(deep());
+    WarningLog warnings(first.Pass);
+    vtkSoftShadowPass::SetLightRadius(first.Light, 0.05); // counting is the cheaper then
+    first.Pass->SetMethodToAutomatic();
+    first.Window->Render();
+    const std::vector<float> automatic = Visibility(first.Pass);
+    const bool averaged = first.Pass->GetNumberOfAveragedLights() == 1 &&
+      first.Pass->GetNumberOfCountedLights() == 0 && first.Pass->GetNumberOfPenumbraWedges() == 0;
+    first.Pass->SetMethodToAveragedHardShadows();
+    first.Window->Render();
+    Check(averaged && automatic == Visibility(first.Pass) && warnings.Messages.empty(),
+      "240 stacked sheets: Automatic's first frame is averaged, silently");
+  }
   SceneWindow view(deep());
   vtkSoftShadowPass* pass = view.Pass;
   WarningLog warnings(pass);
