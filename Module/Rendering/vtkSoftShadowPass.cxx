@@ -16,6 +16,9 @@
 #include "penumbraWindowReleaseCallback.h"
 
 #include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkFrameBufferObjectBase.h"
@@ -41,6 +44,7 @@
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkProp.h"
+#include "vtkProp3D.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRendererSettingsPass.h"
@@ -135,7 +139,7 @@ public:
   /// Holds every visible prop, UseBounds or not, so every pixel's visible point: the depth
   /// range and the volumes' scissors are narrowed to it. Invalid when a prop has no finite bounds.
   penumbra::Box SceneBox;               ///< holds every visible prop; invalid if one is unbounded
-  std::vector<penumbra::Box> PropBoxes; ///< each visible prop's, for the tight depth range
+  std::vector<penumbra::Box> PropBoxes; ///< each visible prop's (assembly part's), for the range
   void UpdateSceneBox(vtkRenderer* renderer);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
@@ -828,6 +832,60 @@ PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
   return PropExtent::Finite;
 }
 
+/// Adds the world boxes of what `prop` draws to `boxes`: an assembly's, one per visible part
+/// (VTK's own bounds of the assembly would hold the space between its parts, and the eye when a
+/// part lies behind it), any other prop's, its bounds. Unknown where a box is not finite.
+PropExtent AddPropBoxes(vtkProp* prop, std::vector<penumbra::Box>& boxes)
+{
+  auto* assembly = vtkAssembly::SafeDownCast(prop);
+  if (!assembly)
+  {
+    penumbra::Box box;
+    const PropExtent extent = ExtendByProp(box, prop);
+    if (extent == PropExtent::Finite)
+    {
+      boxes.push_back(box);
+    }
+    return extent;
+  }
+  const double reach = penumbra::ImposterReach(prop);
+  vtkAssemblyPath* path;
+  for (assembly->InitPathTraversal(); (path = assembly->GetNextPath());)
+  {
+    vtkAssemblyNode* node = path->GetLastNode();
+    auto* part = vtkProp3D::SafeDownCast(node->GetViewProp());
+    if (!part || !part->GetVisibility())
+    {
+      continue;
+    }
+    // As vtkAssembly::GetBounds takes them: the part at the path's matrix.
+    part->PokeMatrix(node->GetMatrix());
+    const double* bounds = part->GetBounds();
+    std::array<double, 6> partBounds{};
+    const bool has = bounds && vtkMath::AreBoundsInitialized(bounds);
+    if (has)
+    {
+      std::copy(bounds, bounds + 6, partBounds.begin());
+    }
+    part->PokeMatrix(nullptr);
+    if (!has)
+    {
+      continue;
+    }
+    if (!std::all_of(
+          partBounds.begin(), partBounds.end(), [](double b) { return std::isfinite(b); }) ||
+      !std::isfinite(reach))
+    {
+      return PropExtent::Unknown;
+    }
+    penumbra::Box box;
+    box.Extend(glm::dvec3(partBounds[0], partBounds[2], partBounds[4]) - reach,
+      glm::dvec3(partBounds[1], partBounds[3], partBounds[5]) + reach);
+    boxes.push_back(box);
+  }
+  return PropExtent::Finite;
+}
+
 /// The distance from `point` to the nearest surface of a visible prop's box: to the box from
 /// outside it, to its nearest face from inside (a light inside a room is as far from the walls
 /// as from their box's faces). Infinite when no prop has finite bounds.
@@ -868,17 +926,16 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
       continue;
     }
     // Empty props add nothing in depth; one of unknown extent, no box at all.
-    penumbra::Box box;
-    if (ExtendByProp(box, prop) == PropExtent::Unknown)
+    const std::size_t first = this->PropBoxes.size();
+    if (AddPropBoxes(prop, this->PropBoxes) == PropExtent::Unknown)
     {
       this->SceneBox = penumbra::Box();
       this->PropBoxes.clear();
       return;
     }
-    if (box.Valid)
+    for (std::size_t i = first; i < this->PropBoxes.size(); ++i)
     {
-      this->SceneBox.Extend(box.Min, box.Max);
-      this->PropBoxes.push_back(box);
+      this->SceneBox.Extend(this->PropBoxes[i].Min, this->PropBoxes[i].Max);
     }
   }
 }
