@@ -18,8 +18,7 @@ vtkOpenGLCamera* ShadowCamera::Update(
   auto* active = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
   this->Current = active;
   // An explicit projection sets its own depth range, and VTK 9.1's DeepCopy drops it.
-  if (!tight || !scene.Valid || active->GetParallelProjection() ||
-    active->GetUseExplicitProjectionTransformMatrix())
+  if (!tight || !scene.Valid || active->GetUseExplicitProjectionTransformMatrix())
   {
     return active;
   }

@@ -4,8 +4,8 @@
  *
  * With the tight depth range, that is a copy of the renderer's active camera whose clipping
  * range is narrowed to the depths of the visible props' parts in view
- * (penumbra::TightClippingRange); without it, for a parallel projection or an explicit
- * projection matrix, or where narrowing changes nothing, the active camera itself. The user's
+ * (penumbra::TightClippingRange); without it, for an explicit projection matrix, or where
+ * narrowing changes nothing, the active camera itself. The user's
  * camera is never modified: camera observers and pipelines that depend on the camera's time
  * (vtkDepthSortPolyData) see nothing of the shadows, and a still scene stays still. The copy is
  * modified only when its view or projection changed.

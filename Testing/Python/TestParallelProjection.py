@@ -5,8 +5,9 @@ near rectangle, which a parallel camera moves to a plane of its own instead of a
 neighbourhood. Hard shadows from two point lights and a directional one, seen from three sides
 (one a grazing view along the ground), must match the truth but for one-pixel boundary shifts
 (at most 0.2% of the compared pixels); soft shadows (counting 16 samples) must stay within the
-MAE of averaging the same samples, and both near the truth. The same scenes in perspective are
-checked alongside, so that a failure says which projection broke."""
+MAE of averaging the same samples, and both near the truth, and equal averaging with a clipping
+range the user set far wider than the scene (the pass narrows it for its shadows). The same scenes
+in perspective are checked alongside, so that a failure says which projection broke."""
 import numpy as np
 import penumbra
 from penumbra_testing import (actor_of, check, compare_hard_shadows, finish, ground_and_sphere, image,
@@ -82,5 +83,20 @@ for parallel in (True, False):
     check(shade.sum() > 0.02 * surface.sum() and errors["counted"] < 0.05 and
           errors["counted"] < errors["averaged"] + 0.01,
           projection + ": counted soft shadows as near the truth as averaged ones")
+
+    # A clipping range the user set far wider than the scene: the pass narrows it for its own
+    # drawing in either projection, so counting still equals averaging but for single pixels.
+    camera.SetClippingRange(1e-4, 1e3)
+    for method, choose in (("counted", shadows.SetMethodToSoftShadowVolumes),
+                           ("averaged", shadows.SetMethodToAveragedHardShadows)):
+        choose()
+        window.Render()
+        results[method] = image(shadows.GetVisibilityImage(0), w, h).copy()
+    shadowed = (results["counted"] < 1) | (results["averaged"] < 1)
+    differ = (np.abs(results["counted"] - results["averaged"]) > 1 / 16 + 1e-6)[shadowed].mean()
+    print("     %s, range (1e-4, 1e3): %.2f%% of %d shadowed px differ by more than 1/N"
+          % (projection, 100 * differ, shadowed.sum()))
+    check(shadowed.sum() > 0.02 * surface.sum() and differ <= 0.003,
+          projection + ": counting equals averaging with a wide user range")
 
 finish()
