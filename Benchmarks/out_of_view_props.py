@@ -8,9 +8,9 @@ by more than 1/N and by more than 0.5 (wedges.md, "Props reaching out of view").
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/out_of_view_props.py
 """
-import numpy as np
 import penumbra
-from penumbra_testing import actor_of, ground_and_sphere, image, offscreen_window
+from penumbra_testing import (actor_of, counted_against_averaged, ground_and_sphere,
+                              offscreen_window)
 from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
@@ -82,21 +82,6 @@ def scene_renderer(name):
     return renderer, shadows, keep
 
 
-def measure(window, shadows, name, samples):
-    shadows.SetLightSamples(samples)
-    shadows.SetMethodToAveragedHardShadows()
-    window.Render()
-    averaged = image(shadows.GetVisibilityImage(0), W, H)
-    shadows.SetMethodToSoftShadowVolumes()
-    window.Render()
-    counted = image(shadows.GetVisibilityImage(0), W, H)
-    shadowed = (averaged < 1) | (counted < 1)
-    d = np.abs(averaged - counted)[shadowed]
-    print("%-22s N %2d: %4d shadowed px, differ > 1/N %.2f%%, > 0.5 %.2f%%"
-          % (name, samples, shadowed.sum(), 100 * (d > 1 / samples + 1e-6).mean(),
-             100 * (d > 0.5).mean()))
-
-
 def main():
     # One window for every scene: Xvfb refuses some rapid reconnects.
     window = None
@@ -109,7 +94,9 @@ def main():
             window.AddRenderer(renderer)
         renderer.ResetCameraClippingRange()
         for samples in (16, 32):
-            measure(window, shadows, name, samples)
+            shadowed, step, half = counted_against_averaged(window, shadows, samples)
+            print("%-22s N %2d: %4d shadowed px, differ > 1/N %.2f%%, > 0.5 %.2f%%"
+                  % (name, samples, shadowed, 100 * step, 100 * half))
 
 
 if __name__ == "__main__":

@@ -5,9 +5,9 @@ they differ by more than 1/N and by more than 0.5, on the tests' ground and sphe
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/sample_count_agreement.py
 """
-import numpy as np
 import penumbra
-from penumbra_testing import actor_of, ground_and_sphere, image, light_pass_and_truth
+from penumbra_testing import (actor_of, counted_against_averaged, ground_and_sphere,
+                              light_pass_and_truth)
 from vtkmodules.vtkRenderingCore import vtkRenderer
 
 WIDTH, HEIGHT = 320, 240
@@ -26,19 +26,9 @@ def main():
     camera.SetFocalPoint(0, 0.5, 0)
     renderer.ResetCameraClippingRange()
     for samples in (16, 64, 255):
-        shadows.SetLightSamples(samples)
-        shadows.SetMethodToAveragedHardShadows()
-        window.Render()
-        averaged = image(shadows.GetVisibilityImage(0), WIDTH, HEIGHT)
-        shadows.SetMethodToSoftShadowVolumes()
-        window.Render()
-        counted = image(shadows.GetVisibilityImage(0), WIDTH, HEIGHT)
-        shadowed = (averaged < 1) | (counted < 1)
-        difference = np.abs(averaged - counted)[shadowed]
+        shadowed, step, half = counted_against_averaged(window, shadows, samples)
         print("N %3d: %d shadowed px, differ by more than 1/N %.2f%%, by more than 0.5 %.2f%%"
-              % (samples, shadowed.sum(), 100 * (difference > 1.0 / samples + 1e-6).mean(),
-                 100 * (difference > 0.5).mean()))
-
+              % (samples, shadowed, 100 * step, 100 * half))
 
 if __name__ == "__main__":
     main()

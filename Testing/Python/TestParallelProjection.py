@@ -10,8 +10,8 @@ range the user set far wider than the scene (the pass narrows it for its shadows
 in perspective are checked alongside, so that a failure says which projection broke."""
 import numpy as np
 import penumbra
-from penumbra_testing import (actor_of, check, compare_hard_shadows, finish, ground_and_sphere, image,
-                              light_pass_and_truth)
+from penumbra_testing import (actor_of, check, compare_hard_shadows, counted_against_averaged, finish,
+                              ground_and_sphere, image, light_pass_and_truth)
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkRenderingCore import vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
@@ -87,16 +87,10 @@ for parallel in (True, False):
     # A clipping range the user set far wider than the scene: the pass narrows it for its own
     # drawing in either projection, so counting still equals averaging but for single pixels.
     camera.SetClippingRange(1e-4, 1e3)
-    for method, choose in (("counted", shadows.SetMethodToSoftShadowVolumes),
-                           ("averaged", shadows.SetMethodToAveragedHardShadows)):
-        choose()
-        window.Render()
-        results[method] = image(shadows.GetVisibilityImage(0), w, h).copy()
-    shadowed = (results["counted"] < 1) | (results["averaged"] < 1)
-    differ = (np.abs(results["counted"] - results["averaged"]) > 1 / 16 + 1e-6)[shadowed].mean()
+    shadowed, differ, _ = counted_against_averaged(window, shadows, 16)
     print("     %s, range (1e-4, 1e3): %.2f%% of %d shadowed px differ by more than 1/N"
-          % (projection, 100 * differ, shadowed.sum()))
-    check(shadowed.sum() > 0.02 * surface.sum() and differ <= 0.003,
+          % (projection, 100 * differ, shadowed))
+    check(shadowed > 0.02 * surface.sum() and differ <= 0.003,
           projection + ": counting equals averaging with a wide user range")
 
 finish()

@@ -82,6 +82,25 @@ def image(vtk_image, width, height):
     return vtk_to_numpy(vtk_image.GetPointData().GetScalars()).reshape(height, width)
 
 
+def counted_against_averaged(window, shadows, samples):
+    """(shadowed, step, half) for light 0 of `shadows`, rendered in `window` with `samples` light
+    samples by averaged hard shadows and by soft shadow volumes: the pixels either method
+    shadows, and the shares of them where the two differ by more than 1/N and by more than 0.5.
+    Leaves the pass counting."""
+    width, height = window.GetSize()
+    shadows.SetLightSamples(samples)
+    shadows.SetMethodToAveragedHardShadows()
+    window.Render()
+    averaged = image(shadows.GetVisibilityImage(0), width, height).copy()
+    shadows.SetMethodToSoftShadowVolumes()
+    window.Render()
+    counted = image(shadows.GetVisibilityImage(0), width, height)
+    shadowed = (averaged < 1) | (counted < 1)
+    difference = np.abs(averaged - counted)[shadowed]
+    return (int(shadowed.sum()), float((difference > 1.0 / samples + 1e-6).mean()),
+            float((difference > 0.5).mean()))
+
+
 def same_surface(window, truth):
     """Where the window's depth and an updated vtkRayTracedVisibility's agree: the pixels where
     both see the same surface, and so the visibilities compare."""
