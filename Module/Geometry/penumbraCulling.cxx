@@ -243,7 +243,7 @@ glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& w
   const double nearest = depths.x, farthest = depths.y;
   if (!(nearest > 0.0) || !std::isfinite(farthest))
   {
-    return current; // nothing in view, or a box reaching the eye's plane in view
+    return current; // nothing in view: a box at the eye is cut at the near plane
   }
   const double tightFar = std::min(current.y, farthest * (1.0 + 1e-3));
   // No nearer to the far plane than 0.8 of it: float depth from the vertex transforms loses

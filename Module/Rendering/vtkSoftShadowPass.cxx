@@ -813,15 +813,14 @@ enum class PropExtent
   Unknown
 };
 
-PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
+/// What VTK's `bounds` (xmin, xmax, ymin, ...; null where there are none) grown by `reach` on
+/// every side add to `box`.
+PropExtent ExtendByBounds(penumbra::Box& box, const double* bounds, double reach)
 {
-  const double* bounds = prop->GetBounds();
   if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
   {
     return PropExtent::None;
   }
-  // Imposter spheres and sticks reach beyond the bounds VTK gives for them.
-  const double reach = penumbra::ImposterReach(prop);
   if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }) ||
     !std::isfinite(reach))
   {
@@ -830,6 +829,12 @@ PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
   box.Extend(glm::dvec3(bounds[0], bounds[2], bounds[4]) - reach,
     glm::dvec3(bounds[1], bounds[3], bounds[5]) + reach);
   return PropExtent::Finite;
+}
+
+PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
+{
+  // Imposter spheres and sticks reach beyond the bounds VTK gives for them.
+  return ExtendByBounds(box, prop->GetBounds(), penumbra::ImposterReach(prop));
 }
 
 /// Adds the world boxes of what `prop` draws to `boxes`: an assembly's, one per visible part
@@ -860,28 +865,17 @@ PropExtent AddPropBoxes(vtkProp* prop, std::vector<penumbra::Box>& boxes)
     }
     // As vtkAssembly::GetBounds takes them: the part at the path's matrix.
     part->PokeMatrix(node->GetMatrix());
-    const double* bounds = part->GetBounds();
-    std::array<double, 6> partBounds{};
-    const bool has = bounds && vtkMath::AreBoundsInitialized(bounds);
-    if (has)
-    {
-      std::copy(bounds, bounds + 6, partBounds.begin());
-    }
-    part->PokeMatrix(nullptr);
-    if (!has)
-    {
-      continue;
-    }
-    if (!std::all_of(
-          partBounds.begin(), partBounds.end(), [](double b) { return std::isfinite(b); }) ||
-      !std::isfinite(reach))
-    {
-      return PropExtent::Unknown;
-    }
     penumbra::Box box;
-    box.Extend(glm::dvec3(partBounds[0], partBounds[2], partBounds[4]) - reach,
-      glm::dvec3(partBounds[1], partBounds[3], partBounds[5]) + reach);
-    boxes.push_back(box);
+    const PropExtent extent = ExtendByBounds(box, part->GetBounds(), reach);
+    part->PokeMatrix(nullptr);
+    if (extent == PropExtent::Unknown)
+    {
+      return extent;
+    }
+    if (extent == PropExtent::Finite)
+    {
+      boxes.push_back(box);
+    }
   }
   return PropExtent::Finite;
 }
