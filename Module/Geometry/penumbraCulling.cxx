@@ -206,6 +206,85 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, cons
   return true;
 }
 
+OccupancyGrid::OccupancyGrid(const Box& bounds)
+  : Bounds(bounds)
+  , Marked(static_cast<std::size_t>(Resolution * Resolution * Resolution), false)
+{
+}
+
+void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
+{
+  if (!this->Bounds.Valid)
+  {
+    return;
+  }
+  const glm::dvec3 size = this->Bounds.Max - this->Bounds.Min;
+  // The grid cells of a coordinate, clamped to the grid; a flat axis is one cell.
+  auto cell = [&](const glm::dvec3& p, int axis)
+  {
+    const double t = size[axis] > 0.0 ? (p[axis] - this->Bounds.Min[axis]) / size[axis] : 0.0;
+    const double scaled = std::floor(t * Resolution);
+    return static_cast<int>(
+      std::clamp(std::isfinite(scaled) ? scaled : 0.0, 0.0, Resolution - 1.0));
+  };
+  glm::ivec3 from, to;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    from[axis] = cell(min, axis);
+    to[axis] = cell(max, axis);
+  }
+  for (int z = from.z; z <= to.z; ++z)
+  {
+    for (int y = from.y; y <= to.y; ++y)
+    {
+      for (int x = from.x; x <= to.x; ++x)
+      {
+        this->Marked[static_cast<std::size_t>((z * Resolution + y) * Resolution + x)] = true;
+      }
+    }
+  }
+}
+
+std::vector<Box> OccupancyGrid::Boxes() const
+{
+  if (!this->Bounds.Valid)
+  {
+    return { Box() };
+  }
+  const glm::dvec3 step = (this->Bounds.Max - this->Bounds.Min) / double(Resolution);
+  // A cell's face, from the bounds exactly at the grid's ends so that no rounding shrinks them.
+  auto face = [&](int index, int axis)
+  {
+    return index == Resolution ? this->Bounds.Max[axis]
+                               : this->Bounds.Min[axis] + index * step[axis];
+  };
+  std::vector<Box> boxes;
+  for (int z = 0; z < Resolution; ++z)
+  {
+    for (int y = 0; y < Resolution; ++y)
+    {
+      for (int x = 0; x < Resolution;)
+      {
+        const std::size_t row = static_cast<std::size_t>((z * Resolution + y) * Resolution);
+        if (!this->Marked[row + x])
+        {
+          ++x;
+          continue;
+        }
+        int end = x + 1;
+        while (end < Resolution && this->Marked[row + end])
+        {
+          ++end;
+        }
+        boxes.push_back(Box{ true, { face(x, 0), face(y, 1), face(z, 2) },
+          { face(end, 0), face(y + 1, 1), face(z + 1, 2) } });
+        x = end;
+      }
+    }
+  }
+  return boxes;
+}
+
 glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& worldToView,
   const glm::dmat4& worldToClip, const glm::dvec2& current)
 {

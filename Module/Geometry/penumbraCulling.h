@@ -161,6 +161,30 @@ VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin
   const std::array<glm::dvec3, 4>& nearCorners);
 
 /**
+ * Where a prop's cells are, finer than its bounds: a grid of Resolution^3 cells over the bounds,
+ * each marked when some cell box added overlaps it. A room's walls mark the cells along them and
+ * leave its inside empty, so that an eye inside the room still has geometry at a distance for
+ * the tight depth range, where the room's bounds would hold the eye (TightClippingRange).
+ */
+class VTKPENUMBRAGEOMETRY_EXPORT OccupancyGrid
+{
+public:
+  static constexpr int Resolution = 8;
+
+  /// A grid over `bounds`; every box added later is clamped to them.
+  explicit OccupancyGrid(const Box& bounds);
+  /// Marks the grid cells that the box min..max overlaps (its faces included).
+  void Add(const glm::dvec3& min, const glm::dvec3& max);
+  /// The marked cells as boxes, merged into runs along x: together they hold every box added.
+  /// Invalid bounds give one invalid box: nothing is known.
+  std::vector<Box> Boxes() const;
+
+private:
+  Box Bounds;
+  std::vector<bool> Marked; ///< Resolution^3, x fastest
+};
+
+/**
  * The camera clipping range (near, far) narrowed to the view depths of what the view frustum
  * holds of the boxes of the props drawn (`props`, one box each): `worldToView` is VTK's view
  * matrix (looking down -z), `worldToClip` the projection (with `current` as its range) times it,

@@ -20,6 +20,7 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkImageData.h"
@@ -67,6 +68,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -141,6 +143,23 @@ public:
   penumbra::Box SceneBox;               ///< holds every visible prop; invalid if one is unbounded
   std::vector<penumbra::Box> PropBoxes; ///< each visible prop's (assembly part's), for the range
   void UpdateSceneBox(vtkRenderer* renderer);
+
+  /// A dataset's occupied grid cells (penumbra::OccupancyGrid), in its own coordinates, kept
+  /// while the dataset is unchanged.
+  struct Occupancy
+  {
+    vtkDataSet* Data = nullptr;
+    vtkMTimeType Time = 0;
+    std::vector<penumbra::Box> Boxes;
+  };
+  std::map<vtkProp*, Occupancy> Occupancies;
+  /// Where the eye lies inside a plain actor's bounds (a room as one mesh): instead of them, the
+  /// world boxes of the grid cells its data's cells occupy, so that the range keeps the empty
+  /// space around the eye out. False for other props, for imposters (whose cells do not hold
+  /// their spheres), and for data of more than a million cells, which is not walked each time
+  /// it changes. Entries of props not asked about in a frame are dropped (`used`).
+  bool OccupiedBoxes(
+    vtkProp* prop, std::vector<penumbra::Box>& boxes, std::map<vtkProp*, Occupancy>& used);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
@@ -906,10 +925,60 @@ double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
 }
 } // namespace
 
+bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(
+  vtkProp* prop, std::vector<penumbra::Box>& boxes, std::map<vtkProp*, Occupancy>& used)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!data || data->GetNumberOfCells() > 1000000 || penumbra::ImposterReach(prop) > 0.0)
+  {
+    return false;
+  }
+  auto kept = this->Occupancies.find(prop);
+  Occupancy& occupancy = used[prop];
+  if (kept != this->Occupancies.end() && kept->second.Data == data &&
+    kept->second.Time == data->GetMTime())
+  {
+    occupancy = std::move(kept->second);
+  }
+  else
+  {
+    penumbra::Box bounds;
+    if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
+    {
+      used.erase(prop);
+      return false;
+    }
+    penumbra::OccupancyGrid grid(bounds);
+    double cell[6];
+    for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+    {
+      data->GetCellBounds(i, cell);
+      grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
+    }
+    occupancy = Occupancy{ data, data->GetMTime(), grid.Boxes() };
+  }
+  const glm::dmat4 toWorld = penumbra::ToGlm(actor->GetMatrix());
+  for (const penumbra::Box& box : occupancy.Boxes)
+  {
+    penumbra::Box world;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 p(toWorld * glm::dvec4(penumbra::BoxCorner(box.Min, box.Max, corner), 1.0));
+      world.Extend(p, p);
+    }
+    boxes.push_back(world);
+  }
+  return true;
+}
+
 void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
 {
   this->SceneBox = penumbra::Box();
   this->PropBoxes.clear();
+  const glm::dvec3 eye = glm::make_vec3(renderer->GetActiveCamera()->GetPosition());
+  std::map<vtkProp*, Occupancy> used;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   vtkProp* prop;
@@ -925,13 +994,24 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
     {
       this->SceneBox = penumbra::Box();
       this->PropBoxes.clear();
+      this->Occupancies = std::move(used);
       return;
     }
     for (std::size_t i = first; i < this->PropBoxes.size(); ++i)
     {
       this->SceneBox.Extend(this->PropBoxes[i].Min, this->PropBoxes[i].Max);
     }
+    const penumbra::Box* box =
+      this->PropBoxes.size() == first + 1 ? &this->PropBoxes.back() : nullptr;
+    std::vector<penumbra::Box> occupied;
+    if (box && glm::all(glm::greaterThanEqual(eye, box->Min)) &&
+      glm::all(glm::lessThanEqual(eye, box->Max)) && this->OccupiedBoxes(prop, occupied, used))
+    {
+      this->PropBoxes.pop_back();
+      this->PropBoxes.insert(this->PropBoxes.end(), occupied.begin(), occupied.end());
+    }
   }
+  this->Occupancies = std::move(used);
 }
 
 void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()

@@ -319,6 +319,61 @@ void TestTightClippingRange(std::mt19937& rng)
     "a NaN projection keeps the camera's range");
 }
 
+/// Whether `p` lies in one of `boxes`, faces included.
+bool InAnyBox(const std::vector<penumbra::Box>& boxes, const glm::dvec3& p)
+{
+  return std::any_of(boxes.begin(), boxes.end(),
+    [&](const penumbra::Box& b) {
+      return glm::all(glm::greaterThanEqual(p, b.Min)) && glm::all(glm::lessThanEqual(p, b.Max));
+    });
+}
+
+/// OccupancyGrid: the boxes hold every point of every box added, leave a room's inside out (its
+/// six walls mark cells along them only), merge runs along x, and say nothing for invalid
+/// bounds; a flat room (one plane) works too.
+void TestOccupancyGrid(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const penumbra::Box room{ true, { -4, 0, -4 }, { 4, 4, 4 } };
+  const double wall = 0.01;
+  const std::array<std::pair<glm::dvec3, glm::dvec3>, 6> walls = {
+    { { { -4, 0, -4 }, { 4, wall, 4 } }, { { -4, 4 - wall, -4 }, { 4, 4, 4 } },
+      { { -4, 0, -4 }, { -4 + wall, 4, 4 } }, { { 4 - wall, 0, -4 }, { 4, 4, 4 } },
+      { { -4, 0, -4 }, { 4, 4, -4 + wall } }, { { -4, 0, 4 - wall }, { 4, 4, 4 } } }
+  };
+  penumbra::OccupancyGrid grid(room);
+  for (const auto& w : walls)
+  {
+    grid.Add(w.first, w.second);
+  }
+  const std::vector<penumbra::Box> boxes = grid.Boxes();
+  auto inside = [&](const glm::dvec3& p) { return InAnyBox(boxes, p); };
+  int missed = 0;
+  for (const auto& w : walls)
+  {
+    for (int k = 0; k < 200; ++k)
+    {
+      missed += !inside(glm::mix(w.first, w.second, glm::dvec3(unit(rng), unit(rng), unit(rng))));
+    }
+  }
+  std::printf("     occupancy of a room's walls: %zu boxes, %d wall points outside them\n",
+    boxes.size(), missed);
+  Check(missed == 0, "the occupied boxes hold every wall");
+  Check(!inside(glm::dvec3(0.5, 2.0, 0.5)) && !inside(glm::dvec3(-2.0, 1.5, 2.0)),
+    "a room's inside is left out");
+  Check(boxes.size() < 8 * 8 * 8 - 6 * 6 * 6, "runs along x are merged");
+  Check(penumbra::OccupancyGrid(penumbra::Box()).Boxes().size() == 1 &&
+      !penumbra::OccupancyGrid(penumbra::Box()).Boxes().front().Valid,
+    "invalid bounds give one invalid box");
+  penumbra::OccupancyGrid flat(penumbra::Box{ true, { -4, 0, -4 }, { 4, 0, 4 } });
+  flat.Add({ -4, 0, -4 }, { -3, 0, -3 });
+  const std::vector<penumbra::Box> flatBoxes = flat.Boxes();
+  auto inFlat = [&](const glm::dvec3& p) { return InAnyBox(flatBoxes, p); };
+  Check(inFlat({ -4, 0, -4 }) && inFlat({ -3, 0, -3 }) && inFlat({ -3.5, 0, -3.2 }) &&
+      !inFlat({ 3, 0, 3 }) && !inFlat({ 0, 0, 0 }),
+    "a flat grid marks the cell of a flat box");
+}
+
 /// BoxBeyondNearPlane against points of the box: true only where every point lies beyond the
 /// near plane; false for every box that holds the eye; true for many boxes in front of it.
 void TestBoxBeyondNearPlane(std::mt19937& rng)
@@ -529,6 +584,7 @@ int main()
     "z-fail draws both caps, z-pass only a seen-through caster's light cap, a wedge fallback "
     "draws back faces");
   TestTightClippingRange(rng);
+  TestOccupancyGrid(rng);
   TestShadowScissor(rng);
   TestBoxBeyondNearPlane(rng);
   TestClipBoxByPlanes(rng);
