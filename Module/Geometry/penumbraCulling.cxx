@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -208,8 +209,15 @@ bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, cons
 
 OccupancyGrid::OccupancyGrid(const Box& bounds)
   : Bounds(bounds)
-  , Marked(static_cast<std::size_t>(Resolution * Resolution * Resolution), false)
+  , Cells(static_cast<std::size_t>(Resolution * Resolution * Resolution))
 {
+}
+
+double OccupancyGrid::Face(int index, int axis) const
+{
+  const double size = this->Bounds.Max[axis] - this->Bounds.Min[axis];
+  return index == Resolution ? this->Bounds.Max[axis]
+                             : this->Bounds.Min[axis] + size * index / Resolution;
 }
 
 void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
@@ -219,7 +227,7 @@ void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
     return;
   }
   const glm::dvec3 size = this->Bounds.Max - this->Bounds.Min;
-  // The grid cells of a coordinate, clamped to the grid; a flat axis is one cell.
+  // The grid cell of a coordinate, clamped to the grid; a flat axis is one cell.
   auto cell = [&](const glm::dvec3& p, int axis)
   {
     const double t = size[axis] > 0.0 ? (p[axis] - this->Bounds.Min[axis]) / size[axis] : 0.0;
@@ -233,13 +241,24 @@ void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
     from[axis] = cell(min, axis);
     to[axis] = cell(max, axis);
   }
+  const glm::dvec3 low = glm::clamp(min, this->Bounds.Min, this->Bounds.Max);
+  const glm::dvec3 high = glm::clamp(max, this->Bounds.Min, this->Bounds.Max);
+  const glm::dvec3 extent = high - low;
+  const int thinnest =
+    extent.x <= extent.y ? (extent.x <= extent.z ? 0 : 2) : (extent.y <= extent.z ? 1 : 2);
   for (int z = from.z; z <= to.z; ++z)
   {
     for (int y = from.y; y <= to.y; ++y)
     {
       for (int x = from.x; x <= to.x; ++x)
       {
-        this->Marked[static_cast<std::size_t>((z * Resolution + y) * Resolution + x)] = true;
+        const glm::dvec3 cellMin(this->Face(x, 0), this->Face(y, 1), this->Face(z, 2));
+        const glm::dvec3 cellMax(this->Face(x + 1, 0), this->Face(y + 1, 1), this->Face(z + 1, 2));
+        // Cut to the cell; a box that only touches it leaves a flat box on the shared face.
+        const glm::dvec3 cutMin = glm::min(glm::max(low, cellMin), cellMax);
+        const glm::dvec3 cutMax = glm::max(glm::min(high, cellMax), cutMin);
+        this->Cells[static_cast<std::size_t>((z * Resolution + y) * Resolution + x)][thinnest]
+          .Extend(cutMin, cutMax);
       }
     }
   }
@@ -251,36 +270,11 @@ std::vector<Box> OccupancyGrid::Boxes() const
   {
     return { Box() };
   }
-  const glm::dvec3 step = (this->Bounds.Max - this->Bounds.Min) / double(Resolution);
-  // A cell's face, from the bounds exactly at the grid's ends so that no rounding shrinks them.
-  auto face = [&](int index, int axis)
-  {
-    return index == Resolution ? this->Bounds.Max[axis]
-                               : this->Bounds.Min[axis] + index * step[axis];
-  };
   std::vector<Box> boxes;
-  for (int z = 0; z < Resolution; ++z)
+  for (const std::array<Box, 3>& cell : this->Cells)
   {
-    for (int y = 0; y < Resolution; ++y)
-    {
-      for (int x = 0; x < Resolution;)
-      {
-        const std::size_t row = static_cast<std::size_t>((z * Resolution + y) * Resolution);
-        if (!this->Marked[row + x])
-        {
-          ++x;
-          continue;
-        }
-        int end = x + 1;
-        while (end < Resolution && this->Marked[row + end])
-        {
-          ++end;
-        }
-        boxes.push_back(Box{ true, { face(x, 0), face(y, 1), face(z, 2) },
-          { face(end, 0), face(y + 1, 1), face(z + 1, 2) } });
-        x = end;
-      }
-    }
+    std::copy_if(cell.begin(), cell.end(), std::back_inserter(boxes),
+      [](const Box& box) { return box.Valid; });
   }
   return boxes;
 }

@@ -162,9 +162,11 @@ VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin
 
 /**
  * Where a prop's cells are, finer than its bounds: a grid of Resolution^3 cells over the bounds,
- * each marked when some cell box added overlaps it. A room's walls mark the cells along them and
- * leave its inside empty, so that an eye inside the room still has geometry at a distance for
- * the tight depth range, where the room's bounds would hold the eye (TightClippingRange).
+ * each holding the bounds of what the boxes added put inside it, three of them: one for the
+ * boxes thinnest along x, one along y, one along z. A room's walls fill thin boxes along them,
+ * its corners too, and leave its inside empty, so that an eye inside the room, even in a corner,
+ * still has geometry at a distance for the tight depth range, where the room's bounds would hold
+ * the eye (TightClippingRange).
  */
 class VTKPENUMBRAGEOMETRY_EXPORT OccupancyGrid
 {
@@ -173,15 +175,19 @@ public:
 
   /// A grid over `bounds`; every box added later is clamped to them.
   explicit OccupancyGrid(const Box& bounds);
-  /// Marks the grid cells that the box min..max overlaps (its faces included).
+  /// Adds the box min..max to the grid cells it overlaps (its faces included), cut to each.
   void Add(const glm::dvec3& min, const glm::dvec3& max);
-  /// The marked cells as boxes, merged into runs along x: together they hold every box added.
-  /// Invalid bounds give one invalid box: nothing is known.
+  /// The filled cells' boxes: together they hold every box added. Invalid bounds give one
+  /// invalid box: nothing is known.
   std::vector<Box> Boxes() const;
 
 private:
+  /// Cell `index`'s face along `axis` (index 0 to Resolution): the bounds' exactly at the ends.
+  double Face(int index, int axis) const;
+
   Box Bounds;
-  std::vector<bool> Marked; ///< Resolution^3, x fastest
+  /// Resolution^3, x fastest: per cell, the boxes thinnest along x, y and z; invalid where none
+  std::vector<std::array<Box, 3>> Cells;
 };
 
 /**
