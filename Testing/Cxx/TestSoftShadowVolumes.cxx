@@ -82,6 +82,18 @@ struct SceneWindow : PassScene
   }
 };
 
+/// Renders `view`'s light averaged, then counted (leaving the pass counting), and compares the
+/// two visibilities sample by sample.
+SampleAgreement CountedAgainstAveraged(SceneWindow& view)
+{
+  view.Pass->SetMethodToAveragedHardShadows();
+  view.Window->Render();
+  const std::vector<float> averaged = Visibility(view.Pass);
+  view.Pass->SetMethodToSoftShadowVolumes();
+  view.Window->Render();
+  return CompareSampledVisibility(averaged, Visibility(view.Pass), view.Pass->GetLightSamples());
+}
+
 /// What a scene is held to: the shares of shadowed pixels where counting may differ from
 /// averaging by more than 1/N and by more than one half, with or without the tight depth range.
 struct Limits
@@ -283,13 +295,7 @@ void TestAssemblyBehindTheEye(const SceneMaker& make)
     assembly->AddPart(part);
   }
   view.Renderer->AddViewProp(assembly);
-  vtkSoftShadowPass* pass = view.Pass;
-  pass->SetMethodToAveragedHardShadows();
-  view.Window->Render();
-  const std::vector<float> averaged = Visibility(pass);
-  pass->SetMethodToSoftShadowVolumes();
-  view.Window->Render();
-  const SampleAgreement agreement = CompareSampledVisibility(averaged, Visibility(pass), Samples);
+  const SampleAgreement agreement = CountedAgainstAveraged(view);
   std::printf("assembly with a part behind the eye: differ > 1/N on %.2f%% of %d shadowed px\n",
     100.0 * agreement.Step, agreement.Shadowed);
   Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003,
@@ -313,13 +319,7 @@ void TestEyeInsideRoom()
     false, 0.3, { -1.0, 3.5, 1.0 }, { 3.0, 2.0, 3.0 }, { 0.0, 0.8, 0.0 });
   SceneWindow view(scene);
   view.Renderer->GetActiveCamera()->SetClippingRange(1e-4, 100.0);
-  vtkSoftShadowPass* pass = view.Pass;
-  pass->SetMethodToAveragedHardShadows();
-  view.Window->Render();
-  const std::vector<float> averaged = Visibility(pass);
-  pass->SetMethodToSoftShadowVolumes();
-  view.Window->Render();
-  const SampleAgreement agreement = CompareSampledVisibility(averaged, Visibility(pass), Samples);
+  const SampleAgreement agreement = CountedAgainstAveraged(view);
   std::printf("eye inside a room, near plane 1e-4: differ > 1/N on %.2f%% of %d shadowed px, "
               "> 0.5 on %.2f%%\n",
     100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
@@ -338,12 +338,7 @@ void TestSampleCounts(const SceneMaker& make)
   for (const int samples : { 7, 24 })
   {
     pass->SetLightSamples(samples);
-    pass->SetMethodToAveragedHardShadows();
-    view.Window->Render();
-    const std::vector<float> averaged = Visibility(pass);
-    pass->SetMethodToSoftShadowVolumes();
-    view.Window->Render();
-    const SampleAgreement agreement = CompareSampledVisibility(averaged, Visibility(pass), samples);
+    const SampleAgreement agreement = CountedAgainstAveraged(view);
     std::printf("%d samples: differ > 1/N on %.2f%% of %d shadowed px\n", samples,
       100.0 * agreement.Step, agreement.Shadowed);
     Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003,
