@@ -172,6 +172,17 @@ void Box::Extend(const glm::dvec3& min, const glm::dvec3& max)
   this->Valid = true;
 }
 
+Box TransformedBox(const Box& box, const glm::dmat4& matrix)
+{
+  Box moved;
+  for (int corner = 0; box.Valid && corner < 8; ++corner)
+  {
+    const glm::dvec3 p(matrix * glm::dvec4(BoxCorner(box.Min, box.Max, corner), 1.0));
+    moved.Extend(p, p);
+  }
+  return moved;
+}
+
 Box StableReceiverBox(const Box& kept, const Box& current)
 {
   const double size = current.Diagonal();

@@ -60,6 +60,10 @@ struct Box
   void Extend(const glm::dvec3& min, const glm::dvec3& max);
 };
 
+/// The axis-aligned box that holds `box` moved by `matrix` (its eight corners'); invalid when
+/// `box` is.
+VTKPENUMBRAGEOMETRY_EXPORT Box TransformedBox(const Box& box, const glm::dmat4& matrix);
+
 /**
  * The box to cut wedges to this frame: `kept` while it holds `current` and is not more than
  * twice its size, so that receivers moving a little do not rebuild every wedge; else `current`

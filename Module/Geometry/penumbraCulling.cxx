@@ -18,6 +18,15 @@ struct Plane
   double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) - this->Offset; }
 };
 
+/// The six planes of the view frustum of `worldToClip` (OpenGL's clip space, -w <= x, y, z <= w)
+/// as (n, d) with n.x + d >= 0 inside: left, right, bottom, top, near, far.
+std::array<glm::dvec4, 6> FrustumPlanes(const glm::dmat4& worldToClip)
+{
+  const glm::dmat4 rows = glm::transpose(worldToClip);
+  return { rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1], rows[3] - rows[1],
+    rows[3] + rows[2], rows[3] - rows[2] };
+}
+
 /**
  * The (nearest, farthest) view depths of the part of `box` inside the half-spaces of `frustum`:
  * (inf, -inf) where none is, NaN where the box is not finite. Where the whole box lies in front
@@ -167,10 +176,7 @@ bool WedgesDrawnByFrontFaces(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
 bool ShadowMayReachView(const glm::dvec3& boxMin, const glm::dvec3& boxMax, const glm::dvec4& light,
   double radius, const glm::dmat4& worldToClip)
 {
-  const glm::dmat4 rows = glm::transpose(worldToClip);
-  const glm::dvec4 planes[6] = { rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1],
-    rows[3] - rows[1], rows[3] + rows[2], rows[3] - rows[2] };
-  for (const glm::dvec4& plane : planes)
+  for (const glm::dvec4& plane : FrustumPlanes(worldToClip))
   {
     const glm::dvec3 n(plane);
     const double length = glm::length(n);
@@ -286,20 +292,15 @@ glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& w
   {
     return current;
   }
-  // The six frustum planes, -w <= x, y, z <= w, as half-spaces of world points.
-  const glm::dmat4 rows = glm::transpose(worldToClip);
+  // The frustum as half-spaces of world points.
   std::vector<HalfSpace> frustum;
-  for (int axis = 0; axis < 3; ++axis)
+  for (const glm::dvec4& plane : FrustumPlanes(worldToClip))
   {
-    for (const double side : { 1.0, -1.0 })
+    if (!std::isfinite(plane.x + plane.y + plane.z + plane.w))
     {
-      const glm::dvec4 plane = rows[3] + side * rows[axis];
-      if (!std::isfinite(plane.x + plane.y + plane.z + plane.w))
-      {
-        return current;
-      }
-      frustum.push_back(HalfSpace{ -glm::dvec3(plane), plane.w });
+      return current;
     }
+    frustum.push_back(HalfSpace{ -glm::dvec3(plane), plane.w });
   }
   glm::dvec2 depths(
     std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());

@@ -199,12 +199,12 @@ private:
  * wholly in front of the eye keeps its box's nearest depth: a near plane moved up to the nearest
  * point in view would cut more shadow volumes, which then need z-fail. A relative margin of
  * 1e-3 keeps everything in view unclipped, and the range is never wider than `current`;
- * `current` itself where nothing is in view, where what is in view reaches the eye's plane, or
- * where a box is invalid or not finite. A 24-bit depth buffer's steps then span the visible
- * scene's depth, not VTK's range, which is expanded by half its length and has its near plane
- * clamped to 1/1000 of the far one. The near plane stays at most 0.8 of the far one, so that a
- * thin or distant scene's (far + near) / (far - near), by which the vertex transforms' float
- * depth loses precision, is at most 9.
+ * `current` itself where nothing is in view (a box holding the eye is cut at the near plane,
+ * which its range then keeps), or where a box or the matrix is invalid or not finite. A 24-bit
+ * depth buffer's steps then span the visible scene's depth, not VTK's range, which is expanded by
+ * half its length and has its near plane clamped to 1/1000 of the far one. The near plane stays at
+ * most 0.8 of the far one, so that a thin or distant scene's (far + near) / (far - near), by which
+ * the vertex transforms' float depth loses precision, is at most 9.
  */
 VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 TightClippingRange(const std::vector<Box>& props,
   const glm::dmat4& worldToView, const glm::dmat4& worldToClip, const glm::dvec2& current);

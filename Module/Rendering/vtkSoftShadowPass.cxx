@@ -234,6 +234,9 @@ public:
   /// The same for the translucent casters' volumes, one per sample (TranslucentSamples), once
   /// the light's technique and samples are final.
   vtkIdType UpdateTranslucentVolumes(const ShadowLight& light);
+  /// Once the light's technique and samples are final (Automatic may have traded counting's for
+  /// averaging's): the technique's own preparation, then UpdateTranslucentVolumes.
+  vtkIdType FinishLight(const ShadowLight& light);
   /// Averaged and counted lights multiply each sample's light by what translucent casters let
   /// through; wedges and plateaus leave them out (culled for the light), with one warning.
   void SortOutTranslucentCasters(ShadowLight& light);
@@ -962,13 +965,7 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(
   const glm::dmat4 toWorld = penumbra::ToGlm(actor->GetMatrix());
   for (const penumbra::Box& box : occupancy.Boxes)
   {
-    penumbra::Box world;
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const glm::dvec3 p(toWorld * glm::dvec4(penumbra::BoxCorner(box.Min, box.Max, corner), 1.0));
-      world.Extend(p, p);
-    }
-    boxes.push_back(world);
+    boxes.push_back(penumbra::TransformedBox(box, toWorld));
   }
   return true;
 }
@@ -1164,15 +1161,10 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);
-    caster->WorldMin = glm::dvec3(std::numeric_limits<double>::max());
-    caster->WorldMax = -caster->WorldMin;
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const glm::dvec3 world(caster->ObjectToWorld *
-        glm::dvec4(penumbra::BoxCorner(topo.BoundsMin, topo.BoundsMax, corner), 1.0));
-      caster->WorldMin = glm::min(caster->WorldMin, world);
-      caster->WorldMax = glm::max(caster->WorldMax, world);
-    }
+    const penumbra::Box world = penumbra::TransformedBox(
+      penumbra::Box{ true, topo.BoundsMin, topo.BoundsMax }, caster->ObjectToWorld);
+    caster->WorldMin = world.Min;
+    caster->WorldMax = world.Max;
     internals.Casters.push_back(caster);
   }
 
@@ -1206,10 +1198,14 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     {
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
     }
-    light.Technique->PrepareLight(light, internals.Casters);
-    // Once the samples are final: Automatic may have traded counting's for averaging's.
-    this->NumberOfSilhouetteUpdates += internals.UpdateTranslucentVolumes(light);
+    this->NumberOfSilhouetteUpdates += internals.FinishLight(light);
   }
+}
+
+vtkIdType vtkSoftShadowPass::vtkInternals::FinishLight(const ShadowLight& light)
+{
+  light.Technique->PrepareLight(light, this->Casters);
+  return this->UpdateTranslucentVolumes(light);
 }
 
 void vtkSoftShadowPass::vtkInternals::SortOutTranslucentCasters(ShadowLight& light)
@@ -1324,8 +1320,7 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
     {
       frame.Counts = before; // the count drawn is replaced, not shown
       this->NumberOfSilhouetteUpdates += internals.UpdateLightCasters(light);
-      light.Technique->PrepareLight(light, internals.Casters);
-      this->NumberOfSilhouetteUpdates += internals.UpdateTranslucentVolumes(light);
+      this->NumberOfSilhouetteUpdates += internals.FinishLight(light);
       drawLayer(light);
     }
     this->NumberOfAveragedLights += light.Samples.size() > 1 ? 1 : 0;
