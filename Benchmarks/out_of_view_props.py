@@ -1,9 +1,10 @@
 """Counting against averaging where props reach out of view, with the pass's tight depth range:
 the tests' ground and sphere (penumbra_testing.ground_and_sphere) alone, with a copy of both behind
 the eye (actors of their own), with a 0.01-unit triangle 1,000 units to the side in the sphere's
-polydata, and with a second sphere 1,000 units away in the same polydata. Light at (-2, 6, 3) of
-radius 0.4, 320x240, 16 and 32 samples: the share of shadowed pixels where the two methods differ
-by more than 1/N and by more than 0.5 (wedges.md, "Props reaching out of view").
+polydata, and with a second sphere 1,000 units away in the same polydata. A directional light
+from (-2, 6, 3) of 0.4 degrees, 320x240, 16 and 32 samples: the share of shadowed pixels where the
+two methods differ by more than 1/N and by more than 0.5 (wedges.md, "Props reaching out of
+view").
 
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/out_of_view_props.py
@@ -46,7 +47,8 @@ def triangle(at):
 
 
 def scene_renderer(name):
-    """The renderer of the scene `name`, with a vtkSoftShadowPass and a light of radius 0.4."""
+    """The renderer of the scene `name`, with a vtkSoftShadowPass and a directional light of 0.4
+    degrees (vtkLight is not positional unless set)."""
     renderer = vtkRenderer()
     plane, sphere = ground_and_sphere()
     keep = [plane, sphere]

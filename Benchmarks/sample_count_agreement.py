@@ -1,6 +1,7 @@
 """Counting against averaging the same samples as N grows: the share of shadowed pixels where
 they differ by more than 1/N and by more than 0.5, on the tests' ground and sphere
-(penumbra_testing.ground_and_sphere), light at (-2, 6, 3) of radius 0.4, 320x240.
+(penumbra_testing.ground_and_sphere), a directional light from (-2, 6, 3) of 0.4 degrees (vtkLight
+is not positional unless set), 320x240.
 
     xvfb-run -a env PYTHONPATH=build/lib/python3/dist-packages:Testing/Python \\
         /usr/bin/python3 Benchmarks/sample_count_agreement.py
