@@ -9,6 +9,8 @@
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeRange.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLState.h"
@@ -78,6 +80,32 @@ unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster)
   return turned ? GL_FRONT : GL_BACK;
 }
 
+/// Whether VTK draws nothing of `data` but its polygons' and strips' triangles.
+bool OnlySurfaceCells(vtkPolyData* data)
+{
+  return data && data->GetNumberOfVerts() == 0 && data->GetNumberOfLines() == 0 &&
+    !data->GetCellGhostArray();
+}
+
+/// The same for a composite mapper's input: every leaf, drawn or hidden, a polydata of surface
+/// cells only.
+bool OnlySurfaceLeaves(vtkDataObject* input)
+{
+  auto tree = vtkDataObjectTree::SafeDownCast(input);
+  if (!tree)
+  {
+    return OnlySurfaceCells(vtkPolyData::SafeDownCast(input));
+  }
+  for (vtkDataObject* leaf : vtk::Range(tree))
+  {
+    if (!OnlySurfaceCells(vtkPolyData::SafeDownCast(leaf)))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool HasCustomShaders(vtkActor* actor)
 {
   vtkShaderProperty* shaders = actor->GetShaderProperty();
@@ -90,12 +118,18 @@ bool HasCustomShaders(vtkActor* actor)
 bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
 {
   auto actor = vtkActor::SafeDownCast(prop);
-  if (!IsExactly(actor, "vtkOpenGLActor") ||
-    !IsExactly(actor->GetMapper(), "vtkOpenGLPolyDataMapper"))
+  if (!IsExactly(actor, "vtkOpenGLActor"))
   {
     return false;
   }
-  auto mapper = static_cast<vtkPolyDataMapper*>(actor->GetMapper());
+  // A composite mapper draws its blocks from one vertex buffer shifted to the data's centre,
+  // so that blocks far from it get coarse depth; each block's caster mesh keeps its own origin.
+  vtkMapper* mapper = actor->GetMapper();
+  const bool composite = IsExactly(mapper, "vtkCompositePolyDataMapper2");
+  if (!composite && !IsExactly(mapper, "vtkOpenGLPolyDataMapper"))
+  {
+    return false;
+  }
   vtkProperty* property = actor->GetProperty();
   if (!actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry() ||
     property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
@@ -105,9 +139,8 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
   {
     return false;
   }
-  vtkPolyData* data = mapper->GetInput();
-  return data && data->GetNumberOfVerts() == 0 && data->GetNumberOfLines() == 0 &&
-    !data->GetCellGhostArray();
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  return composite ? OnlySurfaceLeaves(input) : OnlySurfaceCells(vtkPolyData::SafeDownCast(input));
 }
 
 std::vector<vtkProp*> CasterDepth::Draw(
@@ -115,30 +148,32 @@ std::vector<vtkProp*> CasterDepth::Draw(
 {
   this->CulledProps = 0;
   std::vector<vtkProp*> left;
-  std::unordered_map<vtkProp*, CasterCache*> casters;
+  // Each prop's surfaces: a plain actor's one, a composite mapper's drawn blocks. A prop is
+  // ours to draw only if every one of them is opaque and cut as VTK cuts it.
+  struct PropCasters
+  {
+    std::vector<CasterCache*> Casters;
+    bool Usable = true;
+  };
+  std::unordered_map<vtkProp*, PropCasters> casters;
   for (CasterCache* caster : *frame.Casters)
   {
-    // A plain actor's one surface; anything else is not ours to draw.
-    const bool usable = !caster->Translucent() && !caster->SeenThrough &&
+    PropCasters& prop = casters[caster->Actor.GetPointer()];
+    prop.Casters.push_back(caster);
+    prop.Usable = prop.Usable && !caster->Translucent() && !caster->SeenThrough &&
       caster->Mesh->Topology.Report.PolygonsCutUnlikeVTK == 0;
-    auto inserted =
-      casters.emplace(static_cast<vtkProp*>(caster->Actor.GetPointer()), usable ? caster : nullptr);
-    if (!inserted.second)
-    {
-      inserted.first->second = nullptr;
-    }
   }
-  std::vector<CasterCache*> drawn;
+  std::vector<const PropCasters*> drawn;
   for (vtkProp* prop : props)
   {
     auto found = casters.find(prop);
-    if (found == casters.end() || !found->second)
+    if (found == casters.end() || !found->second.Usable)
     {
       left.push_back(prop);
     }
     else
     {
-      drawn.push_back(found->second);
+      drawn.push_back(&found->second);
     }
   }
   if (drawn.empty())
@@ -151,31 +186,41 @@ std::vector<vtkProp*> CasterDepth::Draw(
   {
     return props;
   }
-  vtkOpenGLState* ostate = frame.Window->GetState();
-  for (CasterCache* caster : drawn)
+  for (const PropCasters* prop : drawn)
   {
-    const unsigned int hidden = HiddenFace(frame, *caster);
-    if (hidden)
+    bool culled = false;
+    for (CasterCache* caster : prop->Casters)
     {
-      ++this->CulledProps;
-      ostate->vtkglEnable(GL_CULL_FACE);
-      ostate->vtkglCullFace(hidden);
+      culled = this->DrawCaster(frame, *caster) || culled;
     }
-    else
-    {
-      ostate->vtkglDisable(GL_CULL_FACE);
-    }
-    const glm::mat4 objectToClip(frame.WorldToClip * caster->ObjectToWorld);
-    this->Program->SetUniformMatrix4x4(
-      "MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
-    caster->Mesh->Bind(this->Program);
-    caster->Mesh->BindTriangles();
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * caster->Mesh->Topology.Triangles.size()),
-      GL_UNSIGNED_INT, nullptr);
-    caster->Mesh->TriangleIndices->Release();
-    caster->Mesh->VAO->Release();
+    this->CulledProps += culled ? 1 : 0;
   }
   return left;
+}
+
+bool CasterDepth::DrawCaster(const ShadowFrame& frame, CasterCache& caster)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  const unsigned int hidden = HiddenFace(frame, caster);
+  if (hidden)
+  {
+    ostate->vtkglEnable(GL_CULL_FACE);
+    ostate->vtkglCullFace(hidden);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_CULL_FACE);
+  }
+  const glm::mat4 objectToClip(frame.WorldToClip * caster.ObjectToWorld);
+  this->Program->SetUniformMatrix4x4(
+    "MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
+  caster.Mesh->Bind(this->Program);
+  caster.Mesh->BindTriangles();
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * caster.Mesh->Topology.Triangles.size()),
+    GL_UNSIGNED_INT, nullptr);
+  caster.Mesh->TriangleIndices->Release();
+  caster.Mesh->VAO->Release();
+  return hidden != 0;
 }
 
 } // namespace penumbra

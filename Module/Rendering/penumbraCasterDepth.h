@@ -8,7 +8,9 @@
  * the light loop) and VTK's per-prop set-up, although only the depth is kept. A prop that VTK
  * draws as nothing but its polydata's triangles has the same triangles in its caster's cached
  * mesh (penumbra::CasterTopology: welded, degenerate ones dropped, polygons cut as VTK's fan
- * cuts them): drawn from there, its depth needs a position-only shader and one draw call.
+ * cuts them): drawn from there, its depth needs a position-only shader and one draw call. A
+ * composite mapper's blocks are drawn the same way, one mesh each: VTK draws them from one vertex
+ * buffer shifted to the data's centre, so that a block far from it gets coarse depth.
  * Everything else (other mappers, clipping planes, edges, lines and points, custom shaders,
  * polygon offsets, a concave polygon) is left to VTK's opaque pass. A closed caster seen from
  * outside only is drawn with the faces turned away from the eye culled: they are hidden behind
@@ -27,27 +29,34 @@ class vtkShaderProgram;
 namespace penumbra
 {
 
+struct CasterCache;
 struct ShadowFrame;
 
 class CasterDepth
 {
 public:
-  /// Whether VTK's opaque pass draws `prop` as the triangles of its mapper's vtkPolyData and
-  /// nothing else: a vtkOpenGLActor (not a subclass: LOD actors and followers draw otherwise)
-  /// with a vtkOpenGLPolyDataMapper, opaque, a surface without edges, vertices or culled faces,
-  /// no clipping plane, no polygon offset or z-shift, no custom shader code, and data with no
-  /// vertex or line cells and no ghost cells. Read before VTK draws the frame's other props.
+  /// Whether VTK's opaque pass draws `prop` as the triangles of its mapper's vtkPolyData, or of
+  /// its composite data's polydata blocks, and nothing else: a vtkOpenGLActor (not a subclass:
+  /// LOD actors and followers draw otherwise) with a vtkOpenGLPolyDataMapper or a
+  /// vtkCompositePolyDataMapper2, opaque (every drawn block), a surface without edges, vertices
+  /// or culled faces, no clipping plane, no polygon offset or z-shift, no custom shader code, and
+  /// data with no vertex or line cells and no ghost cells. Read before VTK draws the frame's
+  /// other props.
   static bool DrawnAsItsTriangles(vtkProp* prop);
 
   /// Draws into the bound depth buffer the depth of each of `props` (all DrawnAsItsTriangles)
   /// whose caster among frame.Casters is opaque and cut as VTK draws it, with the caller's
   /// depth state. Returns the others (a prop that casts no shadow, say), for VTK to draw.
   std::vector<vtkProp*> Draw(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
-  /// Props the last Draw drew with their hidden faces culled: closed casters whose pieces all
-  /// wind one way (CasterTopology::OutwardWinding), wholly beyond the near plane.
+  /// Props the last Draw drew with the hidden faces of their mesh, or of some of their blocks,
+  /// culled: closed casters whose pieces all wind one way (CasterTopology::OutwardWinding),
+  /// wholly beyond the near plane.
   vtkIdType GetCulledProps() const { return this->CulledProps; }
 
 private:
+  /// Draws one caster's mesh; returns whether its hidden faces were culled.
+  bool DrawCaster(const ShadowFrame& frame, CasterCache& caster);
+
   vtkShaderProgram* Program = nullptr;
   vtkIdType CulledProps = 0;
 };

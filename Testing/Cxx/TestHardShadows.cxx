@@ -6,7 +6,10 @@
 #include "penumbraTestHarness.h"
 
 #include "vtkCamera.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricKlein.h"
@@ -211,11 +214,12 @@ void CompareDepthSources(Scene& scene, const std::string& what, int fromMeshes, 
 
 void TestDepthFromCasterMeshes()
 {
-  // Spheres (triangles, plain actors: their depth comes from their caster meshes, closed and
-  // seen from outside, so with their hidden faces culled), one placed by a position,
-  // orientation, mirroring scale and user matrix; the ground and a box (quads, which VTK's fan
-  // cuts along the other diagonal), a sphere with its edges shown and one that casts no shadow
-  // (VTK draws those four). The depth, and so the shadows, must be the same as VTK's.
+  // Spheres (triangles, plain actors and a composite mapper's block: their depth comes from
+  // their caster meshes, closed and seen from outside, so with their hidden faces culled), one
+  // placed by a position, orientation, mirroring scale and user matrix; the ground and a box
+  // (quads, which VTK's fan cuts along the other diagonal), a sphere with its edges shown and
+  // one that casts no shadow (VTK draws those four). The depth, and so the shadows, must be the
+  // same as VTK's.
   Scene scene(320, 240);
   scene.Ground();
   scene.Sphere(-1.2, 0.9, 0.4, 0.6);
@@ -233,9 +237,27 @@ void TestDepthFromCasterMeshes()
   scene.Box(1.4, 0.5, 0.6, 0.7, 1.0, 0.7);
   scene.Sphere(-0.3, 0.4, 1.6, 0.4)->GetProperty()->EdgeVisibilityOn();
   vtkSoftShadowPass::SetCastsShadows(scene.Sphere(1.0, 0.3, -1.4, 0.3), false);
+  // Composite data: a sphere block drawn and one hidden, whose depth VTK does not draw either.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (int block = 0; block < 2; ++block)
+  {
+    vtkSmartPointer<vtkSphereSource> sphere = block == 0
+      ? SphereSource(-1.7, 0.35, -1.3, 0.35, 32, 16)
+      : SphereSource(0, 0.5, 2.4, 0.4, 32, 16);
+    sphere->Update();
+    blocks->SetBlock(block, sphere->GetOutput());
+  }
+  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  attributes->SetBlockVisibility(blocks->GetBlock(1), false);
+  compositeMapper->SetCompositeDataDisplayAttributes(attributes);
+  vtkNew<vtkActor> composite;
+  composite->SetMapper(compositeMapper);
+  scene.Renderer->AddActor(composite);
   scene.Camera(3, 4, 7, 0, 0.5, 0);
 
-  CompareDepthSources(scene, "spheres seen from outside", 3, 3);
+  CompareDepthSources(scene, "spheres seen from outside", 4, 4);
   scene.Pass->DepthFromCasterMeshesOn();
 
   // The camera inside a closed caster (a sphere around the scene, the light inside it too): its
