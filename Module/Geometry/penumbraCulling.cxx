@@ -153,10 +153,11 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
 }
 
 VolumeDrawPlan PlanVolumeDraw(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
-  const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners, bool seenThrough)
+  const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners, bool seenThrough,
+  bool facesCulled)
 {
   VolumeDrawPlan plan;
-  plan.ZFail = VolumeMayReachNearPlane(boxMin, boxMax, light, nearCorners);
+  plan.ZFail = facesCulled || VolumeMayReachNearPlane(boxMin, boxMax, light, nearCorners);
   plan.LightCap = plan.ZFail || seenThrough;
   return plan;
 }

@@ -47,17 +47,21 @@ VTKPENUMBRAGEOMETRY_EXPORT bool VolumeMayReachNearPlane(const glm::dvec3& boxMin
 struct VolumeDrawPlan
 {
   /// Count faces behind the point, caps at infinity included: the volume may reach the near
-  /// plane. Otherwise z-pass counts the sides only.
+  /// plane, or the caster's faces are culled. Otherwise z-pass counts the sides only.
   bool ZFail = false;
   /// Draw the cap on the lit faces: z-fail, or a caster points are seen through (they lie
   /// behind that cap, so z-pass must count it).
   bool LightCap = false;
 };
 
-/// The plan for a caster's volume from `light`: z-pass wherever VolumeMayReachNearPlane allows.
+/// The plan for a caster's volume from `light`: z-pass wherever VolumeMayReachNearPlane allows,
+/// unless the caster's front or back faces are culled (`facesCulled`). Culling hides faces from
+/// the eye, not from the light, so a point may then be seen through the caster's lit faces from
+/// outside its volume's sides: z-pass, which counts on those faces hiding what lies behind them,
+/// would leave it lit.
 VTKPENUMBRAGEOMETRY_EXPORT VolumeDrawPlan PlanVolumeDraw(const glm::dvec3& boxMin,
   const glm::dvec3& boxMax, const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners,
-  bool seenThrough);
+  bool seenThrough, bool facesCulled);
 
 /**
  * Whether a caster's penumbra wedges are rasterized by their front faces. A point inside a wedge

@@ -234,6 +234,8 @@ struct CasterCache
   bool Translucent() const { return this->Opacity < 1.0; }
   /// Not in the depth pass (VTK draws it translucent): points behind it are seen through it.
   bool SeenThrough = false;
+  /// VTK culls its front or back faces: points behind those are seen through them.
+  bool FacesCulled = false;
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;

@@ -216,8 +216,8 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   }
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkShaderProgram* program = this->Program;
-  const VolumeDrawPlan plan =
-    PlanVolumeDraw(caster.WorldMin, caster.WorldMax, sample, frame.NearCorners, caster.SeenThrough);
+  const VolumeDrawPlan plan = PlanVolumeDraw(caster.WorldMin, caster.WorldMax, sample,
+    frame.NearCorners, caster.SeenThrough, caster.FacesCulled);
   if (plan.LightCap) // z-fail draws it too, beside the cap at infinity
   {
     volume.EnsureCaps(*caster.Mesh);

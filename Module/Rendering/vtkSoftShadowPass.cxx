@@ -1158,6 +1158,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     caster->Mesh = mesh;
     caster->Opacity = surface.Opacity;
     caster->SeenThrough = surface.SeenThrough;
+    vtkProperty* property = surface.Actor->GetProperty();
+    caster->FacesCulled = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);

@@ -519,10 +519,14 @@ int main()
     // The volume's plan: caps exactly where its counting needs them.
     for (const bool seenThrough : { false, true })
     {
-      const penumbra::VolumeDrawPlan plan =
-        penumbra::PlanVolumeDraw(c.Lo, c.Hi, c.Light, c.NearCorners, seenThrough);
-      const bool zFail = penumbra::VolumeMayReachNearPlane(c.Lo, c.Hi, c.Light, c.NearCorners);
-      badPlans += (plan.ZFail != zFail || plan.LightCap != (zFail || seenThrough)) ? 1 : 0;
+      for (const bool facesCulled : { false, true })
+      {
+        const penumbra::VolumeDrawPlan plan =
+          penumbra::PlanVolumeDraw(c.Lo, c.Hi, c.Light, c.NearCorners, seenThrough, facesCulled);
+        const bool zFail =
+          facesCulled || penumbra::VolumeMayReachNearPlane(c.Lo, c.Hi, c.Light, c.NearCorners);
+        badPlans += (plan.ZFail != zFail || plan.LightCap != (zFail || seenThrough)) ? 1 : 0;
+      }
     }
 
     // Wedges by their front faces: no point of the near plane inside the penumbra or umbra.
