@@ -83,15 +83,44 @@ struct Mesh
   double Opacity = 1.0;
   /// The mapper's clipping planes as (n, offset), world coordinates until the scene is moved
   /// next to the origin, then relative to it: VTK draws no point where n . x + offset < 0, so
-  /// no ray hits one (ClipHits).
+  /// no ray hits one (HiddenHit).
   std::vector<glm::dvec4> ClipPlanes;
+  /// The property culls the faces whose corners the eye sees counter-clockwise (front) or
+  /// clockwise (back): eye rays pass through them, shadow rays do not.
+  bool CullFront = false;
+  bool CullBack = false;
+  bool CullsFaces() const { return this->CullFront || this->CullBack; }
 };
 
-/// Embree's filter for meshes with clipping planes: a hit on a clipped side is no hit, as VTK's
-/// fragment shader discards it. During the filter a ray's tfar is the candidate hit's distance.
-void ClipHits(const RTCFilterFunctionNArguments* args)
+/// Whether a hit on `mesh`'s triangle `primitive` is one VTK does not draw: on a clipped side
+/// (VTK's fragment shader discards it) or, for an eye ray along `direction`, on a culled face.
+bool HiddenHit(const Mesh& mesh, unsigned int primitive, const glm::dvec3& hit,
+  const glm::dvec3& direction, bool eyeRay)
 {
-  const auto* planes = static_cast<const std::vector<glm::dvec4>*>(args->geometryUserPtr);
+  for (const glm::dvec4& plane : mesh.ClipPlanes)
+  {
+    if (glm::dot(glm::dvec3(plane), hit) + plane.w < 0.0)
+    {
+      return true;
+    }
+  }
+  if (!eyeRay || !mesh.CullsFaces())
+  {
+    return false;
+  }
+  const glm::uvec3& triangle = mesh.Triangles[primitive];
+  const glm::dvec3& a = mesh.Points[triangle.x];
+  // Counter-clockwise in the window: the corners' right-handed normal faces the eye.
+  const bool front =
+    glm::dot(glm::cross(mesh.Points[triangle.y] - a, mesh.Points[triangle.z] - a), direction) < 0.0;
+  return front ? mesh.CullFront : mesh.CullBack;
+}
+
+/// Embree's filter for meshes with hits VTK does not draw (HiddenHit). During the filter a ray's
+/// tfar is the candidate hit's distance.
+void FilterHits(const RTCFilterFunctionNArguments* args, bool eyeRays)
+{
+  const auto* mesh = static_cast<const Mesh*>(args->geometryUserPtr);
   for (unsigned int i = 0; i < args->N; ++i)
   {
     if (args->valid[i] != -1)
@@ -99,19 +128,27 @@ void ClipHits(const RTCFilterFunctionNArguments* args)
       continue;
     }
     const double t = RTCRayN_tfar(args->ray, args->N, i);
-    const glm::dvec3 hit(
-      RTCRayN_org_x(args->ray, args->N, i) + t * RTCRayN_dir_x(args->ray, args->N, i),
-      RTCRayN_org_y(args->ray, args->N, i) + t * RTCRayN_dir_y(args->ray, args->N, i),
-      RTCRayN_org_z(args->ray, args->N, i) + t * RTCRayN_dir_z(args->ray, args->N, i));
-    for (const glm::dvec4& plane : *planes)
+    const glm::dvec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+      RTCRayN_dir_y(args->ray, args->N, i), RTCRayN_dir_z(args->ray, args->N, i));
+    const glm::dvec3 hit =
+      glm::dvec3(RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+        RTCRayN_org_z(args->ray, args->N, i)) +
+      t * direction;
+    if (HiddenHit(*mesh, RTCHitN_primID(args->hit, args->N, i), hit, direction, eyeRays))
     {
-      if (glm::dot(glm::dvec3(plane), hit) + plane.w < 0.0)
-      {
-        args->valid[i] = 0;
-        break;
-      }
+      args->valid[i] = 0;
     }
   }
+}
+
+void FilterEyeHits(const RTCFilterFunctionNArguments* args)
+{
+  FilterHits(args, true);
+}
+
+void FilterShadowHits(const RTCFilterFunctionNArguments* args)
+{
+  FilterHits(args, false);
 }
 
 /// What the shadow rays of one light need, positions relative to the scene origin.
@@ -294,14 +331,18 @@ public:
     }
   }
 
-  void AddGeometry(RTCScene scene, unsigned int id, const Mesh& mesh)
+  /// Adds `mesh` to `scene`, the eye rays' (`eyeRays`) or a shadow rays' one. `mesh` must stay
+  /// where it is while the scene lives: its filter reads it.
+  void AddGeometry(RTCScene scene, unsigned int id, const Mesh& mesh, bool eyeRays)
   {
     RTCGeometry geometry = mesh.Spheres.empty() ? this->NewTriangles(mesh) : this->NewSpheres(mesh);
-    if (!mesh.ClipPlanes.empty())
+    const bool culls = eyeRays && mesh.CullsFaces() && mesh.Spheres.empty();
+    if (!mesh.ClipPlanes.empty() || culls)
     {
-      rtcSetGeometryUserData(geometry, const_cast<std::vector<glm::dvec4>*>(&mesh.ClipPlanes));
-      rtcSetGeometryIntersectFilterFunction(geometry, ClipHits);
-      rtcSetGeometryOccludedFilterFunction(geometry, ClipHits);
+      RTCFilterFunctionN filter = eyeRays ? FilterEyeHits : FilterShadowHits;
+      rtcSetGeometryUserData(geometry, const_cast<Mesh*>(&mesh));
+      rtcSetGeometryIntersectFilterFunction(geometry, filter);
+      rtcSetGeometryOccludedFilterFunction(geometry, filter);
     }
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene, geometry, id);
@@ -1101,6 +1142,7 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     blocks ? blocks->GetCompositeDataDisplayAttributes() : nullptr, true, opacity, leaves);
   auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
   vtkCompositeDataDisplayAttributes* glyphBlocks = glyphs ? glyphs->GetBlockAttributes() : nullptr;
+  const std::size_t first = meshes.size();
   for (const auto& leaf : leaves)
   {
     // A glyph mapper skips a leaf whose own block visibility is off, and nothing else.
@@ -1119,6 +1161,11 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     {
       CollectDataSet(GlyphSurface(glyphs, points), matrix, casts, leafOpacity, meshes, clipPlanes);
     }
+  }
+  for (std::size_t i = first; i < meshes.size(); ++i)
+  {
+    meshes[i].CullFront = actor->GetProperty()->GetFrontfaceCulling();
+    meshes[i].CullBack = actor->GetProperty()->GetBackfaceCulling();
   }
 }
 
@@ -1244,12 +1291,12 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
     const bool opaque = mesh.Opacity >= 1.0;
     if (opaque)
     {
-      this->AddGeometry(this->Primary, id, mesh);
+      this->AddGeometry(this->Primary, id, mesh, true);
       triangles += static_cast<vtkIdType>(mesh.Triangles.size());
     }
     if (mesh.Casts)
     {
-      this->AddGeometry(opaque ? this->Shadow : this->Translucent, id, mesh);
+      this->AddGeometry(opaque ? this->Shadow : this->Translucent, id, mesh, false);
       casterTriangles += static_cast<vtkIdType>(mesh.Triangles.size());
       this->HasTranslucentCasters |= !opaque;
     }

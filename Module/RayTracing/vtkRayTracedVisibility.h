@@ -17,6 +17,10 @@
  * - every visible actor with opacity 1 is seen by primary rays; only those for which
  *   vtkSoftShadowPass::GetCastsShadows() is true block shadow rays; triangles occlude from both
  *   sides, and a light sample below the surface's own plane counts as blocked;
+ * - primary rays pass through what VTK does not draw: the clipped side of a mapper's clipping
+ *   planes, and the faces a property culls (front or back: counter-clockwise or clockwise as the
+ *   eye sees them); shadow rays pass through clipped parts only, as culling hides faces from
+ *   the eye, not from the light;
  * - translucent actors and blocks (opacity in (0, 1)) are not seen by primary rays; a shadow ray
  *   that no opaque caster blocks is multiplied by 1 - opacity at each of their triangles it
  *   crosses (every hit, traced on past the last), as transmission.

@@ -334,6 +334,14 @@ void TestFaceCulledCasters()
       method.first.c_str(), 100.0 * inside, 100.0 * under);
     Check(inside >= 0.99, method.first + ": the inside of a front-culled sphere is in its shadow");
     Check(under >= 0.99, method.first + ": a box seen through a culled ground is in its shadow");
+    if (method.first == "hard")
+    {
+      // The truth's eye rays pass culled faces too, its shadow rays do not.
+      CheckAgainstTruth("the inside of a front-culled sphere",
+        CompareWithTruth(sphere.Window, sphere.Renderer, sphere.Pass, 0), 0.9);
+      CheckAgainstTruth("a box under a back-culled ground",
+        CompareWithTruth(box.Window, box.Renderer, box.Pass, 0), 0.9);
+    }
   }
 }
 
