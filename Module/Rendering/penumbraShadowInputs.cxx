@@ -276,19 +276,11 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
       this->AddTime(blocks->GetMTime());
     }
   }
-  auto staticMapper = vtkMapper::SafeDownCast(mapper);
-  const bool update = !(staticMapper && staticMapper->GetStatic());
+  // The inputs are up to date (UpdateMapperInputs).
   for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
   {
     for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port); ++connection)
     {
-      // As VTK's render would, before the data's time is read: a source changed since the last
-      // frame has not run yet.
-      vtkAlgorithmOutput* output = mapper->GetInputConnection(port, connection);
-      if (update && output && output->GetProducer())
-      {
-        output->GetProducer()->Update(output->GetIndex());
-      }
       vtkDataObject* data = mapper->GetInputDataObject(port, connection);
       this->Add(data);
       if (!data)
@@ -310,6 +302,45 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
     }
   }
   return true;
+}
+
+void UpdateMapperInputs(vtkRenderer* renderer)
+{
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (OutsideTheShadows(prop) || !prop->GetVisibility())
+    {
+      continue;
+    }
+    for (vtkProp* part : PropsDrawnFor(prop))
+    {
+      part->InitPathTraversal();
+      while (vtkAssemblyPath* path = part->GetNextPath())
+      {
+        vtkAbstractMapper* mapper = MapperOf(path->GetLastNode()->GetViewProp());
+        auto staticMapper = vtkMapper::SafeDownCast(mapper);
+        if (!mapper || (staticMapper && staticMapper->GetStatic()))
+        {
+          continue;
+        }
+        for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+        {
+          for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port);
+               ++connection)
+          {
+            vtkAlgorithmOutput* output = mapper->GetInputConnection(port, connection);
+            if (output && output->GetProducer())
+            {
+              output->GetProducer()->Update(output->GetIndex());
+            }
+          }
+        }
+      }
+    }
+  }
 }
 
 bool ShadowInputs::MatchKept() const

@@ -9,8 +9,8 @@
  * draws or that casts. Values are recorded where VTK does not mark a change (vtkCamera::DeepCopy
  * does not modify the camera; a prop's matrix can change through its user transform), and
  * modification times elsewhere: each prop, its mapper with its clipping planes and shader
- * property, and every input data object of the mapper (each block of composite data), after
- * bringing the mapper's inputs up to date as VTK's own render would. 2D props (vtkActor2D) are
+ * property, and every input data object of the mapper (each block of composite data), brought
+ * up to date first (UpdateMapperInputs). 2D props (vtkActor2D) are
  * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
  * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a 3D widget's
  * representation, a vtkLODActor or vtkLODProp3D, which pick their level by render time, or a
@@ -51,8 +51,8 @@ public:
   /// vtkMapper's static coincident-topology settings.
   void AddCoincidentTopologySettings();
   /// Adds every prop of `renderer`'s that can draw depth or cast (not those OutsideTheShadows),
-  /// with its matrices, mapper and input data (brought up to date). False when one of them can
-  /// change without any of that changing: the frame must then be drawn.
+  /// with its matrices, mapper and input data (as UpdateMapperInputs left it). False when one of
+  /// them can change without any of that changing: the frame must then be drawn.
   bool AddProps(vtkRenderer* renderer);
 
   /// Whether the inputs recorded since Begin equal those of the last frame passed to Keep.
@@ -73,6 +73,13 @@ private:
   glm::dmat4 KeptWorldToClip{ 0.0 };
   bool HaveKept = false;
 };
+
+/// Runs what feeds the mappers of `renderer`'s visible props (not those OutsideTheShadows), each
+/// input's producer as VTK's polydata mapper runs it while it draws (vtkOpenGLPolyDataMapper's
+/// RenderPiece), before anything of the frame's shadows reads the props' data or bounds: a source
+/// changed since the last frame has not run yet, and a time step requested through a mapper's
+/// input information (UPDATE_TIME_STEP) runs only so, not through the mapper's own Update.
+void UpdateMapperInputs(vtkRenderer* renderer);
 
 } // namespace penumbra
 

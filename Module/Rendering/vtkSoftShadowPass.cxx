@@ -504,6 +504,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
       target->GetLastSize(internals.Size[0], internals.Size[1]);
       internals.Origin[0] = internals.Origin[1] = 0;
     }
+    // Before anything reads the props' data or bounds (the lights' samples face the casters).
+    penumbra::UpdateMapperInputs(renderer);
     // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
     internals.LightsPass->Render(s);
     this->CollectShadowingLights(renderer);

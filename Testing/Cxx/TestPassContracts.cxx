@@ -17,6 +17,7 @@
 #include "vtkCubeSource.h"
 #include "vtkCullerCollection.h"
 #include "vtkDataObject.h"
+#include "vtkDataSetMapper.h"
 #include "vtkDepthSortPolyData.h"
 #include "vtkFrustumCoverageCuller.h"
 #include "vtkHardwareSelector.h"
@@ -49,8 +50,10 @@
 #include "vtkSequencePass.h"
 #include "vtkSphereRepresentation.h"
 #include "vtkSphereSource.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTextActor.h"
 #include "vtkTexture.h"
+#include "vtkTimeSourceExample.h"
 #include "vtkTransform.h"
 #include "vtkTranslucentPass.h"
 #include "vtkTrivialProducer.h"
@@ -605,6 +608,8 @@ public:
   vtkNew<vtkTexture> SphereTexture;
   vtkSmartPointer<vtkImageData> SphereImage; // RGBA, opaque until a change edits it in place
   vtkNew<vtkAssembly> Assembly;
+  vtkNew<vtkTimeSourceExample> Column; // grows with time, which a change requests
+  vtkNew<vtkDataSetMapper> ColumnMapper;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
   vtkActor* Part = nullptr;
@@ -648,6 +653,14 @@ public:
     this->View.Renderer->AddActor(this->Assembly);
     this->View.Keep.push_back(blocks.GetPointer());
     this->View.Keep.push_back(composite.GetPointer());
+    this->Column->GrowingOn();
+    this->ColumnMapper->SetInputConnection(this->Column->GetOutputPort());
+    this->ColumnMapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> column;
+    column->SetMapper(this->ColumnMapper);
+    column->SetPosition(-2.2, 0.0, -1.8);
+    column->SetScale(0.4);
+    this->View.Renderer->AddActor(column);
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -818,6 +831,14 @@ void TestReuseUnchangedShadows()
       [&] { scene.UserTransform->Translate(0, 0, -0.5); } },
     { "a source's parameter (pipeline not yet updated)", false,
       [&] { scene.SphereShape->SetRadius(0.45); } },
+    // As a time-aware viewer asks for a step; only the source's own Update honours it, and it
+    // must run before the shadows read the column's bounds.
+    { "a time step requested through a mapper's input information", false,
+      [&]
+      {
+        scene.ColumnMapper->GetInputInformation()->Set(
+          vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), 0.4);
+      } },
     { "a clipping plane moved", false, [&] { scene.ClipPlane->SetOrigin(0, 1.2, 0); } },
     { "a multiblock leaf's points", false,
       [&]
