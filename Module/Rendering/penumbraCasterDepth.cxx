@@ -1,6 +1,7 @@
 #include "penumbraCasterDepth.h"
 
 #include "penumbraCulling.h"
+#include "penumbraSceneWalk.h"
 #include "penumbraShadowCaches.h"
 #include "penumbraShadowTechnique.h"
 
@@ -23,18 +24,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <unordered_map>
 
 namespace penumbra
 {
 namespace
 {
-bool IsExactly(vtkObject* object, const char* className)
-{
-  return object && std::strcmp(object->GetClassName(), className) == 0;
-}
-
 /// No polygon offset or z-shift moves the mapper's triangles (vtkOpenGLPolyDataMapper's
 /// GetCoincidentParameters, for triangles).
 bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)

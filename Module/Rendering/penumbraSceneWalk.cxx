@@ -52,6 +52,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace penumbra
 {
@@ -209,6 +210,11 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
     return { cube->GetAssembly() }; // VTK draws the assembly at its own matrix, not the cube's
   }
   return { prop };
+}
+
+bool IsExactly(vtkObject* object, const char* className)
+{
+  return object && std::strcmp(object->GetClassName(), className) == 0;
 }
 
 bool OutsideTheShadows(vtkProp* prop)

@@ -37,6 +37,7 @@ class vtkDataObject;
 class vtkGlyph3DMapper;
 class vtkLODProp3D;
 class vtkMapper;
+class vtkObject;
 class vtkOpenGLMoleculeMapper;
 class vtkOpenGLSphereMapper;
 class vtkOpenGLStickMapper;
@@ -75,6 +76,10 @@ struct DrawnSurface
 /// parts only when VTK draws them, so the parts are where VTK last drew them: the pass walks the
 /// casters after its depth pass, in which VTK places them for the frame.
 std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
+
+/// Whether `object` is an instance of `className` itself, not of a subclass (which may draw
+/// otherwise).
+bool IsExactly(vtkObject* object, const char* className);
 
 /// Whether `prop` lies outside everything the shadows depend on: a prop that is neither a 3D prop
 /// nor a prop assembly (a 2D actor, a widget's representation, a caption's 3D leader) draws

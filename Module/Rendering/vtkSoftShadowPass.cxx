@@ -20,6 +20,8 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkFrameBufferObjectBase.h"
@@ -148,18 +150,18 @@ public:
   /// while the dataset is unchanged.
   struct Occupancy
   {
-    vtkDataSet* Data = nullptr;
     vtkMTimeType Time = 0;
     std::vector<penumbra::Box> Boxes;
   };
-  std::map<vtkProp*, Occupancy> Occupancies;
-  /// Where the eye lies inside a plain actor's bounds (a room as one mesh): instead of them, the
-  /// world boxes of the grid cells its data's cells occupy, so that the range keeps the empty
-  /// space around the eye out. False for other props, for imposters (whose cells do not hold
-  /// their spheres), and for data of more than a million cells, which is not walked each time
-  /// it changes. Entries of props not asked about in a frame are dropped (`used`).
-  bool OccupiedBoxes(
-    vtkProp* prop, std::vector<penumbra::Box>& boxes, std::map<vtkProp*, Occupancy>& used);
+  std::map<vtkDataSet*, Occupancy> Occupancies;
+  /// Where the eye lies inside the box of one dataset a prop draws the cells of (a room as one
+  /// mesh, a block of composite data, an assembly's part): instead of that box, the world boxes
+  /// of the grid cells those cells occupy (`dataToWorld` places them), so that the range keeps
+  /// the empty space around the eye out. False for data of more than a million cells, which is
+  /// not walked each time it changes. Entries of data not asked about in a frame are dropped
+  /// (`used`).
+  bool OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
+    std::vector<penumbra::Box>& boxes, std::map<vtkDataSet*, Occupancy>& used);
   std::set<vtkLight*> WarnedLights;
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
@@ -861,23 +863,96 @@ PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
   return ExtendByBounds(box, prop->GetBounds(), penumbra::ImposterReach(prop));
 }
 
-/// Adds the world boxes of what `prop` draws to `boxes`: an assembly's, one per visible part
-/// (VTK's own bounds of the assembly would hold the space between its parts, and the eye when a
-/// part lies behind it), any other prop's, its bounds. Unknown where a box is not finite.
-PropExtent AddPropBoxes(vtkProp* prop, std::vector<penumbra::Box>& boxes)
+/// A world box around part of what a prop draws and, where it is the box of one dataset whose
+/// cells VTK draws as they are, that dataset and its matrix to world (for OccupiedBoxes).
+struct PropBox
 {
+  penumbra::Box World;
+  vtkDataSet* Data = nullptr;
+  glm::dmat4 DataToWorld{ 1.0 };
+};
+
+/// The dataset whose cells `mapper` draws, as they are: a polydata or dataset mapper's input.
+/// Null for mappers that draw something else at their input's points (glyphs, imposters).
+vtkDataSet* DrawnCells(vtkMapper* mapper)
+{
+  const bool cells = penumbra::IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
+    penumbra::IsExactly(mapper, "vtkDataSetMapper");
+  return cells ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+}
+
+/// More blocks than this give a composite prop one box: the range's cost grows with the boxes.
+constexpr std::size_t MaxBlockBoxes = 4096;
+
+/// Adds the boxes of what `part` (a prop, or an assembly's part) draws at `toWorld` (its
+/// matrix, or its path's): one per block of a composite mapper's data, up to MaxBlockBoxes
+/// (hidden blocks too: they only widen the range), else its bounds in world space as VTK gives
+/// them (`worldBounds`), grown by `reach`.
+PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const double* worldBounds,
+  double reach, std::vector<PropBox>& boxes)
+{
+  auto* actor = vtkActor::SafeDownCast(part);
+  vtkMapper* mapper = actor && reach == 0.0 ? actor->GetMapper() : nullptr;
+  auto* tree = penumbra::IsExactly(mapper, "vtkCompositePolyDataMapper2")
+    ? vtkDataObjectTree::SafeDownCast(mapper->GetInputDataObject(0, 0))
+    : nullptr;
+  if (tree)
+  {
+    std::vector<PropBox> blocks;
+    for (vtkDataObject* leaf : vtk::Range(tree))
+    {
+      auto* data = vtkDataSet::SafeDownCast(leaf);
+      penumbra::Box box;
+      const PropExtent extent =
+        data ? ExtendByBounds(box, data->GetBounds(), 0.0) : PropExtent::None;
+      if (extent == PropExtent::Unknown)
+      {
+        return extent;
+      }
+      if (extent == PropExtent::Finite)
+      {
+        blocks.push_back({ penumbra::TransformedBox(box, toWorld), data, toWorld });
+      }
+    }
+    if (blocks.size() <= MaxBlockBoxes)
+    {
+      boxes.insert(boxes.end(), blocks.begin(), blocks.end());
+      return blocks.empty() ? PropExtent::None : PropExtent::Finite;
+    }
+  }
+  penumbra::Box box;
+  const PropExtent extent = ExtendByBounds(box, worldBounds, reach);
+  if (extent == PropExtent::Finite)
+  {
+    boxes.push_back({ box, mapper ? DrawnCells(mapper) : nullptr, toWorld });
+  }
+  return extent;
+}
+
+/// Adds the world boxes of what `prop` draws to `boxes`: an assembly's, those of each visible
+/// part (VTK's own bounds of the assembly would hold the space between its parts, and the eye
+/// when a part lies behind it); any other prop's, AddDrawnBoxes'. Unknown where a box is not
+/// finite.
+PropExtent AddPropBoxes(vtkProp* prop, std::vector<PropBox>& boxes)
+{
+  const double reach = penumbra::ImposterReach(prop);
   auto* assembly = vtkAssembly::SafeDownCast(prop);
   if (!assembly)
   {
-    penumbra::Box box;
-    const PropExtent extent = ExtendByProp(box, prop);
-    if (extent == PropExtent::Finite)
+    auto* prop3D = vtkProp3D::SafeDownCast(prop);
+    if (!prop3D)
     {
-      boxes.push_back(box);
+      penumbra::Box box;
+      const PropExtent extent = ExtendByProp(box, prop);
+      if (extent == PropExtent::Finite)
+      {
+        boxes.push_back({ box });
+      }
+      return extent;
     }
-    return extent;
+    return AddDrawnBoxes(
+      prop3D, penumbra::ToGlm(prop3D->GetMatrix()), prop3D->GetBounds(), reach, boxes);
   }
-  const double reach = penumbra::ImposterReach(prop);
   vtkAssemblyPath* path;
   for (assembly->InitPathTraversal(); (path = assembly->GetNextPath());)
   {
@@ -889,16 +964,12 @@ PropExtent AddPropBoxes(vtkProp* prop, std::vector<penumbra::Box>& boxes)
     }
     // As vtkAssembly::GetBounds takes them: the part at the path's matrix.
     part->PokeMatrix(node->GetMatrix());
-    penumbra::Box box;
-    const PropExtent extent = ExtendByBounds(box, part->GetBounds(), reach);
+    const PropExtent extent =
+      AddDrawnBoxes(part, penumbra::ToGlm(node->GetMatrix()), part->GetBounds(), reach, boxes);
     part->PokeMatrix(nullptr);
     if (extent == PropExtent::Unknown)
     {
       return extent;
-    }
-    if (extent == PropExtent::Finite)
-    {
-      boxes.push_back(box);
     }
   }
   return PropExtent::Finite;
@@ -930,20 +1001,16 @@ double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
 }
 } // namespace
 
-bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(
-  vtkProp* prop, std::vector<penumbra::Box>& boxes, std::map<vtkProp*, Occupancy>& used)
+bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
+  std::vector<penumbra::Box>& boxes, std::map<vtkDataSet*, Occupancy>& used)
 {
-  auto* actor = vtkActor::SafeDownCast(prop);
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  if (!data || data->GetNumberOfCells() > 1000000 || penumbra::ImposterReach(prop) > 0.0)
+  if (data->GetNumberOfCells() > 1000000)
   {
     return false;
   }
-  auto kept = this->Occupancies.find(prop);
-  Occupancy& occupancy = used[prop];
-  if (kept != this->Occupancies.end() && kept->second.Data == data &&
-    kept->second.Time == data->GetMTime())
+  auto kept = this->Occupancies.find(data);
+  Occupancy& occupancy = used[data];
+  if (kept != this->Occupancies.end() && kept->second.Time == data->GetMTime())
   {
     occupancy = std::move(kept->second);
   }
@@ -952,7 +1019,7 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(
     penumbra::Box bounds;
     if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
     {
-      used.erase(prop);
+      used.erase(data);
       return false;
     }
     penumbra::OccupancyGrid grid(bounds);
@@ -962,12 +1029,11 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(
       data->GetCellBounds(i, cell);
       grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
     }
-    occupancy = Occupancy{ data, data->GetMTime(), grid.Boxes() };
+    occupancy = Occupancy{ data->GetMTime(), grid.Boxes() };
   }
-  const glm::dmat4 toWorld = penumbra::ToGlm(actor->GetMatrix());
   for (const penumbra::Box& box : occupancy.Boxes)
   {
-    boxes.push_back(penumbra::TransformedBox(box, toWorld));
+    boxes.push_back(penumbra::TransformedBox(box, dataToWorld));
   }
   return true;
 }
@@ -977,7 +1043,8 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
   this->SceneBox = penumbra::Box();
   this->PropBoxes.clear();
   const glm::dvec3 eye = glm::make_vec3(renderer->GetActiveCamera()->GetPosition());
-  std::map<vtkProp*, Occupancy> used;
+  std::map<vtkDataSet*, Occupancy> used;
+  std::vector<PropBox> drawn;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   vtkProp* prop;
@@ -988,26 +1055,24 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
       continue;
     }
     // Empty props add nothing in depth; one of unknown extent, no box at all.
-    const std::size_t first = this->PropBoxes.size();
-    if (AddPropBoxes(prop, this->PropBoxes) == PropExtent::Unknown)
+    drawn.clear();
+    if (AddPropBoxes(prop, drawn) == PropExtent::Unknown)
     {
       this->SceneBox = penumbra::Box();
       this->PropBoxes.clear();
       this->Occupancies = std::move(used);
       return;
     }
-    for (std::size_t i = first; i < this->PropBoxes.size(); ++i)
+    for (const PropBox& box : drawn)
     {
-      this->SceneBox.Extend(this->PropBoxes[i].Min, this->PropBoxes[i].Max);
-    }
-    const penumbra::Box* box =
-      this->PropBoxes.size() == first + 1 ? &this->PropBoxes.back() : nullptr;
-    std::vector<penumbra::Box> occupied;
-    if (box && glm::all(glm::greaterThanEqual(eye, box->Min)) &&
-      glm::all(glm::lessThanEqual(eye, box->Max)) && this->OccupiedBoxes(prop, occupied, used))
-    {
-      this->PropBoxes.pop_back();
-      this->PropBoxes.insert(this->PropBoxes.end(), occupied.begin(), occupied.end());
+      this->SceneBox.Extend(box.World.Min, box.World.Max);
+      const bool holdsEye = glm::all(glm::greaterThanEqual(eye, box.World.Min)) &&
+        glm::all(glm::lessThanEqual(eye, box.World.Max));
+      if (!holdsEye || !box.Data ||
+        !this->OccupiedBoxes(box.Data, box.DataToWorld, this->PropBoxes, used))
+      {
+        this->PropBoxes.push_back(box.World);
+      }
     }
   }
   this->Occupancies = std::move(used);
