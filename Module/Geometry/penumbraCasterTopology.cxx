@@ -12,6 +12,8 @@
 #include "vtkPolygon.h"
 #include "vtkSMPTools.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -206,11 +208,43 @@ bool IsFanTriangle(vtkIdList* local, vtkIdType t)
   return corners[0] == 0 && corners[2] == corners[1] + 1;
 }
 
-/// Appends the triangles of one polygon, ear-cut when it has more than three corners. Returns
-/// whether they are the fan VTK draws it as (a convex polygon's, often): only then is the
-/// depth of the cut the depth VTK draws.
+/// Whether the polygon of `npts` corners `ids` turns the same way at every corner, seen along
+/// its Newell normal (`corners` is scratch). VTK's fan from its first corner then covers it as
+/// it is, planar or warped.
+bool IsConvex(
+  vtkPoints* points, vtkIdType npts, const vtkIdType* ids, std::vector<glm::dvec3>& corners)
+{
+  corners.resize(static_cast<std::size_t>(npts));
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    points->GetPoint(ids[k], glm::value_ptr(corners[static_cast<std::size_t>(k)]));
+  }
+  const std::size_t n = corners.size();
+  glm::dvec3 normal(0.0);
+  for (std::size_t k = 1; k + 1 < n; ++k)
+  {
+    normal += glm::cross(corners[k] - corners[0], corners[k + 1] - corners[0]);
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const glm::dvec3& a = corners[k];
+    const glm::dvec3& b = corners[(k + 1) % n];
+    const glm::dvec3& c = corners[(k + 2) % n];
+    // Not finite, collinear or turning back: left to the ear cut.
+    if (!(glm::dot(glm::cross(b - a, c - b), normal) > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Appends the triangles of one polygon: the fan from its first corner, as VTK's mapper draws
+/// it, where the polygon is convex (IsConvex), else ear-cut. Returns whether they are that fan:
+/// only then is the depth of the cut the depth VTK draws.
 bool TriangulatePolygon(vtkPolyData* input, vtkIdType npts, const vtkIdType* ids,
-  vtkPolygon* polygon, vtkIdList* local, std::vector<glm::uvec3>& triangles)
+  vtkPolygon* polygon, vtkIdList* local, std::vector<glm::dvec3>& corners,
+  std::vector<glm::uvec3>& triangles)
 {
   if (npts < 3)
   {
@@ -219,6 +253,14 @@ bool TriangulatePolygon(vtkPolyData* input, vtkIdType npts, const vtkIdType* ids
   if (npts == 3)
   {
     triangles.emplace_back(ids[0], ids[1], ids[2]);
+    return true;
+  }
+  if (IsConvex(input->GetPoints(), npts, ids, corners))
+  {
+    for (vtkIdType k = 1; k + 1 < npts; ++k)
+    {
+      triangles.emplace_back(ids[0], ids[k], ids[k + 1]);
+    }
     return true;
   }
   polygon->Initialize(static_cast<int>(npts), ids, input->GetPoints());
@@ -920,6 +962,7 @@ void TriangulateCells(
   };
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> local;
+  std::vector<glm::dvec3> corners;
   vtkIdType npts;
   const vtkIdType* ids;
   vtkCellArray* polys = input->GetPolys();
@@ -942,7 +985,7 @@ void TriangulateCells(
       cells->GetCurrentCell(npts, ids);
       if (validIds(npts, ids))
       {
-        if (!TriangulatePolygon(input, npts, ids, polygon, local, triangles))
+        if (!TriangulatePolygon(input, npts, ids, polygon, local, corners, triangles))
         {
           ++report.PolygonsCutUnlikeVTK;
         }

@@ -66,7 +66,7 @@ struct TopologyReport
   /// Triangles (or the triangles of polygons and strips) naming a point that does not exist.
   std::size_t InvalidIndexTriangles = 0;
   /// Polygons of four or more corners ear-cut into other triangles than the fan VTK's mapper
-  /// draws them as (a concave polygon, or a warped one cut along the other diagonal). Not a
+  /// draws them as (concave ones: convex polygons, planar or warped, are cut as that fan). Not a
   /// problem for the shadows; it tells that the depth of these triangles is not VTK's.
   std::size_t PolygonsCutUnlikeVTK = 0;
   std::size_t SkippedVerts = 0;

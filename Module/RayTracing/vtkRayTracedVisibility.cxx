@@ -13,6 +13,8 @@
 #include "vtkBitArray.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
@@ -44,6 +46,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolygon.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -577,6 +580,47 @@ vtkSmartPointer<vtkImageData> NewImage(int width, int height, const char* name, 
   return image;
 }
 
+/// `poly` with each convex polygon of more than three corners (vtkPolygon::IsConvex, planar or
+/// warped) replaced by the fan from its first corner, the triangles VTK's mapper draws it as. The
+/// others are left to vtkTriangleFilter's ear cut: a concave polygon casts as itself, not as the
+/// fan VTK shows (limitations.md). Cell data is dropped: the counts no longer match.
+vtkSmartPointer<vtkPolyData> FannedConvexPolygons(vtkPolyData* poly)
+{
+  vtkCellArray* polygons = poly->GetPolys();
+  if (!poly->GetPoints() || polygons->GetNumberOfCells() == 0 || polygons->IsHomogeneous() == 3)
+  {
+    return poly;
+  }
+  vtkNew<vtkCellArray> cut;
+  auto cells = vtk::TakeSmartPointer(polygons->NewIterator());
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  std::vector<vtkIdType> corners;
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    cells->GetCurrentCell(count, ids);
+    corners.assign(ids, ids + count);
+    if (count > 3 &&
+      vtkPolygon::IsConvex(poly->GetPoints(), static_cast<int>(count), corners.data()))
+    {
+      for (vtkIdType k = 1; k + 1 < count; ++k)
+      {
+        const vtkIdType triangle[3] = { ids[0], ids[k], ids[k + 1] };
+        cut->InsertNextCell(3, triangle);
+      }
+    }
+    else
+    {
+      cut->InsertNextCell(count, ids);
+    }
+  }
+  auto fanned = vtkSmartPointer<vtkPolyData>::New();
+  fanned->ShallowCopy(poly);
+  fanned->GetCellData()->Initialize();
+  fanned->SetPolys(cut);
+  return fanned;
+}
+
 /// Appends the surface triangles of one dataset, transformed by `matrix`, to `meshes`.
 void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, double opacity,
   std::vector<Mesh>& meshes, const std::vector<glm::dvec4>& clipPlanes = {})
@@ -597,7 +641,7 @@ void CollectDataSet(vtkDataObject* data, const double matrix[16], bool casts, do
   // VTK's own triangulation of polygons and strips, not the pass's (penumbra::CasterTopology),
   // so that a mistake in either shows against the other. Lines and vertices cast nothing.
   vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(poly);
+  triangulate->SetInputData(FannedConvexPolygons(poly));
   triangulate->PassLinesOff();
   triangulate->PassVertsOff();
   triangulate->Update();

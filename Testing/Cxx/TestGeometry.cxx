@@ -505,6 +505,33 @@ void TestPolygonsCutAsVTKDraws()
   Check(other.Report.Describe().empty(), "a cut unlike VTK's is not a mesh problem");
   vtkNew<vtkSphereSource> triangles;
   Check(FromSource(triangles).Report.PolygonsCutUnlikeVTK == 0, "triangles are VTK's own");
+  // Convex polygons, planar (a plane's and a cube's quads, which the ear cut took along the other
+  // diagonal) or warped, are cut as the fan: their depth, and their shadow, are what VTK draws.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(4, 3);
+  vtkNew<vtkCubeSource> cube;
+  const CasterTopology quads = FromSource(plane), box = FromSource(cube);
+  Check(quads.Triangles.size() == 24 && quads.Report.PolygonsCutUnlikeVTK == 0 &&
+      box.Triangles.size() == 12 && box.Report.PolygonsCutUnlikeVTK == 0,
+    "a plane's and a cube's quads are cut as VTK's fan");
+  vtkNew<vtkPoints> pts;
+  const double warped[4][3] = { { 0, 0, 0 }, { 1, 0, 0.3 }, { 1, 1, 0 }, { 0, 1, 0.3 } };
+  vtkIdType ids[4];
+  for (vtkIdType k = 0; k < 4; ++k)
+  {
+    ids[k] = pts->InsertNextPoint(warped[k]);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(pts);
+  data->SetPolys(polys);
+  const CasterTopology saddle = CasterTopology::Build(data);
+  auto namesFirstCorner = [](const glm::uvec3& t) { return t.x == 0 || t.y == 0 || t.z == 0; };
+  const bool fromFirstCorner = saddle.Triangles.size() == 2 &&
+    namesFirstCorner(saddle.Triangles[0]) && namesFirstCorner(saddle.Triangles[1]);
+  Check(fromFirstCorner && saddle.Report.PolygonsCutUnlikeVTK == 0,
+    "a warped convex quad is cut along the fan's diagonal, from its first corner");
 }
 
 /// Whether two builds gave the same topology, field by field.
