@@ -76,7 +76,15 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkSoftShadowPass);
-vtkCxxSetObjectMacro(vtkSoftShadowPass, DelegatePass, vtkRenderPass);
+void vtkSoftShadowPass::SetDelegatePass(vtkRenderPass* delegatePass)
+{
+  if (delegatePass == this)
+  {
+    vtkErrorMacro("A pass cannot be its own delegate: the delegate is left as it was.");
+    return;
+  }
+  vtkSetObjectBodyMacro(DelegatePass, vtkRenderPass, delegatePass);
+}
 
 vtkInformationKeyMacro(vtkSoftShadowPass, LIGHT_RADIUS, Double);
 vtkInformationKeyMacro(vtkSoftShadowPass, CASTS_SHADOWS, Integer);
@@ -85,6 +93,23 @@ vtkInformationKeyMacro(vtkSoftShadowPass, SHADOW_PLANE, Integer);
 
 namespace
 {
+
+/// Sets a flag for as long as a call goes down the delegate chain.
+class DelegateChainScope
+{
+public:
+  explicit DelegateChainScope(bool& flag)
+    : Flag(flag)
+  {
+    this->Flag = true;
+  }
+  ~DelegateChainScope() { this->Flag = false; }
+  DelegateChainScope(const DelegateChainScope&) = delete;
+  DelegateChainScope& operator=(const DelegateChainScope&) = delete;
+
+private:
+  bool& Flag;
+};
 
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
@@ -166,6 +191,10 @@ public:
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
   bool WarnedNoDelegate = false;
+  bool WarnedDelegateSize = false;
+  /// Set while a call goes down the delegate chain: a chain that comes back to this pass
+  /// (A -> B -> A, or through a camera or sequence pass) stops there instead of recursing.
+  bool InDelegateChain = false;
   /// The largest width or height the light-intensity layers (2D array textures) can take here, read
   /// once per window; 0 until read.
   int MaxLayerSize = 0;
@@ -282,10 +311,15 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: ";
-  if (this->DelegatePass)
+  if (this->DelegatePass && !this->Internals->InDelegateChain)
   {
     os << "\n";
+    DelegateChainScope chain(this->Internals->InDelegateChain);
     this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else if (this->DelegatePass)
+  {
+    os << this->DelegatePass << " (back to this pass)\n";
   }
   else
   {
@@ -1566,7 +1600,17 @@ bool vtkSoftShadowPass::SetShaderParameters(
   {
     return true;
   }
-  const bool apply = internals.ApplyShadows && GetReceivesShadows(prop) &&
+  // The LI buffer covers the viewport. A pass drawing into a framebuffer of its own (SSAO, depth
+  // peeling, tone mapping) puts the viewport at that framebuffer's origin, not the window's:
+  // take the origin of the viewport being drawn.
+  GLint viewport[4] = { internals.Origin[0], internals.Origin[1], internals.Size[0],
+    internals.Size[1] };
+  if (internals.Window)
+  {
+    internals.Window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  }
+  const bool placed = this->ViewportMatchesShadows(viewport);
+  const bool apply = placed && internals.ApplyShadows && GetReceivesShadows(prop) &&
     !prop->IsRenderingTranslucentPolygonalGeometry();
   program->SetUniformi("penumbraApply", apply ? 1 : 0);
   // The window's renderers share programs, and VTK uploads a program's light uniforms only when
@@ -1575,14 +1619,6 @@ bool vtkSoftShadowPass::SetShaderParameters(
   // one viewport's receivers drew with the other's lights. Ask for the upload on every draw.
   program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   program->SetUniformi("penumbraLI", internals.LI.GetLayers()->GetTextureUnit());
-  // The LI buffer covers the viewport. A pass drawing into a framebuffer of its own (SSAO, depth
-  // peeling, tone mapping) puts the viewport at that framebuffer's origin, not the window's:
-  // take the origin of the viewport being drawn.
-  GLint viewport[4] = { internals.Origin[0], internals.Origin[1], 0, 0 };
-  if (internals.Window)
-  {
-    internals.Window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
-  }
   const int origin[2] = { viewport[0], viewport[1] };
   program->SetUniform2i("penumbraOrigin", origin);
   program->SetUniform2i("penumbraSize", internals.Size);
@@ -1594,6 +1630,28 @@ bool vtkSoftShadowPass::SetShaderParameters(
   program->SetUniform1fv(
     "penumbraAttenuation", static_cast<int>(attenuation.size()), attenuation.data());
   return true;
+}
+
+bool vtkSoftShadowPass::ViewportMatchesShadows(const int viewport[4])
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.ApplyShadows ||
+    (viewport[2] == internals.Size[0] && viewport[3] == internals.Size[1]))
+  {
+    return true;
+  }
+  if (!internals.WarnedDelegateSize)
+  {
+    vtkWarningMacro(<< "The delegate draws the scene " << viewport[2] << " x " << viewport[3]
+                    << " pixels large, not at the shadows' " << internals.Size[0] << " x "
+                    << internals.Size[1]
+                    << " (a pass that pads or supersamples its image, such as "
+                       "vtkDepthOfFieldPass, vtkGaussianBlurPass or vtkSSAAPass, inside this "
+                       "one): the shadows cannot be placed, and the frame is drawn unshadowed. "
+                       "Put such a pass around this one.");
+    internals.WarnedDelegateSize = true;
+  }
+  return false;
 }
 
 vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()
@@ -1732,8 +1790,9 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.VisibilityImages.clear();
   // A window made later may take this one's address.
   internals.MaxLayerSizeWindow = nullptr;
-  if (this->DelegatePass)
+  if (this->DelegatePass && !internals.InDelegateChain)
   {
+    DelegateChainScope chain(internals.InDelegateChain);
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
   this->Superclass::ReleaseGraphicsResources(w);

@@ -448,6 +448,9 @@ private:
   /// Before drawing into `window`: releases the GPU resources made in another window's context
   /// and registers for the release of this one's.
   void FollowWindow(vtkOpenGLRenderWindow* window);
+  /// Whether the viewport being drawn (x, y, width, height) has the shadows' size, so that the
+  /// LI buffer lines up with it; warns once where a delegate draws at another size.
+  bool ViewportMatchesShadows(const int viewport[4]);
   /// Warns once per prop and problem that a receiver's shader could not be edited.
   void WarnShaderEdit(vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem);
   void CollectShadowingLights(vtkRenderer* renderer);

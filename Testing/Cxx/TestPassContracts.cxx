@@ -67,6 +67,7 @@
 #include <functional>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <vector>
 
 using namespace penumbra_test;
@@ -1049,8 +1050,25 @@ void TestNestedPasses()
   view.Window->Render();
   Check(cyclicLog.Count("its own delegate chain") == 1,
     "a pass inside its own chain: one warning, no endless recursion");
+  // Calls that go down the chain stop where it comes back (a user's trial: a segmentation fault,
+  // the stack overflowing in ReleaseGraphicsResources).
+  std::ostringstream printed;
+  cyclic->Print(printed);
+  cyclic->ReleaseGraphicsResources(view.Window);
+  view.Window->Render();
+  Check(!printed.str().empty(),
+    "a pass inside its own chain: printed, released and drawn again without endless recursion");
   cyclic->SetDelegatePass(nullptr); // the cycle holds itself
   view.Renderer->SetPass(view.Pass);
+
+  // A pass as its own delegate is refused, with one error.
+  const WarningLog errors(view.Pass, vtkCommand::ErrorEvent);
+  vtkRenderPass* delegate = view.Pass->GetDelegatePass();
+  view.Pass->SetDelegatePass(view.Pass);
+  view.Window->Render();
+  Check(view.Pass->GetDelegatePass() == delegate && errors.Count("its own delegate") == 1 &&
+      view.Pass->GetNumberOfShadowingLights() == 1,
+    "a pass set as its own delegate: refused with one error, the frame drawn as before");
 }
 
 /// A pass taken off its renderer while its window's context goes (Finalize, or the window

@@ -34,6 +34,7 @@ using namespace penumbra_test;
 namespace
 {
 constexpr int Width = 400, Height = 250;
+constexpr double FullViewport[4] = { 0.0, 0.0, 1.0, 1.0 };
 
 struct Image
 {
@@ -263,9 +264,37 @@ void TestSetting(const Setting& setting, const double viewport[4])
 }
 } // namespace
 
+/// A delegate that draws the scene larger than the viewport (vtkSSAAPass inside the pass, where
+/// it belongs around it): the LI buffer cannot line up with its pixels, so the frame is drawn
+/// unshadowed, with one warning, instead of with shadows in the wrong place (a user's trial: all
+/// 628 darkened pixels where the truth is lit; vtkDepthOfFieldPass and vtkGaussianBlurPass
+/// shifted them by their padding).
+void TestDelegateOfAnotherSize()
+{
+  View view(FullViewport, true);
+  vtkNew<vtkSSAAPass> supersampling;
+  vtkNew<vtkRendererSettingsPass> scene;
+  supersampling->SetDelegatePass(scene);
+  view.Pass->SetDelegatePass(supersampling);
+  WarningLog warnings(view.Pass);
+  const Image inside = view.Render();
+  view.Pass->ShadowsEnabledOff();
+  const Image unshadowed = view.Render();
+  std::size_t differing = 0;
+  for (std::size_t pixel = 0; pixel < inside.Rgb.size() / 3; ++pixel)
+  {
+    differing += Differs(inside, unshadowed, pixel) ? 1 : 0;
+  }
+  std::printf(
+    "supersampling inside the pass: %zu pixels differ from the unshadowed frame\n", differing);
+  Check(!inside.Rgb.empty() && differing == 0,
+    "a delegate drawing at another size: the frame is drawn unshadowed, not misplaced");
+  Check(warnings.Count("pads or supersamples") == 1, "a delegate drawing at another size: warned");
+}
+
 int main()
 {
-  const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
+  const double* full = FullViewport;
   std::vector<Setting> settings;
   settings.push_back({ "depth peeling",
     [](View& view, bool)
@@ -326,5 +355,6 @@ int main()
   TestSetting({ "FXAA, offset viewport", settings[1].Apply }, offset);
   TestSetting({ "depth peeling, offset viewport", settings[0].Apply }, offset);
   TestSetting({ "tone mapping, offset viewport", settings[3].Apply, false }, offset);
+  TestDelegateOfAnotherSize();
   return penumbra_test::Finish();
 }
