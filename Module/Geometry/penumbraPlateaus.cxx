@@ -123,8 +123,10 @@ bool ReceiverPlane::Make(const glm::dvec3& origin, const glm::dvec3& normal, Rec
   {
     return false;
   }
-  plane.Origin = origin;
   plane.Normal = normal / length;
+  // The plane's point nearest the world's origin: an origin given far along the plane would
+  // make every in-plane coordinate huge.
+  plane.Origin = glm::dot(origin, plane.Normal) * plane.Normal;
   PlaneBasis(plane.Normal, plane.U, plane.V);
   return true;
 }

@@ -41,7 +41,8 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ReceiverPlane
   glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
   glm::dvec3 U{ 1.0, 0.0, 0.0 }, V{ 0.0, 1.0, 0.0 };
 
-  /// A plane through `origin` with normal `normal` (normalized here); false if it has none.
+  /// The plane through `origin` with normal `normal` (normalized here), its Origin taken as the
+  /// plane's point nearest the world's origin; false if it has none.
   static bool Make(const glm::dvec3& origin, const glm::dvec3& normal, ReceiverPlane& plane);
   double Height(const glm::dvec3& x) const { return glm::dot(this->Normal, x - this->Origin); }
   glm::dvec2 ToPlane(const glm::dvec3& x) const

@@ -39,7 +39,8 @@ bool PlateauTechnique::FindReceiverPlane(vtkRenderer* renderer, vtkObject* owner
       ReceiverPlane::Make(this->Settings.Origin, this->Settings.Normal, this->Plane);
     if (!this->HavePlane && !this->WarnedNoPlane)
     {
-      vtkWarningWithObjectMacro(owner, "The receiver plane's normal is zero or not finite.");
+      vtkWarningWithObjectMacro(
+        owner, "The receiver plane's normal is zero, or its normal or origin is not finite.");
     }
     this->Tolerance = 0.0; // set from the plateaus' extent when they are drawn
     return this->HavePlane;
