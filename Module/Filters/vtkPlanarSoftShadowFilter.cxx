@@ -808,9 +808,10 @@ int vtkPlanarSoftShadowFilter::RequestData(
     return finish();
   }
   if (!std::isfinite(glm::dot(plane.Normal, plane.Normal)) || glm::length(plane.Normal) <= 0.0 ||
-    !std::isfinite(glm::dot(plane.Origin, plane.Origin)))
+    !std::isfinite(glm::dot(plane.Origin, plane.Origin)) || !std::isfinite(this->Offset))
   {
-    vtkErrorMacro("PlaneNormal must be a finite, non-zero vector and PlaneOrigin finite.");
+    vtkErrorMacro(
+      "PlaneNormal must be a finite, non-zero vector, and PlaneOrigin and Offset finite.");
     return finish();
   }
   plane.Normal = glm::normalize(plane.Normal);

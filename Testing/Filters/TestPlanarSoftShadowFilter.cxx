@@ -500,6 +500,17 @@ int TestBadInput()
         c.Name + ": all umbra, intensity 0");
     }
   }
+  // An Offset that is not finite would lift every output point to NaN.
+  {
+    auto filter = vtkSmartPointer<vtkPlanarSoftShadowFilter>::New();
+    Messages messages(filter);
+    filter->SetInputData(triangle);
+    filter->SetLightPosition(0, 0, 5);
+    filter->SetOffset(nan);
+    filter->Update();
+    Check(messages.Errors == 1 && filter->GetOutput()->GetNumberOfPoints() == 0,
+      "Offset NaN: one error, empty output");
+  }
   // Directional light: parallel to the plane is refused; 10 degrees is a soft shadow.
   {
     auto filter = vtkSmartPointer<vtkPlanarSoftShadowFilter>::New();
