@@ -192,6 +192,11 @@ public:
   bool WarnedNested = false;
   bool WarnedNoDelegate = false;
   bool WarnedDelegateSize = false;
+  /// The receivers' draws of this frame at the shadows' size and at others (OtherSize, the last).
+  vtkIdType DrawsAtShadowSize = 0;
+  vtkIdType DrawsAtOtherSizes = 0;
+  int OtherSize[2] = { 0, 0 };
+  bool WarnedShadowMapPass = false;
   /// Set while a call goes down the delegate chain: a chain that comes back to this pass
   /// (A -> B -> A, or through a camera or sequence pass) stops there instead of recursing.
   bool InDelegateChain = false;
@@ -580,6 +585,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
   internals.LI.GetLayers()->Activate();
   internals.ApplyShadows = true;
+  internals.DrawsAtShadowSize = internals.DrawsAtOtherSizes = 0;
   this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
 
   {
@@ -587,6 +593,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     this->RenderDelegate(s);
   }
   internals.StageTimes.EndFrame();
+  this->WarnOfDelegateSize();
 
   internals.ApplyShadows = false;
   internals.LI.GetLayers()->Deactivate();
@@ -1561,6 +1568,16 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
       mapper, prop, "is written without lighting (its vtkProperty has Lighting off)");
     return true;
   }
+  // VTK's vtkShadowMapPass, later in the delegate chain, declares its shadow maps before and
+  // scales the same statements after this pass: this pass takes them first, and the shadow
+  // maps' factors are left unused.
+  if (fragmentShader.find("uniform sampler2D shadowMap") != std::string::npos &&
+    !this->Internals->WarnedShadowMapPass)
+  {
+    vtkWarningMacro("VTK's vtkShadowMapPass draws inside this pass: both scale the same light "
+                    "terms, and only this pass's shadows are drawn. Use one or the other.");
+    this->Internals->WarnedShadowMapPass = true;
+  }
   const std::vector<int> missing =
     penumbra::ScaleLightTerms(fragmentShader, ReceiverLights(lights));
   if (!missing.empty())
@@ -1635,23 +1652,38 @@ bool vtkSoftShadowPass::SetShaderParameters(
 bool vtkSoftShadowPass::ViewportMatchesShadows(const int viewport[4])
 {
   vtkInternals& internals = *this->Internals;
-  if (!internals.ApplyShadows ||
-    (viewport[2] == internals.Size[0] && viewport[3] == internals.Size[1]))
+  if (!internals.ApplyShadows)
   {
     return true;
   }
-  if (!internals.WarnedDelegateSize)
+  const bool matches = viewport[2] == internals.Size[0] && viewport[3] == internals.Size[1];
+  ++(matches ? internals.DrawsAtShadowSize : internals.DrawsAtOtherSizes);
+  if (!matches)
   {
-    vtkWarningMacro(<< "The delegate draws the scene " << viewport[2] << " x " << viewport[3]
-                    << " pixels large, not at the shadows' " << internals.Size[0] << " x "
-                    << internals.Size[1]
-                    << " (a pass that pads or supersamples its image, such as "
-                       "vtkDepthOfFieldPass, vtkGaussianBlurPass or vtkSSAAPass, inside this "
-                       "one): the shadows cannot be placed, and the frame is drawn unshadowed. "
-                       "Put such a pass around this one.");
-    internals.WarnedDelegateSize = true;
+    internals.OtherSize[0] = viewport[2];
+    internals.OtherSize[1] = viewport[3];
   }
-  return false;
+  return matches;
+}
+
+void vtkSoftShadowPass::WarnOfDelegateSize()
+{
+  vtkInternals& internals = *this->Internals;
+  // Passes that draw the scene elsewhere too (vtkShadowMapPass's maps) also draw it at the
+  // shadows' size; a delegate that never does pads or supersamples the frame.
+  if (internals.DrawsAtOtherSizes == 0 || internals.DrawsAtShadowSize > 0 ||
+    internals.WarnedDelegateSize)
+  {
+    return;
+  }
+  vtkWarningMacro(<< "The delegate draws the scene " << internals.OtherSize[0] << " x "
+                  << internals.OtherSize[1] << " pixels large, not at the shadows' "
+                  << internals.Size[0] << " x " << internals.Size[1]
+                  << " (a pass that pads or supersamples its image, such as "
+                     "vtkDepthOfFieldPass, vtkGaussianBlurPass or vtkSSAAPass, inside this one): "
+                     "the shadows cannot be placed, and the frame is drawn unshadowed. Put such "
+                     "a pass around this one.");
+  internals.WarnedDelegateSize = true;
 }
 
 vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()

@@ -449,8 +449,10 @@ private:
   /// and registers for the release of this one's.
   void FollowWindow(vtkOpenGLRenderWindow* window);
   /// Whether the viewport being drawn (x, y, width, height) has the shadows' size, so that the
-  /// LI buffer lines up with it; warns once where a delegate draws at another size.
+  /// LI buffer lines up with it; counts the frame's draws at either.
   bool ViewportMatchesShadows(const int viewport[4]);
+  /// Warns once where the frame's delegate drew receivers only at another size than the shadows'.
+  void WarnOfDelegateSize();
   /// Warns once per prop and problem that a receiver's shader could not be edited.
   void WarnShaderEdit(vtkAbstractMapper* mapper, vtkProp* prop, const std::string& problem);
   void CollectShadowingLights(vtkRenderer* renderer);

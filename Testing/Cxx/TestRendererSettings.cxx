@@ -17,11 +17,16 @@
 #include "penumbraTestHarness.h"
 
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRendererSettingsPass.h"
 #include "vtkSSAAPass.h"
+#include "vtkSequencePass.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -290,6 +295,28 @@ void TestDelegateOfAnotherSize()
   Check(!inside.Rgb.empty() && differing == 0,
     "a delegate drawing at another size: the frame is drawn unshadowed, not misplaced");
   Check(warnings.Count("pads or supersamples") == 1, "a delegate drawing at another size: warned");
+
+  // VTK's own shadow maps inside the pass: its baker draws the scene into maps of their own size,
+  // then the frame at the shadows' size. Not a delegate of another size; but both passes scale
+  // the same light terms, and that is said once.
+  View mapped(FullViewport, true);
+  mapped.Light->SetConeAngle(60.0); // VTK's maps are made for spot and directional lights
+  mapped.Light->SetFocalPoint(0.0, 0.5, 0.0);
+  vtkNew<vtkShadowMapPass> shadowMaps;
+  vtkNew<vtkRenderPassCollection> steps;
+  steps->AddItem(shadowMaps->GetShadowMapBakerPass());
+  steps->AddItem(shadowMaps);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(steps);
+  vtkNew<vtkCameraPass> camera;
+  camera->SetDelegatePass(sequence);
+  mapped.Pass->SetDelegatePass(camera);
+  WarningLog mappedWarnings(mapped.Pass);
+  mapped.Render();
+  mapped.Render();
+  Check(mappedWarnings.Count("pads or supersamples") == 0 &&
+      mappedWarnings.Count("vtkShadowMapPass draws inside this pass") == 1,
+    "VTK's shadow maps inside the pass: one warning that names them, none about the size");
 }
 
 int main()
