@@ -24,6 +24,7 @@ namespace penumbra
 class StageTimes
 {
 public:
+  StageTimes() { this->Gpu.fill(-1.0); }
   /// The stages, in frame order; the same numbers as vtkSoftShadowPass::STAGE_*.
   enum Stage
   {
