@@ -1049,29 +1049,36 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(vtkDataSet* data, const glm:
   {
     return false;
   }
-  auto kept = this->Occupancies.find(data);
-  Occupancy& occupancy = used[data];
-  if (kept != this->Occupancies.end() && kept->second.Time == data->GetMTime())
+  // A dataset that another prop drew this frame has its grid in `used` already.
+  auto taken = used.find(data);
+  if (taken == used.end())
   {
-    occupancy = std::move(kept->second);
-  }
-  else
-  {
-    penumbra::Box bounds;
-    if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
+    auto kept = this->Occupancies.find(data);
+    Occupancy& fresh = used[data];
+    if (kept != this->Occupancies.end() && kept->second.Time == data->GetMTime())
     {
-      used.erase(data);
-      return false;
+      fresh = std::move(kept->second);
     }
-    penumbra::OccupancyGrid grid(bounds);
-    double cell[6];
-    for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+    else
     {
-      data->GetCellBounds(i, cell);
-      grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
+      penumbra::Box bounds;
+      if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
+      {
+        used.erase(data);
+        return false;
+      }
+      penumbra::OccupancyGrid grid(bounds);
+      double cell[6];
+      for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+      {
+        data->GetCellBounds(i, cell);
+        grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
+      }
+      fresh = Occupancy{ data->GetMTime(), grid.Boxes() };
     }
-    occupancy = Occupancy{ data->GetMTime(), grid.Boxes() };
+    taken = used.find(data);
   }
+  const Occupancy& occupancy = taken->second;
   for (const penumbra::Box& box : occupancy.Boxes)
   {
     boxes.push_back(penumbra::TransformedBox(box, dataToWorld));
