@@ -123,11 +123,24 @@ bool ReceiverPlane::Make(const glm::dvec3& origin, const glm::dvec3& normal, Rec
   {
     return false;
   }
+  plane.Origin = origin;
   plane.Normal = normal / length;
-  // The plane's point nearest the world's origin: an origin given far along the plane would
-  // make every in-plane coordinate huge.
-  plane.Origin = glm::dot(origin, plane.Normal) * plane.Normal;
   PlaneBasis(plane.Normal, plane.U, plane.V);
+  return true;
+}
+
+bool ReceiverPlane::MakeNear(
+  const glm::dvec3& origin, const glm::dvec3& normal, const glm::dvec3& near, ReceiverPlane& plane)
+{
+  if (!Make(origin, normal, plane))
+  {
+    return false;
+  }
+  const glm::dvec3 nearest = near - plane.Height(near) * plane.Normal;
+  if (std::isfinite(nearest.x) && std::isfinite(nearest.y) && std::isfinite(nearest.z))
+  {
+    plane.Origin = nearest;
+  }
   return true;
 }
 

@@ -41,9 +41,12 @@ struct VTKPENUMBRAGEOMETRY_EXPORT ReceiverPlane
   glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
   glm::dvec3 U{ 1.0, 0.0, 0.0 }, V{ 0.0, 1.0, 0.0 };
 
-  /// The plane through `origin` with normal `normal` (normalized here), its Origin taken as the
-  /// plane's point nearest the world's origin; false if it has none.
+  /// A plane through `origin` with normal `normal` (normalized here); false if it has none.
   static bool Make(const glm::dvec3& origin, const glm::dvec3& normal, ReceiverPlane& plane);
+  /// The same plane, its Origin taken as its point nearest `near` (the scene), where that is
+  /// finite: an origin given far along the plane would make every in-plane coordinate huge.
+  static bool MakeNear(const glm::dvec3& origin, const glm::dvec3& normal, const glm::dvec3& near,
+    ReceiverPlane& plane);
   double Height(const glm::dvec3& x) const { return glm::dot(this->Normal, x - this->Origin); }
   glm::dvec2 ToPlane(const glm::dvec3& x) const
   {

@@ -10,6 +10,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
+#include "vtkMath.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
@@ -35,8 +36,14 @@ bool PlateauTechnique::FindReceiverPlane(vtkRenderer* renderer, vtkObject* owner
   this->PlaneProp = nullptr;
   if (this->Settings.UseGivenPlane)
   {
+    // Plateau coordinates are floats on the plane: take its origin next to the scene.
+    double bounds[6];
+    renderer->ComputeVisiblePropBounds(bounds);
+    const glm::dvec3 centre = vtkMath::AreBoundsInitialized(bounds)
+      ? glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5
+      : this->Settings.Origin;
     this->HavePlane =
-      ReceiverPlane::Make(this->Settings.Origin, this->Settings.Normal, this->Plane);
+      ReceiverPlane::MakeNear(this->Settings.Origin, this->Settings.Normal, centre, this->Plane);
     if (!this->HavePlane && !this->WarnedNoPlane)
     {
       vtkWarningWithObjectMacro(

@@ -165,17 +165,21 @@ void TestBadInput()
     }
   }
   Check(finite, "grazing light, radii 0 to 1e6: finite vertices, depths in [0, 1]");
-  // A plane given by an origin far along it is the same plane: its points keep small in-plane
-  // coordinates (a user's trial: no plateau at all for an origin of (1e8, 0, 0) or (1e300, 0,
-  // 0) with the normal (0, 1, 0)).
-  for (const double far : { 1e8, 1e300 })
+  // A plane given by an origin far along it is the same plane: taken near the scene, its points
+  // keep small in-plane coordinates (a user's trial: no plateau at all for an origin of (1e8, 0,
+  // 0) or (1e300, 0, 0) with the normal (0, 1, 0)), in a scene far from the world's origin too.
+  for (const glm::dvec3& scene : { glm::dvec3(0.0), glm::dvec3(5e5, 0, 4e6) })
   {
-    ReceiverPlane plane;
-    const bool made = ReceiverPlane::Make(glm::dvec3(far, 0, 0), glm::dvec3(0, 2, 0), plane);
-    const glm::dvec2 uv = plane.ToPlane(glm::dvec3(1, 0, 2));
-    Check(made && std::abs(plane.Height(glm::dvec3(1, 3, 2)) - 3.0) < 1e-12 &&
-        std::abs(glm::length(uv) - std::sqrt(5.0)) < 1e-9,
-      "a receiver plane's origin far along the plane: the same plane, small coordinates");
+    for (const double far : { 1e8, 1e300 })
+    {
+      ReceiverPlane plane;
+      const bool made = ReceiverPlane::MakeNear(
+        glm::dvec3(far, 0, 0), glm::dvec3(0, 2, 0), scene + glm::dvec3(0, 7, 0), plane);
+      const glm::dvec2 uv = plane.ToPlane(scene + glm::dvec3(1, 0, 2));
+      Check(made && std::abs(plane.Height(scene + glm::dvec3(1, 3, 2)) - 3.0) < 1e-6 &&
+          std::abs(glm::length(uv) - std::sqrt(5.0)) < 1e-6,
+        "a receiver plane's origin far along the plane: the same plane, small coordinates");
+    }
   }
   Check(std::abs(PlateauIntensity(0.5, PlateauFalloff::Sinusoidal) - 0.5) < 1e-12 &&
       PlateauIntensity(0.25, PlateauFalloff::Sinusoidal) < 0.25 &&
