@@ -5,12 +5,12 @@
 
 #include "vtkActor.h"
 #include "vtkMapper.h"
+#include "vtkMath.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
-#include "vtkMath.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
