@@ -48,31 +48,12 @@ bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)
   return true;
 }
 
-/// The face to cull from `caster`'s depth (GL_BACK or GL_FRONT), or 0 to draw both: a closed
-/// mesh whose pieces all wind one way (MeshCache::OutwardWinding) and whose box lies wholly
-/// beyond the near plane is seen from outside only, so its faces turned away from the eye are
-/// hidden behind its own.
-unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster)
+bool HasCustomShaders(vtkActor* actor)
 {
-  const int winding = caster.Mesh->OutwardWinding();
-  if (winding == 0)
-  {
-    return 0;
-  }
-  if (!BoxBeyondNearPlane(caster.WorldMin, caster.WorldMax, frame.WorldToClip))
-  {
-    return 0; // the near plane cuts it, or the eye is inside its box
-  }
-  // A camera's projection has a negative determinant: with it, counter-clockwise outward faces
-  // stay counter-clockwise in the window (GL's front faces, which VTK never changes). A mirrored
-  // actor or an inward winding turns them.
-  const double determinant = glm::determinant(frame.WorldToClip * caster.ObjectToWorld);
-  if (!std::isfinite(determinant) || determinant == 0.0)
-  {
-    return 0;
-  }
-  const bool turned = (determinant > 0.0) != (winding < 0);
-  return turned ? GL_FRONT : GL_BACK;
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  return shaders &&
+    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
+      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0);
 }
 
 /// Whether VTK draws nothing of `data` but its polygons' and strips' triangles.
@@ -100,15 +81,30 @@ bool OnlySurfaceLeaves(vtkDataObject* input)
   }
   return true;
 }
-
-bool HasCustomShaders(vtkActor* actor)
-{
-  vtkShaderProperty* shaders = actor->GetShaderProperty();
-  return shaders &&
-    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
-      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0);
-}
 } // namespace
+
+unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster)
+{
+  const int winding = caster.Mesh->OutwardWinding();
+  if (winding == 0)
+  {
+    return 0;
+  }
+  if (!BoxBeyondNearPlane(caster.WorldMin, caster.WorldMax, frame.WorldToClip))
+  {
+    return 0; // the near plane cuts it, or the eye is inside its box
+  }
+  // A camera's projection has a negative determinant: with it, counter-clockwise outward faces
+  // stay counter-clockwise in the window (GL's front faces, which VTK never changes). A mirrored
+  // actor or an inward winding turns them.
+  const double determinant = glm::determinant(frame.WorldToClip * caster.ObjectToWorld);
+  if (!std::isfinite(determinant) || determinant == 0.0)
+  {
+    return 0;
+  }
+  const bool turned = (determinant > 0.0) != (winding < 0);
+  return turned ? GL_FRONT : GL_BACK;
+}
 
 bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
 {

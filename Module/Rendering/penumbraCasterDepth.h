@@ -32,6 +32,12 @@ namespace penumbra
 struct CasterCache;
 struct ShadowFrame;
 
+/// The faces of `caster` hidden behind its own from the eye, which its depth may cull: GL_BACK
+/// (or GL_FRONT where a mirroring matrix or an inward winding turns them) for a closed mesh whose
+/// pieces all wind one way (CasterTopology::OutwardWinding) and whose box lies wholly beyond the
+/// near plane; 0 otherwise (the near plane cuts it, or the eye is inside its box).
+unsigned int HiddenFace(const ShadowFrame& frame, CasterCache& caster);
+
 class CasterDepth
 {
 public:

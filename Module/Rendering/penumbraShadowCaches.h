@@ -234,8 +234,8 @@ struct CasterCache
   bool Translucent() const { return this->Opacity < 1.0; }
   /// Not in the depth pass (VTK draws it translucent): points behind it are seen through it.
   bool SeenThrough = false;
-  /// VTK culls its front or back faces: points behind those are seen through them.
-  bool FacesCulled = false;
+  /// The faces VTK culls as it draws it: GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, or 0.
+  unsigned int CulledFaces = 0;
   /// Per light and light sample (one sample for hard shadows).
   std::map<std::pair<vtkLight*, int>, VolumeCache> Volumes;
   std::map<vtkLight*, WedgeCache> Wedges;

@@ -1,5 +1,6 @@
 #include "penumbraShadowVolumeRenderer.h"
 
+#include "penumbraCasterDepth.h"
 #include "penumbraShadowTechnique.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -216,8 +217,12 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
   }
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkShaderProgram* program = this->Program;
+  // Culling only the faces hidden behind the caster's own (back faces of a closed mesh seen from
+  // outside) shows nothing through them.
+  const bool seenThroughCulledFaces =
+    caster.CulledFaces != 0 && caster.CulledFaces != HiddenFace(frame, caster);
   const VolumeDrawPlan plan = PlanVolumeDraw(caster.WorldMin, caster.WorldMax, sample,
-    frame.NearCorners, caster.SeenThrough, caster.FacesCulled);
+    frame.NearCorners, caster.SeenThrough, seenThroughCulledFaces);
   if (plan.LightCap) // z-fail draws it too, beside the cap at infinity
   {
     volume.EnsureCaps(*caster.Mesh);

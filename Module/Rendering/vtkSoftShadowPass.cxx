@@ -1274,7 +1274,8 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
     caster->Opacity = surface.Opacity;
     caster->SeenThrough = surface.SeenThrough;
     vtkProperty* property = surface.Actor->GetProperty();
-    caster->FacesCulled = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
+    const bool front = property->GetFrontfaceCulling(), back = property->GetBackfaceCulling();
+    caster->CulledFaces = front && back ? GL_FRONT_AND_BACK : front ? GL_FRONT : back ? GL_BACK : 0;
     caster->Culled.clear();
     const penumbra::CasterTopology& topo = mesh->Topology;
     caster->ObjectToWorld = surface.ObjectToWorld * glm::translate(glm::dmat4(1.0), topo.Origin);

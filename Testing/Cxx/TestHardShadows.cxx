@@ -339,6 +339,15 @@ void TestFaceCulledCasters()
     Check(under >= 0.99, method.first + ": a box seen through a culled ground is in its shadow");
     if (method.first == "hard")
     {
+      // Back faces of a closed mesh seen from outside are hidden behind its own: culling them
+      // shows nothing through, and its volume stays z-pass.
+      Scene closed(320, 240);
+      closed.Ground();
+      closed.Sphere(0, 1, 0, 0.8)->GetProperty()->BackfaceCullingOn();
+      closed.Camera(3, 4, 7, 0, 1, 0);
+      CheckAgainstTruth("a back-culled closed sphere", closed.Render());
+      Check(closed.Pass->GetNumberOfZFailVolumes() == 0,
+        "a back-culled closed sphere seen from outside keeps z-pass");
       // The truth's eye rays pass culled faces too, its shadow rays do not.
       CheckAgainstTruth("the inside of a front-culled sphere",
         CompareWithTruth(sphere.Window, sphere.Renderer, sphere.Pass, 0), 0.9);
