@@ -225,13 +225,17 @@ bool IsConvex(
   {
     normal += glm::cross(corners[k] - corners[0], corners[k + 1] - corners[0]);
   }
+  if (!(glm::dot(normal, normal) > 0.0))
+  {
+    return false; // no area, or not finite
+  }
   for (std::size_t k = 0; k < n; ++k)
   {
     const glm::dvec3& a = corners[k];
     const glm::dvec3& b = corners[(k + 1) % n];
     const glm::dvec3& c = corners[(k + 2) % n];
-    // Not finite, collinear or turning back: left to the ear cut.
-    if (!(glm::dot(glm::cross(b - a, c - b), normal) > 0.0))
+    // Not finite or turning back: left to the ear cut. A straight corner (collinear) is fine.
+    if (!(glm::dot(glm::cross(b - a, c - b), normal) >= 0.0))
     {
       return false;
     }
@@ -943,7 +947,8 @@ void BuildFromSoup(TopologyScratch& scratch, const Points& points, const Triangl
   topo.Report = report;
 }
 
-/// Appends the triangles of `input`'s polygons (ear-cut beyond three corners) and strips.
+/// Appends the triangles of `input`'s polygons (TriangulatePolygon: VTK's fan where convex, else
+/// ear-cut) and strips.
 void TriangulateCells(
   vtkPolyData* input, std::vector<glm::uvec3>& triangles, TopologyReport& report)
 {

@@ -78,7 +78,9 @@ private:
 /// input's producer as VTK's polydata mapper runs it while it draws (vtkOpenGLPolyDataMapper's
 /// RenderPiece), before anything of the frame's shadows reads the props' data or bounds: a source
 /// changed since the last frame has not run yet, and a time step requested through a mapper's
-/// input information (UPDATE_TIME_STEP) runs only so, not through the mapper's own Update.
+/// input information (UPDATE_TIME_STEP) runs only so, not through the mapper's own Update. Other
+/// mappers may not run it (vtkDataSetMapper draws through a surface filter of its own), so with
+/// the pass such a step is drawn where VTK alone may keep an older one.
 void UpdateMapperInputs(vtkRenderer* renderer);
 
 } // namespace penumbra

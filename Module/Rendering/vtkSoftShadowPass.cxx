@@ -954,6 +954,10 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
       {
         blocks.push_back({ penumbra::TransformedBox(box, toWorld), data, toWorld });
       }
+      if (blocks.size() > MaxBlockBoxes)
+      {
+        break;
+      }
     }
     if (blocks.size() <= MaxBlockBoxes)
     {
