@@ -20,3 +20,29 @@ def median_frame_ms(window, renderer, frames, degrees, turn_back=False):
         camera.Azimuth(-degrees * frames)
         renderer.ResetCameraClippingRange()
     return statistics.median(times)
+
+
+def depth_source_rounds(window, renderer, shadows, rounds, frames):
+    """Prints `rounds` rounds of the unshadowed frame against `shadows` with its depth drawn from
+    the caster meshes and by VTK (DepthFromCasterMeshes on and off): medians of `frames` frames
+    with the camera turning, and the depth stage of one more frame (CollectStageTimes)."""
+    def run(with_pass, depth_from_meshes=True):
+        renderer.SetPass(shadows if with_pass else None)
+        shadows.SetDepthFromCasterMeshes(depth_from_meshes)
+        window.Render()  # warm-up: shader builds, topology, uploads
+        median = median_frame_ms(window, renderer, frames, 0.5)
+        if not with_pass:
+            return median, None, 0
+        shadows.CollectStageTimesOn()
+        window.Render()
+        shadows.CollectStageTimesOff()
+        return (median, shadows.GetStageCPUMilliseconds(shadows.STAGE_DEPTH),
+                shadows.GetNumberOfPropsWithDepthFromMeshes())
+
+    for round_index in range(rounds):
+        plain, _, _ = run(False)
+        meshes, meshes_depth, count = run(True, True)
+        vtk, vtk_depth, _ = run(True, False)
+        print(f"  round {round_index + 1}: none {plain:.1f} ms; depth from meshes {meshes:.1f} ms"
+              f" ({meshes / plain:.2f}x, depth stage {meshes_depth:.1f} ms, {count} props);"
+              f" VTK's depth {vtk:.1f} ms ({vtk / plain:.2f}x, depth stage {vtk_depth:.1f} ms)")

@@ -20,7 +20,7 @@ from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
 import penumbra
-from frame_timing import median_frame_ms
+from frame_timing import depth_source_rounds
 
 
 def main():
@@ -64,28 +64,8 @@ def main():
     shadows = penumbra.vtkSoftShadowPass()
     shadows.SetMethodToHardVolumes()
 
-    def run(with_pass, depth_from_meshes=True):
-        renderer.SetPass(shadows if with_pass else None)
-        shadows.SetDepthFromCasterMeshes(depth_from_meshes)
-        window.Render()  # warm-up: shader builds, topology, uploads
-        median = median_frame_ms(window, renderer, args.frames, 0.5)
-        if not with_pass:
-            return median, None, 0
-        shadows.CollectStageTimesOn()
-        window.Render()
-        shadows.CollectStageTimesOff()
-        return (median, shadows.GetStageCPUMilliseconds(shadows.STAGE_DEPTH),
-                shadows.GetNumberOfPropsWithDepthFromMeshes())
-
-    quads = args.resolution * args.resolution
-    print(f"{quads} warped quads, hard shadows, 1024x768")
-    for round_index in range(args.rounds):
-        plain, _, _ = run(False)
-        meshes, meshes_depth, count = run(True, True)
-        vtk, vtk_depth, _ = run(True, False)
-        print(f"  round {round_index + 1}: none {plain:.1f} ms; depth from the mesh {meshes:.1f} ms"
-              f" ({meshes / plain:.2f}x, depth stage {meshes_depth:.1f} ms, {count} props);"
-              f" VTK's depth {vtk:.1f} ms ({vtk / plain:.2f}x, depth stage {vtk_depth:.1f} ms)")
+    print(f"{args.resolution ** 2} warped quads, hard shadows, 1024x768")
+    depth_source_rounds(window, renderer, shadows, args.rounds, args.frames)
 
 
 if __name__ == "__main__":
