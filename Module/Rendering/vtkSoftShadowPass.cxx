@@ -927,8 +927,8 @@ constexpr std::size_t MaxBlockBoxes = 4096;
 
 /// Adds the boxes of what `part` (a prop, or an assembly's part) draws at `toWorld` (its
 /// matrix, or its path's): one per block of a composite mapper's data, up to MaxBlockBoxes
-/// (hidden blocks too: they only widen the range), else its bounds in world space as VTK gives
-/// them (`worldBounds`), grown by `reach`.
+/// (hidden blocks too: they only widen the range), else, or where a block's bounds are not
+/// finite, its bounds in world space as VTK gives them (`worldBounds`), grown by `reach`.
 PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const double* worldBounds,
   double reach, std::vector<PropBox>& boxes)
 {
@@ -940,6 +940,7 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
   if (tree)
   {
     std::vector<PropBox> blocks;
+    bool finite = true;
     for (vtkDataObject* leaf : vtk::Range(tree))
     {
       auto* data = vtkDataSet::SafeDownCast(leaf);
@@ -948,7 +949,8 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
         data ? ExtendByBounds(box, data->GetBounds(), 0.0) : PropExtent::None;
       if (extent == PropExtent::Unknown)
       {
-        return extent;
+        finite = false; // perhaps a hidden block's: VTK's bounds of the visible ones decide
+        break;
       }
       if (extent == PropExtent::Finite)
       {
@@ -959,7 +961,7 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
         break;
       }
     }
-    if (blocks.size() <= MaxBlockBoxes)
+    if (finite && blocks.size() <= MaxBlockBoxes)
     {
       boxes.insert(boxes.end(), blocks.begin(), blocks.end());
       return blocks.empty() ? PropExtent::None : PropExtent::Finite;
