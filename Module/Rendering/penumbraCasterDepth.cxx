@@ -63,8 +63,8 @@ bool OnlySurfaceCells(vtkPolyData* data)
     !data->GetCellGhostArray();
 }
 
-/// The same for a composite mapper's input: every leaf, drawn or hidden, a polydata of surface
-/// cells only.
+/// The same for a composite mapper's input: every leaf at any depth, drawn or hidden, a polydata
+/// of surface cells only (empty blocks draw nothing).
 bool OnlySurfaceLeaves(vtkDataObject* input)
 {
   auto tree = vtkDataObjectTree::SafeDownCast(input);
@@ -72,7 +72,7 @@ bool OnlySurfaceLeaves(vtkDataObject* input)
   {
     return OnlySurfaceCells(vtkPolyData::SafeDownCast(input));
   }
-  for (vtkDataObject* leaf : vtk::Range(tree))
+  for (vtkDataObject* leaf : vtk::Range(tree, EveryLeaf()))
   {
     if (!OnlySurfaceCells(vtkPolyData::SafeDownCast(leaf)))
     {

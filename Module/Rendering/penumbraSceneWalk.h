@@ -23,6 +23,7 @@
 #include "penumbraClippedSurfaces.h"
 #include "penumbraPropWarnings.h"
 
+#include "vtkDataObjectTreeRange.h"
 #include "vtkSmartPointer.h"
 
 #include <glm/glm.hpp>
@@ -76,6 +77,14 @@ struct DrawnSurface
 /// parts only when VTK draws them, so the parts are where VTK last drew them: the pass walks the
 /// casters after its depth pass, in which VTK places them for the frame.
 std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
+
+/// What to visit of composite data for its datasets: every leaf at any depth, none empty
+/// (vtk::Range's default visits the first level only, composite children and empty ones too).
+inline vtk::DataObjectTreeOptions EveryLeaf()
+{
+  return vtk::DataObjectTreeOptions::TraverseSubTree | vtk::DataObjectTreeOptions::VisitOnlyLeaves |
+    vtk::DataObjectTreeOptions::SkipEmptyNodes;
+}
 
 /// Whether `object` is an instance of `className` itself, not of a subclass (which may draw
 /// otherwise).

@@ -941,7 +941,7 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
   {
     std::vector<PropBox> blocks;
     bool finite = true;
-    for (vtkDataObject* leaf : vtk::Range(tree))
+    for (vtkDataObject* leaf : vtk::Range(tree, penumbra::EveryLeaf()))
     {
       auto* data = vtkDataSet::SafeDownCast(leaf);
       penumbra::Box box;

@@ -241,20 +241,22 @@ void TestDepthFromCasterMeshes()
   scene.Box(1.4, 0.5, 0.6, 0.7, 1.0, 0.7);
   scene.Sphere(-0.3, 0.4, 1.6, 0.4)->GetProperty()->EdgeVisibilityOn();
   vtkSoftShadowPass::SetCastsShadows(scene.Sphere(1.0, 0.3, -1.4, 0.3), false);
-  // Composite data: a sphere block drawn and one hidden, whose depth VTK does not draw either.
+  // Composite data: a sphere block drawn, nested one level down, an empty block and a sphere
+  // block hidden, whose depth VTK does not draw either.
   vtkNew<vtkMultiBlockDataSet> blocks;
-  for (int block = 0; block < 2; ++block)
-  {
-    vtkSmartPointer<vtkSphereSource> sphere = block == 0
-      ? SphereSource(-1.7, 0.35, -1.3, 0.35, 32, 16)
-      : SphereSource(0, 0.5, 2.4, 0.4, 32, 16);
-    sphere->Update();
-    blocks->SetBlock(block, sphere->GetOutput());
-  }
+  vtkNew<vtkMultiBlockDataSet> nested;
+  vtkSmartPointer<vtkSphereSource> drawn = SphereSource(-1.7, 0.35, -1.3, 0.35, 32, 16);
+  vtkSmartPointer<vtkSphereSource> hidden = SphereSource(0, 0.5, 2.4, 0.4, 32, 16);
+  drawn->Update();
+  hidden->Update();
+  nested->SetBlock(0, drawn->GetOutput());
+  blocks->SetBlock(0, nested);
+  blocks->SetBlock(1, nullptr);
+  blocks->SetBlock(2, hidden->GetOutput());
   vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
   compositeMapper->SetInputDataObject(blocks);
   vtkNew<vtkCompositeDataDisplayAttributes> attributes;
-  attributes->SetBlockVisibility(blocks->GetBlock(1), false);
+  attributes->SetBlockVisibility(blocks->GetBlock(2), false);
   compositeMapper->SetCompositeDataDisplayAttributes(attributes);
   vtkNew<vtkActor> composite;
   composite->SetMapper(compositeMapper);

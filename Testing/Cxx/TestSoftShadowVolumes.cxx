@@ -318,16 +318,20 @@ void TestAssemblyBehindTheEye(const SceneMaker& make)
 void TestCompositeFarApart()
 {
   SceneWindow view(MakeScene("composite blocks far apart", [](Scene&) {}));
+  // Each copy a multiblock of its own, after an empty block: blocks at any depth count.
   vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, nullptr);
   for (double offset : { 0.0, 1000.0, 2000.0 })
   {
+    vtkNew<vtkMultiBlockDataSet> copy;
     for (vtkSmartPointer<vtkPolyDataAlgorithm> caster :
       { vtkSmartPointer<vtkPolyDataAlgorithm>(SphereSource(offset - 0.8, 1.0, 0.0, 0.7, 48, 24)),
         vtkSmartPointer<vtkPolyDataAlgorithm>(BoxSource(offset + 1.2, 0.6, 0.5, 0.8, 1.2, 0.8)) })
     {
       caster->Update();
-      blocks->SetBlock(blocks->GetNumberOfBlocks(), caster->GetOutput());
+      copy->SetBlock(copy->GetNumberOfBlocks(), caster->GetOutput());
     }
+    blocks->SetBlock(blocks->GetNumberOfBlocks(), copy);
   }
   vtkNew<vtkCompositePolyDataMapper2> mapper;
   mapper->SetInputDataObject(blocks);
