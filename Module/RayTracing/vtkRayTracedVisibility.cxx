@@ -1197,6 +1197,10 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     }
     auto points = vtkDataSet::SafeDownCast(leaf.first);
     const double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
+    if (blocks && !vtkPolyData::SafeDownCast(leaf.first))
+    {
+      continue; // vtkCompositePolyDataMapper2 draws no other datasets
+    }
     if (!glyphs)
     {
       CollectDataSet(leaf.first, matrix, casts, leafOpacity, meshes, clipPlanes);

@@ -528,7 +528,8 @@ void SceneWalk::Blocks(vtkActor* actor, bool composite,
   const std::size_t index = part++;
   // A composite mapper draws each block by its opacity; otherwise the actor decides.
   const DrawnOpacity drawn = composite ? BlockOpacity(actor, opacity) : ActorOpacity(actor);
-  if (!visible || !(opacity > 0.0))
+  // vtkCompositePolyDataMapper2 draws its polydata blocks only: other datasets show nothing.
+  if (!visible || !(opacity > 0.0) || (composite && !vtkPolyData::SafeDownCast(node)))
   {
     return;
   }
