@@ -1056,21 +1056,21 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(vtkDataSet* data, const glm:
     return false;
   }
   // A dataset that another prop drew this frame has its grid in `used` already.
-  auto taken = used.find(data);
-  if (taken == used.end())
+  auto taken = used.try_emplace(data);
+  Occupancy& occupancy = taken.first->second;
+  if (taken.second)
   {
     auto kept = this->Occupancies.find(data);
-    Occupancy& fresh = used[data];
     if (kept != this->Occupancies.end() && kept->second.Time == data->GetMTime())
     {
-      fresh = std::move(kept->second);
+      occupancy = std::move(kept->second);
     }
     else
     {
       penumbra::Box bounds;
       if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
       {
-        used.erase(data);
+        used.erase(taken.first);
         return false;
       }
       penumbra::OccupancyGrid grid(bounds);
@@ -1080,11 +1080,9 @@ bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(vtkDataSet* data, const glm:
         data->GetCellBounds(i, cell);
         grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
       }
-      fresh = Occupancy{ data->GetMTime(), grid.Boxes() };
+      occupancy = Occupancy{ data->GetMTime(), grid.Boxes() };
     }
-    taken = used.find(data);
   }
-  const Occupancy& occupancy = taken->second;
   for (const penumbra::Box& box : occupancy.Boxes)
   {
     boxes.push_back(penumbra::TransformedBox(box, dataToWorld));
