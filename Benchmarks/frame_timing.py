@@ -22,10 +22,25 @@ def median_frame_ms(window, renderer, frames, degrees, turn_back=False):
     return statistics.median(times)
 
 
-def depth_source_rounds(window, renderer, shadows, rounds, frames):
-    """Prints `rounds` rounds of the unshadowed frame against `shadows` with its depth drawn from
-    the caster meshes and by VTK (DepthFromCasterMeshes on and off): medians of `frames` frames
-    with the camera turning, and the depth stage of one more frame (CollectStageTimes)."""
+def depth_source_rounds(renderer, eye, rounds, frames):
+    """Prints `rounds` rounds of `renderer`'s unshadowed frame against hard shadows with their
+    depth drawn from the caster meshes and by VTK (DepthFromCasterMeshes on and off), at
+    1024x768 with the camera at `eye` looking at the origin: medians of `frames` frames with the
+    camera turning, and the depth stage of one more frame (CollectStageTimes)."""
+    import penumbra
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow
+
+    window = vtkRenderWindow()
+    window.SetSize(1024, 768)
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(eye)
+    camera.SetFocalPoint(0, 0, 0)
+    renderer.ResetCameraClippingRange()
+    shadows = penumbra.vtkSoftShadowPass()
+    shadows.SetMethodToHardVolumes()
+
     def run(with_pass, depth_from_meshes=True):
         renderer.SetPass(shadows if with_pass else None)
         shadows.SetDepthFromCasterMeshes(depth_from_meshes)

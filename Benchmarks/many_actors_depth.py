@@ -19,7 +19,7 @@ from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
 
 import penumbra
@@ -71,20 +71,10 @@ def main():
             actor.SetPosition(position)
             renderer.AddActor(actor)
     penumbra.add_light(renderer, (3, 3, 25))
-    window = vtkRenderWindow()
-    window.SetSize(1024, 768)
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, -30, 25)
-    camera.SetFocalPoint(0, 0, 0)
-    renderer.ResetCameraClippingRange()
-    shadows = penumbra.vtkSoftShadowPass()
-    shadows.SetMethodToHardVolumes()
 
     kind = "blocks of one composite actor" if args.composite else "actors"
     print(f"{args.actors} spheres as {kind} over a ground, hard shadows, 1024x768")
-    depth_source_rounds(window, renderer, shadows, args.rounds, args.frames)
+    depth_source_rounds(renderer, (0, -30, 25), args.rounds, args.frames)
 
 
 if __name__ == "__main__":

@@ -17,7 +17,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersGeneral import vtkWarpScalar
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 import penumbra
 from frame_timing import depth_source_rounds
@@ -53,19 +53,9 @@ def main():
     renderer = vtkRenderer()
     renderer.AddActor(actor)
     penumbra.add_light(renderer, (-6, -4, 12))
-    window = vtkRenderWindow()
-    window.SetSize(1024, 768)
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, -22, 16)
-    camera.SetFocalPoint(0, 0, 0)
-    renderer.ResetCameraClippingRange()
-    shadows = penumbra.vtkSoftShadowPass()
-    shadows.SetMethodToHardVolumes()
 
     print(f"{args.resolution ** 2} warped quads, hard shadows, 1024x768")
-    depth_source_rounds(window, renderer, shadows, args.rounds, args.frames)
+    depth_source_rounds(renderer, (0, -22, 16), args.rounds, args.frames)
 
 
 if __name__ == "__main__":
