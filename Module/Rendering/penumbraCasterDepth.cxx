@@ -48,14 +48,6 @@ bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)
   return true;
 }
 
-bool HasCustomShaders(vtkActor* actor)
-{
-  vtkShaderProperty* shaders = actor->GetShaderProperty();
-  return shaders &&
-    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
-      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0);
-}
-
 /// Whether VTK draws nothing of `data` but its polygons' and strips' triangles.
 bool OnlySurfaceCells(vtkPolyData* data)
 {

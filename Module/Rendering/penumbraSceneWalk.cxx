@@ -43,6 +43,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
 #include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolume.h"
@@ -215,6 +216,14 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
 bool IsExactly(vtkObject* object, const char* className)
 {
   return object && std::strcmp(object->GetClassName(), className) == 0;
+}
+
+bool HasCustomShaders(vtkActor* actor)
+{
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  return shaders &&
+    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
+      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0);
 }
 
 bool OutsideTheShadows(vtkProp* prop)

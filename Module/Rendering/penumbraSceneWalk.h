@@ -90,6 +90,9 @@ inline vtk::DataObjectTreeOptions EveryLeaf()
 /// otherwise).
 bool IsExactly(vtkObject* object, const char* className);
 
+/// Whether `actor`'s shader property holds shader code or replacements of the user's.
+bool HasCustomShaders(vtkActor* actor);
+
 /// Whether `prop` lies outside everything the shadows depend on: a prop that is neither a 3D prop
 /// nor a prop assembly (a 2D actor, a widget's representation, a caption's 3D leader) draws
 /// through actors of its own that the pass never sees, so it casts nothing and VTK draws it

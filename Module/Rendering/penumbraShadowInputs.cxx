@@ -13,6 +13,8 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObject.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeRange.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
@@ -21,8 +23,10 @@
 #include "vtkLODProp3D.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -55,6 +59,109 @@ vtkAbstractMapper* MapperOf(vtkProp* leaf)
     return slice->GetMapper();
   }
   return nullptr;
+}
+
+/// vtkOpenGLPolyDataMapper's shader code and replacements set through its deprecated API, which
+/// its time records and no getter shows (the member is protected; reached through a derived
+/// class's pointer to it).
+struct LegacyShaders : vtkOpenGLPolyDataMapper
+{
+  static bool Of(vtkOpenGLPolyDataMapper* mapper)
+  {
+    return mapper->*(&LegacyShaders::LegacyShaderProperty) != nullptr;
+  }
+};
+
+/// What of an actor's look can change its shadows or the depth they are drawn against: whether
+/// VTK draws it opaque or seen through and by what opacity, what of it VTK draws and how wide
+/// (representation, culling, edges, line widths and point sizes), its lighting and its
+/// textures. Colours, lighting coefficients and PBR terms change neither, so changing only them
+/// reuses the shadows; the receivers' shading is VTK's own draw, done every frame.
+void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
+{
+  // Colours with alpha (scalars, a lookup table, a texture) make an actor translucent.
+  inputs.Add(
+    static_cast<double>(actor->HasOpaqueGeometry() + 2 * actor->HasTranslucentPolygonalGeometry()));
+  inputs.Add(static_cast<double>(actor->GetForceOpaque() + 2 * actor->GetForceTranslucent()));
+  for (vtkProperty* property : { actor->GetProperty(), actor->GetBackfaceProperty() })
+  {
+    inputs.Add(property);
+    if (!property)
+    {
+      continue;
+    }
+    inputs.Add(glm::dvec4(property->GetOpacity(), property->GetRepresentation(),
+      property->GetBackfaceCulling() + 2 * property->GetFrontfaceCulling(),
+      property->GetLighting()));
+    inputs.Add(glm::dvec4(property->GetLineWidth(), property->GetPointSize(),
+      property->GetEdgeVisibility() + 2 * property->GetVertexVisibility(),
+      property->GetRenderLinesAsTubes() + 2 * property->GetRenderPointsAsSpheres()));
+    for (const auto& named : property->GetAllTextures())
+    {
+      inputs.Add(named.second);
+      inputs.AddTime(named.second->GetMTime());
+    }
+  }
+  vtkTexture* texture = actor->GetTexture();
+  inputs.Add(texture);
+  inputs.AddTime(texture ? texture->GetMTime() : 0);
+}
+
+/// What of `mapper` can change the shape or depth VTK draws, for the mappers whose settings are
+/// known (VTK 9.1's polydata, composite polydata and dataset mappers, without shader code of
+/// their own or the actor's): their time moves with colour settings too (scalar range, lookup
+/// table, colour array), which change nothing of the shadows but translucency, recorded with
+/// the actor (AddDrawnLook). Returns false for any other mapper: its time is recorded instead.
+bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper, vtkActor* actor)
+{
+  auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  const bool known = IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
+    IsExactly(mapper, "vtkCompositePolyDataMapper2") || IsExactly(mapper, "vtkDataSetMapper");
+  if (!known || HasCustomShaders(actor) || (polyMapper && LegacyShaders::Of(polyMapper)))
+  {
+    return false;
+  }
+  double polygon[2], line[2], point;
+  mapper->GetRelativeCoincidentTopologyPolygonOffsetParameters(polygon[0], polygon[1]);
+  mapper->GetRelativeCoincidentTopologyLineOffsetParameters(line[0], line[1]);
+  mapper->GetRelativeCoincidentTopologyPointOffsetParameter(point);
+  inputs.Add(glm::dvec4(polygon[0], polygon[1], line[0], line[1]));
+  inputs.Add(glm::dvec4(
+    point, mapper->GetStatic(), polyMapper ? polyMapper->GetVBOShiftScaleMethod() : -1, 0.0));
+  if (auto pieces = vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    inputs.Add(glm::dvec4(pieces->GetPiece(), pieces->GetNumberOfPieces(),
+      pieces->GetNumberOfSubPieces(), pieces->GetGhostLevel()));
+    inputs.Add(static_cast<double>(pieces->GetSeamlessU() + 2 * pieces->GetSeamlessV()));
+  }
+  vtkPlaneCollection* planes = mapper->GetClippingPlanes();
+  inputs.Add(planes);
+  inputs.AddTime(planes ? planes->GetMTime() : 0); // planes added or removed
+  return true;
+}
+
+/// Every node's visibility and opacity where `blocks` sets one, as the composite mappers read
+/// them (the nearest node that sets one decides); block colours change no shadow.
+void AddBlockShapes(
+  ShadowInputs& inputs, vtkCompositeDataDisplayAttributes* blocks, vtkDataObject* data)
+{
+  inputs.Add(blocks);
+  auto tree = vtkDataObjectTree::SafeDownCast(data);
+  if (!blocks || !tree)
+  {
+    return;
+  }
+  const auto addNode = [&](vtkDataObject* node)
+  {
+    inputs.Add(node);
+    inputs.Add(blocks->HasBlockVisibility(node) ? blocks->GetBlockVisibility(node) : -1.0);
+    inputs.Add(blocks->HasBlockOpacity(node) ? blocks->GetBlockOpacity(node) : -1.0);
+  };
+  addNode(tree);
+  for (vtkDataObject* node : vtk::Range(tree, vtk::DataObjectTreeOptions::TraverseSubTree))
+  {
+    addNode(node);
+  }
 }
 
 void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
@@ -207,24 +314,24 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   this->Add(static_cast<double>(leaf->GetVisibility()));
   AddShadowKeys(*this, leaf);
   // An assembly modifies its parts as it draws them (vtkProp3D::PokeMatrix): a part's time moves
-  // every frame, so its parts are recorded by what they are made of instead.
+  // every frame, so its parts are recorded by what they are made of instead. A plain actor's
+  // time moves with its property's colours too: its look is recorded by value.
+  auto actor = vtkActor::SafeDownCast(leaf);
+  const bool lookByValue = actor && (part || IsExactly(actor, "vtkOpenGLActor"));
   if (!part)
   {
-    this->AddTime(leaf->GetMTime());
+    this->AddTime(lookByValue ? actor->vtkProp3D::GetMTime() : leaf->GetMTime());
   }
   if (auto prop3D = vtkProp3D::SafeDownCast(leaf))
   {
     // Values: a user transform or matrix may change without the prop's time moving.
     this->Add(glm::make_mat4(pathMatrix ? pathMatrix : prop3D->GetMatrix()->GetData()));
   }
-  if (auto actor = vtkActor::SafeDownCast(leaf))
+  if (actor)
   {
-    if (part)
+    if (lookByValue)
     {
-      this->AddTime(actor->GetProperty()->GetMTime());
-      this->AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
-      this->Add(static_cast<double>(actor->GetForceOpaque() + 2 * actor->GetForceTranslucent()));
-      this->AddTime(actor->GetTexture() ? actor->GetTexture()->GetMTime() : 0);
+      AddDrawnLook(*this, actor);
     }
     // The texture's alpha makes the actor translucent, and its image can change (edited in
     // place) without the texture's time or the actor's moving.
@@ -251,7 +358,10 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
     return false; // its observer may move vertices through uniforms, frame by frame
   }
   this->Add(mapper);
-  this->AddTime(mapper->GetMTime());
+  if (!lookByValue || !AddDrawnShape(*this, vtkMapper::SafeDownCast(mapper), actor))
+  {
+    this->AddTime(mapper->GetMTime());
+  }
   if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
   {
     // The collection's time does not follow its planes'.
@@ -264,17 +374,12 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   }
   if (auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
   {
-    if (vtkCompositeDataDisplayAttributes* blocks = composite->GetCompositeDataDisplayAttributes())
-    {
-      this->AddTime(blocks->GetMTime());
-    }
+    AddBlockShapes(
+      *this, composite->GetCompositeDataDisplayAttributes(), composite->GetInputDataObject(0, 0));
   }
   if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
   {
-    if (vtkCompositeDataDisplayAttributes* blocks = glyphs->GetBlockAttributes())
-    {
-      this->AddTime(blocks->GetMTime());
-    }
+    AddBlockShapes(*this, glyphs->GetBlockAttributes(), glyphs->GetInputDataObject(0, 0));
   }
   // The inputs are up to date (UpdateMapperInputs).
   for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)

@@ -7,10 +7,12 @@
  * The layers depend on the viewport, the camera the shadows are drawn with, each shadowing light
  * and its samples, the pass's settings, and the depth and shape of every prop that the depth pass
  * draws or that casts. Values are recorded where VTK does not mark a change (vtkCamera::DeepCopy
- * does not modify the camera; a prop's matrix can change through its user transform), and
- * modification times elsewhere: each prop, its mapper with its clipping planes and shader
- * property, and every input data object of the mapper (each block of composite data), brought
- * up to date first (UpdateMapperInputs). 2D props (vtkActor2D) are
+ * does not modify the camera; a prop's matrix can change through its user transform; colours,
+ * which move an actor's and a mapper's times, change no shadow, so the look and mapper settings
+ * that can are recorded by value where the classes are VTK's own), and modification times
+ * elsewhere: each prop, its mapper with its clipping planes and shader property, and every input
+ * data object of the mapper (each block of composite data), brought up to date first
+ * (UpdateMapperInputs). 2D props (vtkActor2D) are
  * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
  * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a 3D widget's
  * representation, a vtkLODActor or vtkLODProp3D, which pick their level by render time, or a

@@ -12,6 +12,7 @@
 #include "vtkCameraPass.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkCoordinate.h"
 #include "vtkCubeSource.h"
@@ -611,6 +612,10 @@ public:
   vtkNew<vtkAssembly> Assembly;
   vtkNew<vtkTimeSourceExample> Column; // grows with time, which a change requests
   vtkNew<vtkDataSetMapper> ColumnMapper;
+  vtkNew<vtkPolyData> TintedBall; // coloured by height through Tints
+  vtkNew<vtkLookupTable> Tints;
+  vtkCompositePolyDataMapper2* Blocks = nullptr;
+  vtkActor* Tinted = nullptr;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
   vtkActor* Part = nullptr;
@@ -640,6 +645,9 @@ public:
     blocks->SetNumberOfBlocks(1);
     blocks->SetBlock(0, this->BlockBox);
     vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+    this->Blocks = compositeMapper;
+    vtkNew<vtkCompositeDataDisplayAttributes> blockAttributes; // the mapper has none of its own
+    compositeMapper->SetCompositeDataDisplayAttributes(blockAttributes);
     compositeMapper->SetInputDataObject(blocks);
     vtkNew<vtkActor> composite;
     composite->SetMapper(compositeMapper);
@@ -662,6 +670,20 @@ public:
     column->SetPosition(-2.2, 0.0, -1.8);
     column->SetScale(0.4);
     this->View.Renderer->AddActor(column);
+
+    vtkSmartPointer<vtkSphereSource> ball = SphereSource(-1.4, 0.3, -1.3, 0.3, 16, 8);
+    ball->Update();
+    this->TintedBall->DeepCopy(ball->GetOutput());
+    vtkNew<vtkFloatArray> heights;
+    for (vtkIdType i = 0; i < this->TintedBall->GetNumberOfPoints(); ++i)
+    {
+      heights->InsertNextValue(static_cast<float>(this->TintedBall->GetPoint(i)[1]));
+    }
+    this->TintedBall->GetPointData()->SetScalars(heights);
+    this->Tinted = this->View.AddData(this->TintedBall, 0.8, 0.8, 0.8);
+    this->Tinted->GetMapper()->SetLookupTable(this->Tints);
+    this->Tinted->GetMapper()->SetScalarRange(0.0, 0.6);
+    this->Tinted->GetMapper()->ScalarVisibilityOn();
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -816,6 +838,61 @@ void TestReuseUnchangedShadows()
         vtkSmartPointer<vtkSelection> picked;
         picked.TakeReference(selector->Select());
       } },
+    // Colours change no shadow: VTK's own draw shades the receivers every frame.
+    { "an actor's colours and lighting coefficients", true,
+      [&]
+      {
+        scene.Sphere->GetProperty()->SetColor(0.2, 0.5, 0.9);
+        scene.Sphere->GetProperty()->SetSpecular(0.4);
+        scene.Sphere->GetProperty()->SetInterpolationToFlat();
+      } },
+    { "an assembly part's colour", true,
+      [&] { scene.Part->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.1); } },
+    { "a block's colour", true,
+      [&]
+      {
+        const double yellow[3] = { 0.9, 0.9, 0.2 };
+        scene.Blocks->SetBlockColor(1, yellow);
+      } },
+    { "a scalar range and a lookup table's colours", true,
+      [&]
+      {
+        scene.Tinted->GetMapper()->SetScalarRange(0.1, 0.5);
+        scene.Tints->SetHueRange(0.6, 0.0);
+        scene.Tints->ForceBuild();
+      } },
+    { "a lookup table's alpha (the actor drawn translucent)", false,
+      [&]
+      {
+        scene.Tints->SetAlphaRange(0.4, 0.4);
+        scene.Tints->ForceBuild();
+      } },
+    { "the lookup table opaque again", false,
+      [&]
+      {
+        scene.Tints->SetAlphaRange(1.0, 1.0);
+        scene.Tints->ForceBuild();
+      } },
+    { "a block's opacity", false, [&] { scene.Blocks->SetBlockOpacity(1, 0.5); } },
+    { "a block hidden", false, [&] { scene.Blocks->SetBlockVisibility(1, false); } },
+    { "the block shown and opaque", false,
+      [&]
+      {
+        scene.Blocks->RemoveBlockVisibilities();
+        scene.Blocks->RemoveBlockOpacities();
+      } },
+    { "an actor drawn as a wireframe", false,
+      [&] { scene.Sphere->GetProperty()->SetRepresentationToWireframe(); } },
+    { "the actor's surface again, front faces culled", false,
+      [&]
+      {
+        scene.Sphere->GetProperty()->SetRepresentationToSurface();
+        scene.Sphere->GetProperty()->FrontfaceCullingOn();
+      } },
+    { "no faces culled", false, [&] { scene.Sphere->GetProperty()->FrontfaceCullingOff(); } },
+    { "a mapper's own polygon offset", false,
+      [&]
+      { scene.Box->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 20); } },
     { "the camera deep-copied, not modified", false,
       [&] { renderer->GetActiveCamera()->DeepCopy(elsewhere); } },
     { "the camera rolled through DeepCopy (its time and depth range unchanged)", false,
