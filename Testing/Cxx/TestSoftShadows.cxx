@@ -188,6 +188,42 @@ void TestWedgesHardCases()
   two.Camera(3, 5, 6, 0, 0.5, 0);
   CheckSoft("wedges, first of two lights", CompareSoft(two, 0), 0.012, 0.035);
   CheckSoft("wedges, second of two lights", CompareSoft(two, 1), 0.012, 0.035);
+
+  // A ribbon thinner than a pixel, in full light: across it, both neighbours of its pixels are
+  // the ground behind, which gives the horizon cap no plane; a plane joining the ribbon to the
+  // ground faces away from the light and capped its pixels dark.
+  Scene thin;
+  thin.Window->SetMultiSamples(0);
+  thin.Ground(6);
+  vtkNew<vtkPlaneSource> ribbonShape;
+  ribbonShape->SetOrigin(-2, 0.3, 0);
+  ribbonShape->SetPoint1(2, 0.3, 0);
+  ribbonShape->SetPoint2(-2, 0.3, 0.008);
+  vtkActor* ribbon = thin.Add(ribbonShape, 0.9, 0.9, 0.9);
+  thin.Light->SetPosition(0.5, 5, 2);
+  vtkSoftShadowPass::SetLightRadius(thin.Light, 0.5);
+  thin.Pass->SetMethodToPenumbraWedges();
+  thin.Camera(0.3, 2, 3.5, 0, 0.2, 0);
+  ribbon->VisibilityOff();
+  thin.Window->Render();
+  const std::vector<float> groundDepth = WindowDepth(thin.Window, thin.Renderer);
+  ribbon->VisibilityOn();
+  thin.Window->Render();
+  const std::vector<float> depth = WindowDepth(thin.Window, thin.Renderer);
+  const std::vector<float> lit = ImageValues(thin.Pass->GetVisibilityImage(0));
+  int ribbonPixels = 0, dark = 0;
+  for (std::size_t i = 0; i < depth.size(); ++i)
+  {
+    if (depth[i] < groundDepth[i] - 1e-4f)
+    {
+      ++ribbonPixels;
+      dark += lit[i] < 0.9f;
+    }
+  }
+  std::printf(
+    "     a sub-pixel ribbon in full light: %d of its %d px below 0.9\n", dark, ribbonPixels);
+  Check(ribbonPixels >= 40 && dark * 100 <= ribbonPixels,
+    "wedges: a ribbon thinner than a pixel in full light reads lit (at most 1% below 0.9)");
 }
 
 void TestWedgeShapes()

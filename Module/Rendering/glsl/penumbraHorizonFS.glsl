@@ -10,17 +10,23 @@ uniform float lightRadius;    // world units, or radians for a directional light
 
 const float pi = 3.14159265358979;
 
-/// Step to the neighbour on the same surface: the one closer in depth.
-vec3 tangent(ivec2 pixel, float depth, ivec2 step, vec3 p)
+/// The step along `step` to the neighbour on the same surface, the one closer in depth. False
+/// where both neighbours lie behind the pixel by more than two pixels' width at its depth: a
+/// feature one pixel thin (a line, a thin tube, a point) over a farther surface, whose plane the
+/// depth cannot give (across it, the tangent would join the feature to the surface behind).
+bool tangent(ivec2 pixel, float depth, ivec2 step, vec3 p, out vec3 along)
 {
   ivec2 size = ivec2(viewportSize);
   ivec2 forward = clamp(pixel + step, ivec2(0), size - 1);
   ivec2 backward = clamp(pixel - step, ivec2(0), size - 1);
   float dForward = texelFetch(depthTexture, forward, 0).r;
   float dBackward = texelFetch(depthTexture, backward, 0).r;
-  return abs(dForward - depth) < abs(depth - dBackward)
-    ? penumbraPointAt(forward, dForward, 0.0) - p
-    : p - penumbraPointAt(backward, dBackward, 0.0);
+  vec3 toForward = penumbraPointAt(forward, dForward, 0.0) - p;
+  vec3 fromBackward = p - penumbraPointAt(backward, dBackward, 0.0);
+  along = abs(dForward - depth) < abs(depth - dBackward) ? toForward : fromBackward;
+  float reach = 2.0 * length(penumbraPointAt(forward, depth, 0.0) - p);
+  return !(dForward > depth && dBackward > depth && length(toForward) > reach &&
+    length(fromBackward) > reach);
 }
 
 void main()
@@ -28,9 +34,13 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = penumbraSceneDepth(pixel);
   vec3 p = penumbraPointAt(pixel, depth, 0.0);
-  // Screen x and y steps: their cross product faces the eye, the side that is seen.
-  vec3 n = cross(tangent(pixel, depth, ivec2(1, 0), p), tangent(pixel, depth, ivec2(0, 1), p));
-  if (dot(n, n) <= 0.0)
+  // Screen x and y steps: their cross product faces the eye, the side that is seen. A thin
+  // feature's plane is unknown: it is left uncapped.
+  vec3 alongX, alongY;
+  bool planar = tangent(pixel, depth, ivec2(1, 0), p, alongX);
+  planar = tangent(pixel, depth, ivec2(0, 1), p, alongY) && planar;
+  vec3 n = cross(alongX, alongY);
+  if (!planar || dot(n, n) <= 0.0)
   {
     discard;
   }
