@@ -499,6 +499,16 @@ MeshCache* ShadowCaches::FindMesh(
   if (!mesh || mesh->Data != data)
   {
     mesh.reset(new MeshCache);
+    auto warned = this->Warned.find(data);
+    if (warned != this->Warned.end())
+    {
+      if (warned->second.Data == data) // not another object at a freed one's address
+      {
+        mesh->WarnedProblems = warned->second.Problems;
+        mesh->WarnedEmpty = warned->second.Empty;
+      }
+      this->Warned.erase(warned);
+    }
   }
   mesh->Update(data, prop, viewProp, owner);
   return mesh.get();
@@ -566,9 +576,23 @@ void ShadowCaches::PurgeUnused()
     }
     ++it;
   }
+  for (auto it = this->Warned.begin(); it != this->Warned.end();)
+  {
+    it = it->second.Data ? std::next(it) : this->Warned.erase(it);
+  }
   for (auto it = this->Meshes.begin(); it != this->Meshes.end();)
   {
-    it = it->second->Used ? std::next(it) : this->Meshes.erase(it);
+    const MeshCache& mesh = *it->second;
+    if (mesh.Used)
+    {
+      ++it;
+      continue;
+    }
+    if (mesh.WarnedProblems || mesh.WarnedEmpty)
+    {
+      this->Warned[it->first] = { it->first, mesh.WarnedProblems, mesh.WarnedEmpty };
+    }
+    it = this->Meshes.erase(it);
   }
 }
 

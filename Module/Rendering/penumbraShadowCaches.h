@@ -249,6 +249,15 @@ struct CasterCache
 struct ShadowCaches
 {
   std::map<vtkDataObject*, std::unique_ptr<MeshCache>> Meshes;
+  /// What the meshes freed while their data lives on had warned of: a prop hidden and shown
+  /// again is not warned again.
+  struct WarnedData
+  {
+    vtkWeakPointer<vtkDataObject> Data;
+    bool Problems = false;
+    bool Empty = false;
+  };
+  std::map<vtkDataObject*, WarnedData> Warned;
   /// Keyed by actor and part (penumbra::DrawnSurface): a block or glyph of it.
   std::map<std::pair<vtkActor*, std::size_t>, std::unique_ptr<CasterCache>> Casters;
 

@@ -429,6 +429,7 @@ void TestBadInput()
     actor->SetMapper(mapper);
     scene.Renderer->AddActor(actor);
     scene.Keep.push_back(producer.GetPointer());
+    return actor.GetPointer();
   };
   vtkNew<vtkPolyData> empty;
   addData(empty);
@@ -451,7 +452,7 @@ void TestBadInput()
   vertsOnly->SetVerts(verts);
   broken->SetPoints(points);
   broken->SetPolys(polys);
-  addData(linesOnly);
+  vtkActor* linesActor = addData(linesOnly);
   addData(vertsOnly);
   addData(broken);
 
@@ -476,6 +477,12 @@ void TestBadInput()
   const std::size_t before = warnings.Messages.size();
   scene.Window->Render();
   Check(warnings.Messages.size() == before, "warnings are not repeated every frame");
+  // A frame without it frees its mesh; the warning stays said.
+  linesActor->VisibilityOff();
+  scene.Window->Render();
+  linesActor->VisibilityOn();
+  scene.Window->Render();
+  Check(warnings.Messages.size() == before, "nor when the actor is hidden and shown again");
 
   // A zero scale flattens a sphere into a disc, which VTK draws: with no inverse to take the
   // light into its mesh's coordinates it casts nothing, said once; the others still cast.
