@@ -1572,12 +1572,23 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     return true; // nothing inserted, already reported
   }
   auto actor = vtkActor::SafeDownCast(prop);
-  if (penumbra::IsUnlit(fragmentShader) && actor && !actor->GetProperty()->GetLighting())
+  if (penumbra::IsUnlit(fragmentShader) && actor)
   {
-    // Worth saying: vedo's Plane, for one, is unlit by default. Splats and normal-less data
-    // are unlit by nature and say nothing.
-    this->WarnShaderEdit(
-      mapper, prop, "is written without lighting (its vtkProperty has Lighting off)");
+    // Worth saying: vedo's Plane, for one, is unlit by default, and VTK draws streamlines
+    // (whose normals vtkStreamTracer does not make active) unlit. Splats are unlit by nature
+    // and say nothing.
+    if (!actor->GetProperty()->GetLighting())
+    {
+      this->WarnShaderEdit(
+        mapper, prop, "is written without lighting (its vtkProperty has Lighting off)");
+    }
+    else if (penumbra::IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
+      penumbra::IsExactly(mapper, "vtkCompositeMapperHelper2"))
+    {
+      this->WarnShaderEdit(mapper, prop,
+        "for lines or vertices is written without lighting (VTK lights them only where the "
+        "data has active point normals, vtkPointData::SetActiveNormals)");
+    }
     return true;
   }
   // VTK's vtkShadowMapPass, later in the delegate chain, declares its shadow maps before and

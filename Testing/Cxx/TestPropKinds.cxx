@@ -1288,6 +1288,36 @@ void TestWarnings()
   auto unlit = MakeActor(BoxSource(-1.8, 0.2, 1.6, 0.4, 0.4, 0.4), 0.8, 0.8, 0.3);
   unlit->GetProperty()->LightingOff();
   view.Renderer->AddActor(unlit);
+  // Lines without active normals (a vtkStreamTracer's): VTK draws them unlit (one warning);
+  // with the same normals made active it lights them, and they show their shadow.
+  for (const bool activeNormals : { false, true })
+  {
+    vtkNew<vtkPolyData> streamline;
+    vtkNew<vtkPoints> linePoints;
+    vtkNew<vtkFloatArray> lineNormals;
+    lineNormals->SetName("Normals");
+    lineNormals->SetNumberOfComponents(3);
+    vtkNew<vtkCellArray> lineCells;
+    lineCells->InsertNextCell(8);
+    for (int i = 0; i < 8; ++i)
+    {
+      lineCells->InsertCellPoint(
+        linePoints->InsertNextPoint(-2.0 + 0.5 * i, 0.3, activeNormals ? -2.0 : 2.2));
+      lineNormals->InsertNextTuple3(0.0, 1.0, 0.0);
+    }
+    streamline->SetPoints(linePoints);
+    streamline->SetLines(lineCells);
+    streamline->GetPointData()->AddArray(lineNormals);
+    if (activeNormals)
+    {
+      streamline->GetPointData()->SetActiveNormals("Normals");
+    }
+    vtkNew<vtkPolyDataMapper> lineMapper;
+    lineMapper->SetInputData(streamline);
+    vtkNew<vtkActor> lines;
+    lines->SetMapper(lineMapper);
+    view.Renderer->AddActor(lines);
+  }
 
   // Imposter spheres cast, but not one whose radius is NaN (VTK draws nothing for it).
   vtkNew<vtkPolyData> centres;
@@ -1418,12 +1448,15 @@ void TestWarnings()
   Check(count("neither casts nor receives shadows: the pass does not edit volume") == 1,
     "a volume: one warning, that it is not shadowed either");
   Check(count("Lighting off") == 1, "an actor with Lighting off: one warning");
-  Check(count("part of vtkAxesActor") == 1 && count("no surface triangles") == 1,
-    "vtkAxesActor's line shafts: one warning, naming the axes");
+  // The line shafts of vtkAxesActor have no normals either.
+  Check(count("active point normals") == 2,
+    "lines without active normals, drawn unlit: one warning each (none with them)");
+  Check(count("part of vtkAxesActor") == 1 && count("no surface triangles") == 3,
+    "vtkAxesActor's line shafts and the lines: one warning each, naming the axes");
   Check(count("drawn as a wireframe") == 1, "a wireframe sphere: one warning");
   Check(count("has clipping planes") == 1 && count("imposters of its vtkOpenGLSphereMapper") == 1,
     "imposter spheres with a clipping plane: one warning naming the mapper");
-  Check(warnings.size() == 11, "no other warning");
+  Check(warnings.size() == 15, "no other warning");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
