@@ -463,9 +463,11 @@ void TestBadInput()
     std::printf("     warning: %s\n", message.c_str());
   }
   // Empty data, lines only, vertices only, and triangles that are all NaN or degenerate: one
-  // warning each, naming the actor and saying what the data had instead of triangles.
-  Check(warnings.Messages.size() == 4, "each bad caster is reported with one warning");
-  Check(warnings.Count("Actor (") == 4 && warnings.Count("), its vtkPolyData (") == 4 &&
+  // warning each, naming the actor and saying what the data had instead of triangles. The
+  // lines and vertices, without normals, are drawn unlit too: one more warning each.
+  Check(warnings.Messages.size() == 6 && warnings.Count("active point normals") == 2,
+    "each bad caster is reported with one warning, and each unlit one with another");
+  Check(warnings.Count("Actor (") == 6 && warnings.Count("), its vtkPolyData (") == 4 &&
       warnings.Count("has no surface triangles, so it casts no shadow") == 4,
     "each names its actor and its data, and says it casts no shadow");
   Check(warnings.Count("and 1 line cells") == 1 && warnings.Count("ignored 1 vertex") == 1 &&
