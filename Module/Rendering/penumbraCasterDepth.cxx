@@ -114,11 +114,13 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
     return false;
   }
   vtkProperty* property = actor->GetProperty();
-  if (!actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry() ||
-    property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
-    property->GetVertexVisibility() || property->GetBackfaceCulling() ||
-    property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
-    !DrawsTrianglesWithoutOffset(mapper, property) || HasCustomShaders(actor))
+  // VTK drops fragments of alpha 0 even from an actor forced opaque: holes its mesh lacks.
+  if (actor->GetForceOpaque() || !actor->HasOpaqueGeometry() ||
+    actor->HasTranslucentPolygonalGeometry() || property->GetRepresentation() != VTK_SURFACE ||
+    property->GetEdgeVisibility() || property->GetVertexVisibility() ||
+    property->GetBackfaceCulling() || property->GetFrontfaceCulling() ||
+    mapper->GetNumberOfClippingPlanes() > 0 || !DrawsTrianglesWithoutOffset(mapper, property) ||
+    HasCustomShaders(actor))
   {
     return false;
   }

@@ -72,6 +72,16 @@ struct LegacyShaders : vtkOpenGLPolyDataMapper
   }
 };
 
+/// Whether `actor`'s colours can change what VTK draws of it, not only how it looks: custom
+/// shader code may read them, and VTK drops fragments of alpha 0 even from an actor forced opaque
+/// (otherwise colours with alpha make it translucent, which AddDrawnLook records).
+bool ColoursShapeIt(vtkActor* actor)
+{
+  auto mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+  return actor->GetForceOpaque() || HasCustomShaders(actor) ||
+    (mapper && LegacyShaders::Of(mapper));
+}
+
 /// What of an actor's look can change its shadows or the depth they are drawn against: whether
 /// VTK draws it opaque or seen through and by what opacity, what of it VTK draws and how wide
 /// (representation, culling, edges, line widths and point sizes), its lighting and its
@@ -98,8 +108,12 @@ void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
       property->GetRenderLinesAsTubes() + 2 * property->GetRenderPointsAsSpheres()));
     for (const auto& named : property->GetAllTextures())
     {
+      // VTK drops fragments of alpha 0 whatever the actor's opacity: the image, edited in place
+      // without the texture's time moving, can open holes.
+      vtkImageData* image = named.second->GetInput();
       inputs.Add(named.second);
       inputs.AddTime(named.second->GetMTime());
+      inputs.AddTime(image ? image->GetMTime() : 0);
     }
   }
   vtkTexture* texture = actor->GetTexture();
@@ -108,16 +122,17 @@ void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
 }
 
 /// What of `mapper` can change the shape or depth VTK draws, for the mappers whose settings are
-/// known (VTK 9.1's polydata, composite polydata and dataset mappers, without shader code of
-/// their own or the actor's): their time moves with colour settings too (scalar range, lookup
-/// table, colour array), which change nothing of the shadows but translucency, recorded with
-/// the actor (AddDrawnLook). Returns false for any other mapper: its time is recorded instead.
+/// known (VTK 9.1's polydata, composite polydata and dataset mappers) of an actor whose colours
+/// shape nothing (not ColoursShapeIt): their time moves with colour settings too (scalar range,
+/// lookup table, colour array), which change nothing of the shadows but translucency, recorded
+/// with the actor (AddDrawnLook). Returns false for any other mapper: its time is recorded
+/// instead.
 bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper, vtkActor* actor)
 {
   auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
   const bool known = IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
     IsExactly(mapper, "vtkCompositePolyDataMapper2") || IsExactly(mapper, "vtkDataSetMapper");
-  if (!known || HasCustomShaders(actor) || (polyMapper && LegacyShaders::Of(polyMapper)))
+  if (!known)
   {
     return false;
   }
@@ -193,6 +208,37 @@ bool NearlyEqualRows(const glm::dmat4& a, const glm::dmat4& b)
   return true;
 }
 
+/// Runs the producer of each input connection of `algorithm`.
+void UpdateInputs(vtkAlgorithm* algorithm)
+{
+  for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int connection = 0; connection < algorithm->GetNumberOfInputConnections(port);
+         ++connection)
+    {
+      vtkAlgorithmOutput* output = algorithm->GetInputConnection(port, connection);
+      if (output && output->GetProducer())
+      {
+        output->GetProducer()->Update(output->GetIndex());
+      }
+    }
+  }
+}
+
+/// The textures VTK draws `actor` with: a texture's alpha can open holes or make it translucent.
+std::vector<vtkTexture*> TexturesOf(vtkActor* actor)
+{
+  std::vector<vtkTexture*> textures;
+  if (actor->GetTexture())
+  {
+    textures.push_back(actor->GetTexture());
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    textures.push_back(named.second);
+  }
+  return textures;
+}
 } // namespace
 
 void ShadowInputs::Begin()
@@ -315,12 +361,19 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   AddShadowKeys(*this, leaf);
   // An assembly modifies its parts as it draws them (vtkProp3D::PokeMatrix): a part's time moves
   // every frame, so its parts are recorded by what they are made of instead. A plain actor's
-  // time moves with its property's colours too: its look is recorded by value.
+  // time moves with its property's colours too: its look is recorded by value where colours
+  // cannot change what VTK draws.
   auto actor = vtkActor::SafeDownCast(leaf);
-  const bool lookByValue = actor && (part || IsExactly(actor, "vtkOpenGLActor"));
+  const bool lookByValue =
+    actor && (part || IsExactly(actor, "vtkOpenGLActor")) && !ColoursShapeIt(actor);
   if (!part)
   {
     this->AddTime(lookByValue ? actor->vtkProp3D::GetMTime() : leaf->GetMTime());
+  }
+  else if (actor && !lookByValue)
+  {
+    this->AddTime(actor->GetProperty()->GetMTime());
+    this->AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
   }
   if (auto prop3D = vtkProp3D::SafeDownCast(leaf))
   {
@@ -329,7 +382,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   }
   if (actor)
   {
-    if (lookByValue)
+    if (lookByValue || part)
     {
       AddDrawnLook(*this, actor);
     }
@@ -427,20 +480,16 @@ void UpdateMapperInputs(vtkRenderer* renderer)
       {
         vtkAbstractMapper* mapper = MapperOf(path->GetLastNode()->GetViewProp());
         auto staticMapper = vtkMapper::SafeDownCast(mapper);
-        if (!mapper || (staticMapper && staticMapper->GetStatic()))
+        if (mapper && !(staticMapper && staticMapper->GetStatic()))
         {
-          continue;
+          UpdateInputs(mapper);
         }
-        for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+        // A texture's source runs only as VTK loads it, after the record reads its image.
+        if (auto actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()))
         {
-          for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port);
-               ++connection)
+          for (vtkTexture* texture : TexturesOf(actor))
           {
-            vtkAlgorithmOutput* output = mapper->GetInputConnection(port, connection);
-            if (output && output->GetProducer())
-            {
-              output->GetProducer()->Update(output->GetIndex());
-            }
+            UpdateInputs(texture);
           }
         }
       }

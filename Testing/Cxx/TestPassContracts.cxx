@@ -22,6 +22,7 @@
 #include "vtkDepthSortPolyData.h"
 #include "vtkFrustumCoverageCuller.h"
 #include "vtkHardwareSelector.h"
+#include "vtkImageCanvasSource2D.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -49,6 +50,7 @@
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSequencePass.h"
+#include "vtkShaderProperty.h"
 #include "vtkSphereRepresentation.h"
 #include "vtkSphereSource.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -625,6 +627,11 @@ public:
   vtkNew<vtkLookupTable> Tints;
   vtkCompositePolyDataMapper2* Blocks = nullptr;
   vtkActor* Tinted = nullptr;
+  vtkSmartPointer<vtkImageData> SheetImage; // a property texture's, RGBA, edited in place
+  vtkNew<vtkTexture> SheetTexture;
+  vtkNew<vtkPlane> SheetClip; // cuts nothing: VTK draws the sheets' depth, holes included
+  vtkNew<vtkImageCanvasSource2D> Canvas; // another sheet's property texture, from a source
+  vtkNew<vtkTexture> CanvasTexture;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
   vtkActor* Part = nullptr;
@@ -693,6 +700,29 @@ public:
     this->Tinted->GetMapper()->SetLookupTable(this->Tints);
     this->Tinted->GetMapper()->SetScalarRange(0.0, 0.6);
     this->Tinted->GetMapper()->ScalarVisibilityOn();
+
+    this->SheetClip->SetOrigin(0, 0, 5);
+    this->SheetClip->SetNormal(0, 0, -1);
+    const auto addSheet = [this](double x, double z, vtkTexture* texture)
+    {
+      vtkNew<vtkPlaneSource> shape;
+      shape->SetOrigin(x, 0.9, z);
+      shape->SetPoint1(x + 1.0, 0.9, z);
+      shape->SetPoint2(x, 0.9, z + 1.0);
+      vtkActor* sheet = this->View.Add(shape, 0.7, 0.7, 0.9);
+      sheet->GetProperty()->SetTexture("colorTex", texture);
+      sheet->GetMapper()->AddClippingPlane(this->SheetClip);
+    };
+    this->SheetImage = TextureImage(255);
+    this->SheetTexture->SetInputData(this->SheetImage);
+    addSheet(0.9, -1.6, this->SheetTexture);
+    this->Canvas->SetScalarTypeToUnsignedChar();
+    this->Canvas->SetNumberOfScalarComponents(4);
+    this->Canvas->SetExtent(0, 7, 0, 7, 0, 0);
+    this->Canvas->SetDrawColor(230, 230, 230, 255);
+    this->Canvas->FillBox(0, 7, 0, 7);
+    this->CanvasTexture->SetInputConnection(this->Canvas->GetOutputPort());
+    addSheet(-0.4, -2.4, this->CanvasTexture);
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -899,6 +929,37 @@ void TestReuseUnchangedShadows()
         scene.Sphere->GetProperty()->FrontfaceCullingOn();
       } },
     { "no faces culled", false, [&] { scene.Sphere->GetProperty()->FrontfaceCullingOff(); } },
+    // VTK drops fragments of alpha 0 whatever the actor's opacity, and custom shader code may
+    // read colours: such colour changes can move the depth the shadows are drawn against.
+    { "a property texture's image given holes in place", false,
+      [&]
+      {
+        auto* texels = static_cast<unsigned char*>(scene.SheetImage->GetScalarPointer());
+        texels[3] = texels[15] = 0;
+        scene.SheetImage->Modified();
+      } },
+    // The source runs as VTK loads the texture, after the record: it must run before.
+    { "a property texture's source redrawn with holes", false,
+      [&]
+      {
+        scene.Canvas->SetDrawColor(230, 230, 230, 0);
+        scene.Canvas->FillBox(0, 3, 0, 7);
+      } },
+    { "an actor forced opaque", false, [&] { scene.Tinted->ForceOpaqueOn(); } },
+    { "a lookup table entry of that actor made transparent", false,
+      [&]
+      {
+        scene.Tints->SetTableValue(0, 1.0, 0.0, 0.0, 0.0);
+        scene.Tints->SetTableValue(1, 1.0, 0.0, 0.0, 0.0);
+      } },
+    { "shader code that reads the colour", false,
+      [&]
+      {
+        scene.Box->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Color::Impl", true,
+          "//VTK::Color::Impl\n  if (diffuseColorUniform.g > 0.5) { discard; }\n", false);
+      } },
+    { "the colour that code reads", false,
+      [&] { scene.Box->GetProperty()->SetColor(0.2, 0.9, 0.2); } },
     { "a mapper's own polygon offset", false,
       [&]
       { scene.Box->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 20); } },
