@@ -588,9 +588,10 @@ void ShadowCaches::PurgeUnused()
       ++it;
       continue;
     }
-    if (mesh.WarnedProblems || mesh.WarnedEmpty)
+    // A mesh outlives its data (a weak pointer): only a live data object is remembered.
+    if (mesh.Data && (mesh.WarnedProblems || mesh.WarnedEmpty))
     {
-      this->Warned[it->first] = { it->first, mesh.WarnedProblems, mesh.WarnedEmpty };
+      this->Warned[it->first] = { mesh.Data, mesh.WarnedProblems, mesh.WarnedEmpty };
     }
     it = this->Meshes.erase(it);
   }

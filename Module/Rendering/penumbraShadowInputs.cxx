@@ -15,6 +15,7 @@
 #include "vtkDataObject.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
+#include "vtkDataSet.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
@@ -31,6 +32,7 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSelection.h"
 #include "vtkShaderProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
@@ -72,21 +74,49 @@ struct LegacyShaders : vtkOpenGLPolyDataMapper
   }
 };
 
+/// Whether a composite mapper colours some leaf of its input by scalars: it decides each block's
+/// pass (opaque or translucent) from them, which the actor's opacity does not show.
+bool ColoursBlocksByScalars(vtkCompositePolyDataMapper2* mapper)
+{
+  auto tree = vtkDataObjectTree::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!mapper->GetScalarVisibility() || !tree)
+  {
+    return mapper->GetScalarVisibility();
+  }
+  for (vtkDataObject* leaf : vtk::Range(tree, EveryLeaf()))
+  {
+    int cellFlag = 0;
+    if (vtkAbstractMapper::GetScalars(vtkDataSet::SafeDownCast(leaf), mapper->GetScalarMode(),
+          mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// Whether `actor`'s colours can change what VTK draws of it, not only how it looks: custom
-/// shader code may read them, and VTK drops fragments of alpha 0 even from an actor forced opaque
-/// (otherwise colours with alpha make it translucent, which AddDrawnLook records).
+/// shader code may read them; VTK drops fragments of alpha 0 even from an actor forced opaque,
+/// or through a texture (whose alpha VTK may not count as translucency, and whose name,
+/// coordinates and interpolation decide where it applies); and a composite mapper sorts its
+/// blocks into passes by their scalars' colours. Otherwise colours with alpha make the whole
+/// actor translucent, which AddDrawnLook records.
 bool ColoursShapeIt(vtkActor* actor)
 {
   auto mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+  auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   return actor->GetForceOpaque() || HasCustomShaders(actor) ||
-    (mapper && LegacyShaders::Of(mapper));
+    (mapper && LegacyShaders::Of(mapper)) || actor->GetTexture() ||
+    actor->GetProperty()->GetNumberOfTextures() > 0 ||
+    (composite && ColoursBlocksByScalars(composite));
 }
 
 /// What of an actor's look can change its shadows or the depth they are drawn against: whether
 /// VTK draws it opaque or seen through and by what opacity, what of it VTK draws and how wide
-/// (representation, culling, edges, line widths and point sizes), its lighting and its
-/// textures. Colours, lighting coefficients and PBR terms change neither, so changing only them
-/// reuses the shadows; the receivers' shading is VTK's own draw, done every frame.
+/// (representation, culling, edges, line widths and point sizes) and its lighting (its textures
+/// are recorded with every actor). Colours, lighting coefficients and PBR terms change neither, so
+/// changing only them reuses the shadows; the receivers' shading is VTK's own draw, done every
+/// frame.
 void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
 {
   // Colours with alpha (scalars, a lookup table, a texture) make an actor translucent.
@@ -106,19 +136,10 @@ void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
     inputs.Add(glm::dvec4(property->GetLineWidth(), property->GetPointSize(),
       property->GetEdgeVisibility() + 2 * property->GetVertexVisibility(),
       property->GetRenderLinesAsTubes() + 2 * property->GetRenderPointsAsSpheres()));
-    for (const auto& named : property->GetAllTextures())
-    {
-      // VTK drops fragments of alpha 0 whatever the actor's opacity: the image, edited in place
-      // without the texture's time moving, can open holes.
-      vtkImageData* image = named.second->GetInput();
-      inputs.Add(named.second);
-      inputs.AddTime(named.second->GetMTime());
-      inputs.AddTime(image ? image->GetMTime() : 0);
-    }
+    // A mapper's selection is drawn with the surface, into the depth; its alpha 0 is dropped.
+    inputs.Add(glm::dvec4(property->GetSelectionPointSize(), property->GetSelectionLineWidth(),
+      property->GetSelectionColor()[3], 0.0));
   }
-  vtkTexture* texture = actor->GetTexture();
-  inputs.Add(texture);
-  inputs.AddTime(texture ? texture->GetMTime() : 0);
 }
 
 /// What of `mapper` can change the shape or depth VTK draws, for the mappers whose settings are
@@ -127,7 +148,7 @@ void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
 /// lookup table, colour array), which change nothing of the shadows but translucency, recorded
 /// with the actor (AddDrawnLook). Returns false for any other mapper: its time is recorded
 /// instead.
-bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper, vtkActor* actor)
+bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper)
 {
   auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
   const bool known = IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
@@ -149,6 +170,9 @@ bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper, vtkActor* actor)
       pieces->GetNumberOfSubPieces(), pieces->GetGhostLevel()));
     inputs.Add(static_cast<double>(pieces->GetSeamlessU() + 2 * pieces->GetSeamlessV()));
   }
+  vtkSelection* selection = mapper->GetSelection();
+  inputs.Add(selection);
+  inputs.AddTime(selection ? selection->GetMTime() : 0);
   vtkPlaneCollection* planes = mapper->GetClippingPlanes();
   inputs.Add(planes);
   inputs.AddTime(planes ? planes->GetMTime() : 0); // planes added or removed
@@ -161,8 +185,7 @@ void AddBlockShapes(
   ShadowInputs& inputs, vtkCompositeDataDisplayAttributes* blocks, vtkDataObject* data)
 {
   inputs.Add(blocks);
-  auto tree = vtkDataObjectTree::SafeDownCast(data);
-  if (!blocks || !tree)
+  if (!blocks || !data)
   {
     return;
   }
@@ -172,10 +195,13 @@ void AddBlockShapes(
     inputs.Add(blocks->HasBlockVisibility(node) ? blocks->GetBlockVisibility(node) : -1.0);
     inputs.Add(blocks->HasBlockOpacity(node) ? blocks->GetBlockOpacity(node) : -1.0);
   };
-  addNode(tree);
-  for (vtkDataObject* node : vtk::Range(tree, vtk::DataObjectTreeOptions::TraverseSubTree))
+  addNode(data); // keyed by the input itself too, tree or not
+  if (auto tree = vtkDataObjectTree::SafeDownCast(data))
   {
-    addNode(node);
+    for (vtkDataObject* node : vtk::Range(tree, vtk::DataObjectTreeOptions::TraverseSubTree))
+    {
+      addNode(node);
+    }
   }
 }
 
@@ -386,10 +412,16 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
     {
       AddDrawnLook(*this, actor);
     }
-    // The texture's alpha makes the actor translucent, and its image can change (edited in
-    // place) without the texture's time or the actor's moving.
-    vtkImageData* image = actor->GetTexture() ? actor->GetTexture()->GetInput() : nullptr;
-    this->AddTime(image ? image->GetMTime() : 0);
+    // A texture's alpha makes the actor translucent or opens holes in it (VTK drops fragments
+    // of alpha 0), and its image can change (edited in place) without the texture's time or
+    // the actor's moving.
+    for (vtkTexture* texture : TexturesOf(actor))
+    {
+      vtkImageData* image = texture->GetInput();
+      this->Add(texture);
+      this->AddTime(texture->GetMTime());
+      this->AddTime(image ? image->GetMTime() : 0);
+    }
     vtkShaderProperty* shaders = actor->GetShaderProperty();
     this->AddTime(shaders->GetMTime());
     this->AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
@@ -411,7 +443,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
     return false; // its observer may move vertices through uniforms, frame by frame
   }
   this->Add(mapper);
-  if (!lookByValue || !AddDrawnShape(*this, vtkMapper::SafeDownCast(mapper), actor))
+  if (!lookByValue || !AddDrawnShape(*this, vtkMapper::SafeDownCast(mapper)))
   {
     this->AddTime(mapper->GetMTime());
   }

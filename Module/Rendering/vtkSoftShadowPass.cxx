@@ -1586,8 +1586,9 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
       penumbra::IsExactly(mapper, "vtkCompositeMapperHelper2"))
     {
       this->WarnShaderEdit(mapper, prop,
-        "for lines or vertices is written without lighting (VTK lights them only where the "
-        "data has active point normals, vtkPointData::SetActiveNormals)");
+        "for points, lines or vertices is written without lighting (VTK 9.1 lights them only "
+        "where the data has active point normals, vtkPointData::SetActiveNormals, and the "
+        "interpolation is not flat)");
     }
     return true;
   }

@@ -22,6 +22,7 @@
 #include "vtkDepthSortPolyData.h"
 #include "vtkFrustumCoverageCuller.h"
 #include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageCanvasSource2D.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -630,7 +631,9 @@ public:
   vtkSmartPointer<vtkImageData> SheetImage; // a property texture's, RGBA, edited in place
   vtkNew<vtkTexture> SheetTexture;
   vtkNew<vtkPlane> SheetClip; // cuts nothing: VTK draws the sheets' depth, holes included
-  vtkNew<vtkImageCanvasSource2D> Canvas; // another sheet's property texture, from a source
+  vtkNew<vtkImageCanvasSource2D> Canvas;         // another sheet's property texture, from a source
+  vtkNew<vtkSelection> CellsSelected;            // the first cells of a mapper's data
+  vtkNew<vtkCompositePolyDataMapper2> RootBlock; // over one polydata, not a tree
   vtkNew<vtkTexture> CanvasTexture;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
@@ -672,8 +675,7 @@ public:
       0.8, 0.4, this->View.Keep);
     this->View.Keep.push_back(this->Part); // the renderer lets go of it
     this->View.Renderer->RemoveActor(this->Part);
-    this->PartTexture->SetInputData(TextureImage());
-    this->Part->SetTexture(this->PartTexture);
+    this->PartTexture->SetInputData(TextureImage()); // the part's once a change gives it
     this->Assembly->AddPart(this->Part);
     this->View.Renderer->AddActor(this->Assembly);
     this->View.Keep.push_back(blocks.GetPointer());
@@ -723,6 +725,25 @@ public:
     this->Canvas->FillBox(0, 7, 0, 7);
     this->CanvasTexture->SetInputConnection(this->Canvas->GetOutputPort());
     addSheet(-0.4, -2.4, this->CanvasTexture);
+
+    vtkNew<vtkSelectionNode> firstCells;
+    firstCells->SetFieldType(vtkSelectionNode::CELL);
+    firstCells->SetContentType(vtkSelectionNode::INDICES);
+    vtkNew<vtkIdTypeArray> cellIds;
+    for (vtkIdType i = 0; i < 40; ++i)
+    {
+      cellIds->InsertNextValue(i);
+    }
+    firstCells->SetSelectionList(cellIds);
+    this->CellsSelected->AddNode(firstCells);
+    vtkSmartPointer<vtkCubeSource> rootBox = BoxSource(2.0, 0.3, 1.4, 0.4, 0.6, 0.4);
+    this->View.Keep.push_back(rootBox);
+    this->RootBlock->SetInputConnection(rootBox->GetOutputPort());
+    vtkNew<vtkCompositeDataDisplayAttributes> rootAttributes;
+    this->RootBlock->SetCompositeDataDisplayAttributes(rootAttributes);
+    vtkNew<vtkActor> rootActor;
+    rootActor->SetMapper(this->RootBlock);
+    this->View.Renderer->AddActor(rootActor);
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -881,9 +902,9 @@ void TestReuseUnchangedShadows()
     { "an actor's colours and lighting coefficients", true,
       [&]
       {
-        scene.Sphere->GetProperty()->SetColor(0.2, 0.5, 0.9);
-        scene.Sphere->GetProperty()->SetSpecular(0.4);
-        scene.Sphere->GetProperty()->SetInterpolationToFlat();
+        scene.Box->GetProperty()->SetColor(0.2, 0.5, 0.9);
+        scene.Box->GetProperty()->SetSpecular(0.4);
+        scene.Box->GetProperty()->SetInterpolationToFlat();
       } },
     { "an assembly part's colour", true,
       [&] { scene.Part->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.1); } },
@@ -929,6 +950,15 @@ void TestReuseUnchangedShadows()
         scene.Sphere->GetProperty()->FrontfaceCullingOn();
       } },
     { "no faces culled", false, [&] { scene.Sphere->GetProperty()->FrontfaceCullingOff(); } },
+    { "a mapper's own polygon offset", false,
+      [&]
+      { scene.Box->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 20); } },
+    // A mapper's selection is drawn with its surface, into the depth.
+    { "a selection of the mapper's cells", false,
+      [&] { scene.Tinted->GetMapper()->SetSelection(scene.CellsSelected); } },
+    // vtkCompositePolyDataMapper2 keys attributes by its input itself, tree or not.
+    { "a composite mapper's one polydata hidden as its root block", false,
+      [&] { scene.RootBlock->SetBlockVisibility(0, false); } },
     // VTK drops fragments of alpha 0 whatever the actor's opacity, and custom shader code may
     // read colours: such colour changes can move the depth the shadows are drawn against.
     { "a property texture's image given holes in place", false,
@@ -960,9 +990,6 @@ void TestReuseUnchangedShadows()
       } },
     { "the colour that code reads", false,
       [&] { scene.Box->GetProperty()->SetColor(0.2, 0.9, 0.2); } },
-    { "a mapper's own polygon offset", false,
-      [&]
-      { scene.Box->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 20); } },
     { "the camera deep-copied, not modified", false,
       [&] { renderer->GetActiveCamera()->DeepCopy(elsewhere); } },
     { "the camera rolled through DeepCopy (its time and depth range unchanged)", false,
@@ -1001,8 +1028,12 @@ void TestReuseUnchangedShadows()
         points->Modified();
       } },
     { "an assembly part moved", false, [&] { scene.Part->SetPosition(0.2, 0, -0.3); } },
-    { "an assembly part's texture made translucent", false,
-      [&] { scene.PartTexture->SetInputData(ReuseScene::TextureImage(100)); } },
+    { "an assembly part given a translucent texture", false,
+      [&]
+      {
+        scene.PartTexture->SetInputData(ReuseScene::TextureImage(100));
+        scene.Part->SetTexture(scene.PartTexture);
+      } },
     { "a texture's image made translucent in place", false,
       [&] { scene.SetSphereTextureAlpha(60); } },
     { "the image made opaque again in place", false, [&] { scene.SetSphereTextureAlpha(255); } },
