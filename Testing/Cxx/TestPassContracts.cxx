@@ -634,6 +634,8 @@ public:
   vtkNew<vtkImageCanvasSource2D> Canvas;         // another sheet's property texture, from a source
   vtkNew<vtkSelection> CellsSelected;            // the first cells of a mapper's data
   vtkNew<vtkCompositePolyDataMapper2> RootBlock; // over one polydata, not a tree
+  vtkNew<vtkCompositePolyDataMapper2> TintedBlocks; // two spheres coloured by height
+  vtkNew<vtkLookupTable> BlockTints;
   vtkNew<vtkTexture> CanvasTexture;
   vtkActor* Sphere = nullptr;
   vtkActor* Box = nullptr;
@@ -744,6 +746,32 @@ public:
     vtkNew<vtkActor> rootActor;
     rootActor->SetMapper(this->RootBlock);
     this->View.Renderer->AddActor(rootActor);
+
+    // The first block translucent, the second opaque until its colours take alpha.
+    vtkNew<vtkMultiBlockDataSet> tinted;
+    for (unsigned int block = 0; block < 2; ++block)
+    {
+      vtkNew<vtkPolyData> ball;
+      ball->DeepCopy(this->TintedBall);
+      vtkPoints* points = ball->GetPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        points->GetPoint(i, p);
+        points->SetPoint(i, p[0] + 0.8 * block, p[1], p[2] + 2.4);
+      }
+      tinted->SetBlock(block, ball);
+    }
+    this->View.Keep.push_back(tinted.GetPointer());
+    this->TintedBlocks->SetInputDataObject(tinted);
+    vtkNew<vtkCompositeDataDisplayAttributes> tintedAttributes;
+    this->TintedBlocks->SetCompositeDataDisplayAttributes(tintedAttributes);
+    this->TintedBlocks->SetBlockOpacity(1, 0.5);
+    this->TintedBlocks->SetLookupTable(this->BlockTints);
+    this->TintedBlocks->SetScalarRange(0.0, 0.6);
+    vtkNew<vtkActor> tintedActor;
+    tintedActor->SetMapper(this->TintedBlocks);
+    this->View.Renderer->AddActor(tintedActor);
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -956,6 +984,14 @@ void TestReuseUnchangedShadows()
     // A mapper's selection is drawn with its surface, into the depth.
     { "a selection of the mapper's cells", false,
       [&] { scene.Tinted->GetMapper()->SetSelection(scene.CellsSelected); } },
+    // A composite mapper sorts its blocks into VTK's opaque and translucent passes by their
+    // colours: the actor, translucent already, does not show it.
+    { "a lookup table making a second block translucent", false,
+      [&]
+      {
+        scene.BlockTints->SetAlphaRange(0.4, 0.4);
+        scene.BlockTints->ForceBuild();
+      } },
     // vtkCompositePolyDataMapper2 keys attributes by its input itself, tree or not.
     { "a composite mapper's one polydata hidden as its root block", false,
       [&] { scene.RootBlock->SetBlockVisibility(0, false); } },
