@@ -43,9 +43,11 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
 #include "vtkShaderProperty.h"
 #include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 
@@ -149,11 +151,23 @@ DrawnOpacity ActorOpacity(vtkActor* actor)
   return { seenThrough ? std::min(actor->GetProperty()->GetOpacity(), 1.0) : 1.0, seenThrough };
 }
 
-/// The same for a block of a composite mapper, whose opacity (the nearest block's that sets
-/// one, else the property's) decides as vtkCompositePolyDataMapper2 does.
-DrawnOpacity BlockOpacity(vtkActor* actor, double opacity)
+/// The same for a block of a composite mapper, as vtkCompositePolyDataMapper2 sorts its blocks
+/// into VTK's passes (BuildRenderValues): opaque where its opacity (the nearest block's that sets
+/// one, else the property's) is 1, the actor's texture is opaque and, with scalars shown, the
+/// lookup table draws the block's scalars opaque; ForceOpaque and ForceTranslucent override.
+DrawnOpacity BlockOpacity(
+  vtkActor* actor, vtkCompositePolyDataMapper2* mapper, vtkPolyData* block, double opacity)
 {
-  const bool seenThrough = opacity < 1.0 || actor->GetForceTranslucent();
+  bool opaque = opacity >= 1.0 && !(actor->GetTexture() && actor->GetTexture()->IsTranslucent());
+  if (opaque && mapper->GetScalarVisibility())
+  {
+    int cellFlag = 0;
+    vtkDataArray* scalars = vtkAbstractMapper::GetScalars(block, mapper->GetScalarMode(),
+      mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+    opaque = mapper->GetLookupTable()->IsOpaque(
+               scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
+  }
+  const bool seenThrough = actor->GetForceTranslucent() || (!opaque && !actor->GetForceOpaque());
   return { seenThrough ? std::min(opacity, 1.0) : 1.0, seenThrough };
 }
 
@@ -500,14 +514,22 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::size_t part = 0;
-  this->Blocks(actor, composite != nullptr,
+  bool opaqueAtFull = false;
+  this->Blocks(actor, composite,
     composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, data, matrix, true,
-    actor->GetProperty()->GetOpacity(), part, surfaces);
+    actor->GetProperty()->GetOpacity(), part, opaqueAtFull, surfaces);
+  if (opaqueAtFull)
+  {
+    this->Warn(owner, leaf,
+      "has blocks drawn translucent with an opacity of 1 (colours with alpha, a texture or "
+      "ForceTranslucent): their shadows take the opacity, 1, and are opaque");
+  }
 }
 
-void SceneWalk::Blocks(vtkActor* actor, bool composite,
+void SceneWalk::Blocks(vtkActor* actor, vtkCompositePolyDataMapper2* composite,
   vtkCompositeDataDisplayAttributes* attributes, vtkDataObject* node, const glm::dmat4& matrix,
-  bool visible, double opacity, std::size_t& part, std::vector<DrawnSurface>& surfaces)
+  bool visible, double opacity, std::size_t& part, bool& opaqueAtFull,
+  std::vector<DrawnSurface>& surfaces)
 {
   // Block attributes apply to a node and everything under it unless a child sets its own,
   // as vtkCompositePolyDataMapper2 applies them.
@@ -525,7 +547,8 @@ void SceneWalk::Blocks(vtkActor* actor, bool composite,
     {
       if (child)
       {
-        this->Blocks(actor, composite, attributes, child, matrix, visible, opacity, part, surfaces);
+        this->Blocks(actor, composite, attributes, child, matrix, visible, opacity, part,
+          opaqueAtFull, surfaces);
       }
       else
       {
@@ -535,13 +558,16 @@ void SceneWalk::Blocks(vtkActor* actor, bool composite,
     return;
   }
   const std::size_t index = part++;
-  // A composite mapper draws each block by its opacity; otherwise the actor decides.
-  const DrawnOpacity drawn = composite ? BlockOpacity(actor, opacity) : ActorOpacity(actor);
   // vtkCompositePolyDataMapper2 draws its polydata blocks only: other datasets show nothing.
-  if (!visible || !(opacity > 0.0) || (composite && !vtkPolyData::SafeDownCast(node)))
+  auto block = vtkPolyData::SafeDownCast(node);
+  if (!visible || !(opacity > 0.0) || (composite && !block))
   {
     return;
   }
+  // A composite mapper draws each block by its opacity and colours; otherwise the actor decides.
+  const DrawnOpacity drawn =
+    composite ? BlockOpacity(actor, composite, block, opacity) : ActorOpacity(actor);
+  opaqueAtFull = opaqueAtFull || (composite && drawn.SeenThrough && drawn.Opacity >= 1.0);
   if (vtkDataObject* clipped =
         this->Clipped.Apply(actor, index, node, matrix, DrawnClippingPlanes(actor->GetMapper())))
   {

@@ -34,6 +34,7 @@
 
 class vtkActor;
 class vtkCompositeDataDisplayAttributes;
+class vtkCompositePolyDataMapper2;
 class vtkDataObject;
 class vtkGlyph3DMapper;
 class vtkLODProp3D;
@@ -133,9 +134,12 @@ private:
     std::vector<DrawnSurface>& surfaces);
   /// A vtkLODProp3D: the level it is picked by, at its matrix.
   void LODLevel(vtkLODProp3D* levels, vtkObject* owner, std::vector<DrawnSurface>& surfaces);
-  /// `composite`: drawn by a vtkCompositePolyDataMapper2, which decides per block.
-  void Blocks(vtkActor* actor, bool composite, vtkCompositeDataDisplayAttributes* attributes,
-    vtkDataObject* node, const glm::dmat4& matrix, bool visible, double opacity, std::size_t& part,
+  /// `composite`: the vtkCompositePolyDataMapper2 drawing them, which decides per block, or
+  /// null. `opaqueAtFull` is set where such a block is seen through at an opacity of 1 (its
+  /// colours or texture have alpha, or ForceTranslucent): its shadow takes that opacity.
+  void Blocks(vtkActor* actor, vtkCompositePolyDataMapper2* composite,
+    vtkCompositeDataDisplayAttributes* attributes, vtkDataObject* node, const glm::dmat4& matrix,
+    bool visible, double opacity, std::size_t& part, bool& opaqueAtFull,
     std::vector<DrawnSurface>& surfaces);
   /// Mappers that draw many instances of a few shapes (glyphs, imposter spheres and sticks, a
   /// molecule's both): adds their instances and returns true, or returns false for any other.
