@@ -158,15 +158,9 @@ DrawnOpacity ActorOpacity(vtkActor* actor)
 DrawnOpacity BlockOpacity(
   vtkActor* actor, vtkCompositePolyDataMapper2* mapper, vtkPolyData* block, double opacity)
 {
-  bool opaque = opacity >= 1.0 && !(actor->GetTexture() && actor->GetTexture()->IsTranslucent());
-  if (opaque && mapper->GetScalarVisibility())
-  {
-    int cellFlag = 0;
-    vtkDataArray* scalars = vtkAbstractMapper::GetScalars(block, mapper->GetScalarMode(),
-      mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-    opaque = mapper->GetLookupTable()->IsOpaque(
-               scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
-  }
+  const bool opaque = opacity >= 1.0 &&
+    !(actor->GetTexture() && actor->GetTexture()->IsTranslucent()) &&
+    BlockColoursOpaque(mapper, block);
   const bool seenThrough = actor->GetForceTranslucent() || (!opaque && !actor->GetForceOpaque());
   return { seenThrough ? std::min(opacity, 1.0) : 1.0, seenThrough };
 }
@@ -230,6 +224,20 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop)
 bool IsExactly(vtkObject* object, const char* className)
 {
   return object && std::strcmp(object->GetClassName(), className) == 0;
+}
+
+bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block)
+{
+  if (!mapper->GetScalarVisibility())
+  {
+    return true;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(block, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  // Without scalars VTK still asks the lookup table, which answers for its whole table.
+  return mapper->GetLookupTable()->IsOpaque(
+           scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
 }
 
 bool HasCustomShaders(vtkActor* actor)

@@ -91,6 +91,11 @@ inline vtk::DataObjectTreeOptions EveryLeaf()
 /// otherwise).
 bool IsExactly(vtkObject* object, const char* className);
 
+/// Whether vtkCompositePolyDataMapper2 takes `block`'s colours for opaque as it sorts its blocks
+/// into VTK's opaque and translucent passes (BuildRenderValues): with scalars shown, its lookup
+/// table decides for the block's scalars, or for its whole table where the block has none.
+bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block);
+
 /// Whether `actor`'s shader property holds shader code or replacements of the user's.
 bool HasCustomShaders(vtkActor* actor);
 

@@ -27,6 +27,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProp3D.h"
 #include "vtkPropCollection.h"
@@ -74,41 +75,17 @@ struct LegacyShaders : vtkOpenGLPolyDataMapper
   }
 };
 
-/// Whether a composite mapper colours some leaf of its input by scalars: it decides each block's
-/// pass (opaque or translucent) from them, which the actor's opacity does not show.
-bool ColoursBlocksByScalars(vtkCompositePolyDataMapper2* mapper)
-{
-  auto tree = vtkDataObjectTree::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!mapper->GetScalarVisibility() || !tree)
-  {
-    return mapper->GetScalarVisibility();
-  }
-  for (vtkDataObject* leaf : vtk::Range(tree, EveryLeaf()))
-  {
-    int cellFlag = 0;
-    if (vtkAbstractMapper::GetScalars(vtkDataSet::SafeDownCast(leaf), mapper->GetScalarMode(),
-          mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 /// Whether `actor`'s colours can change what VTK draws of it, not only how it looks: custom
 /// shader code may read them; VTK drops fragments of alpha 0 even from an actor forced opaque,
 /// or through a texture (whose alpha VTK may not count as translucency, and whose name,
-/// coordinates and interpolation decide where it applies); and a composite mapper sorts its
-/// blocks into passes by their scalars' colours. Otherwise colours with alpha make the whole
-/// actor translucent, which AddDrawnLook records.
+/// coordinates and interpolation decide where it applies). Otherwise colours with alpha make
+/// the actor translucent, or a composite mapper's block (AddBlockShapes), which is recorded.
 bool ColoursShapeIt(vtkActor* actor)
 {
   auto mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
-  auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   return actor->GetForceOpaque() || HasCustomShaders(actor) ||
     (mapper && LegacyShaders::Of(mapper)) || actor->GetTexture() ||
-    actor->GetProperty()->GetNumberOfTextures() > 0 ||
-    (composite && ColoursBlocksByScalars(composite));
+    actor->GetProperty()->GetNumberOfTextures() > 0;
 }
 
 /// What of an actor's look can change its shadows or the depth they are drawn against: whether
@@ -180,20 +157,30 @@ bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper)
 }
 
 /// Every node's visibility and opacity where `blocks` sets one, as the composite mappers read
-/// them (the nearest node that sets one decides); block colours change no shadow.
-void AddBlockShapes(
-  ShadowInputs& inputs, vtkCompositeDataDisplayAttributes* blocks, vtkDataObject* data)
+/// them (the nearest node that sets one decides), and for a `composite` mapper whether each
+/// block's colours are opaque, by which it sorts blocks into VTK's opaque and translucent passes;
+/// block colours change no shadow.
+void AddBlockShapes(ShadowInputs& inputs, vtkCompositeDataDisplayAttributes* blocks,
+  vtkDataObject* data, vtkCompositePolyDataMapper2* composite = nullptr)
 {
   inputs.Add(blocks);
-  if (!blocks || !data)
+  if (!data || (!blocks && !composite))
   {
     return;
   }
   const auto addNode = [&](vtkDataObject* node)
   {
     inputs.Add(node);
-    inputs.Add(blocks->HasBlockVisibility(node) ? blocks->GetBlockVisibility(node) : -1.0);
-    inputs.Add(blocks->HasBlockOpacity(node) ? blocks->GetBlockOpacity(node) : -1.0);
+    if (blocks)
+    {
+      inputs.Add(blocks->HasBlockVisibility(node) ? blocks->GetBlockVisibility(node) : -1.0);
+      inputs.Add(blocks->HasBlockOpacity(node) ? blocks->GetBlockOpacity(node) : -1.0);
+    }
+    auto block = vtkPolyData::SafeDownCast(node);
+    if (composite && block)
+    {
+      inputs.Add(static_cast<double>(BlockColoursOpaque(composite, block)));
+    }
   };
   addNode(data); // keyed by the input itself too, tree or not
   if (auto tree = vtkDataObjectTree::SafeDownCast(data))
@@ -459,8 +446,8 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   }
   if (auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
   {
-    AddBlockShapes(
-      *this, composite->GetCompositeDataDisplayAttributes(), composite->GetInputDataObject(0, 0));
+    AddBlockShapes(*this, composite->GetCompositeDataDisplayAttributes(),
+      composite->GetInputDataObject(0, 0), composite);
   }
   if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
   {
