@@ -516,7 +516,8 @@ MeshCache* ShadowCaches::FindMesh(
 
 CasterCache* ShadowCaches::FindCaster(vtkActor* actor, std::size_t part)
 {
-  std::unique_ptr<CasterCache>& caster = this->Casters[{ actor, part }];
+  const std::size_t occurrence = this->FoundThisFrame[{ actor, part }]++;
+  std::unique_ptr<CasterCache>& caster = this->Casters[{ actor, part, occurrence }];
   if (!caster || caster->Actor != actor)
   {
     caster.reset(new CasterCache);
@@ -528,6 +529,7 @@ CasterCache* ShadowCaches::FindCaster(vtkActor* actor, std::size_t part)
 
 void ShadowCaches::BeginFrame()
 {
+  this->FoundThisFrame.clear();
   for (auto& mesh : this->Meshes)
   {
     mesh.second->Used = false;

@@ -28,6 +28,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <tuple>
 
 class vtkActor;
 class vtkDataObject;
@@ -258,11 +259,16 @@ struct ShadowCaches
     bool Empty = false;
   };
   std::map<vtkDataObject*, WarnedData> Warned;
-  /// Keyed by actor and part (penumbra::DrawnSurface): a block or glyph of it.
-  std::map<std::pair<vtkActor*, std::size_t>, std::unique_ptr<CasterCache>> Casters;
+  /// Keyed by actor, part (penumbra::DrawnSurface: a block or glyph of it) and occurrence in the
+  /// frame: an actor VTK draws twice (added to the renderer and a part of an assembly) casts
+  /// from each place.
+  std::map<std::tuple<vtkActor*, std::size_t, std::size_t>, std::unique_ptr<CasterCache>> Casters;
+  /// How often each actor and part was found this frame.
+  std::map<std::pair<vtkActor*, std::size_t>, std::size_t> FoundThisFrame;
 
   /// Finds or creates the mesh of `data` and brings it up to date.
   MeshCache* FindMesh(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner);
+  /// Finds or creates the cache of the next occurrence this frame of `actor`'s `part`.
   CasterCache* FindCaster(vtkActor* actor, std::size_t part);
   /// Marks everything unused before a frame; PurgeUnused frees what the frame did not touch.
   void BeginFrame();

@@ -111,6 +111,9 @@ private:
   bool& Flag;
 };
 
+/// Puts `pass` among the render passes that edit `prop`'s shaders, once: an assembly's part keeps
+/// the assembly's keys after VTK drew it, so a part also added to the renderer shares them, and
+/// a second entry would edit its shaders twice (declarations repeated: they fail to compile).
 void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
   vtkInformation* info = prop->GetPropertyKeys();
@@ -120,7 +123,15 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
     prop->SetPropertyKeys(keys);
     info = keys;
   }
-  info->Append(vtkOpenGLRenderPass::RenderPasses(), pass);
+  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
+  for (int i = 0; i < info->Length(passes); ++i)
+  {
+    if (info->Get(passes, i) == pass)
+    {
+      return;
+    }
+  }
+  info->Append(passes, pass);
 }
 
 } // namespace

@@ -1228,6 +1228,30 @@ void TestDataObjectSwapped()
   }
 }
 
+/// An actor that is a part of an assembly and also in the renderer (VTK's own assembly.py test
+/// does it) shares the assembly's keys once VTK has drawn it as a part: its shaders are edited
+/// once, not once per entry (repeated declarations failed to compile, and VTK crashed).
+void TestActorInAssemblyAndRenderer()
+{
+  PassScene view(200, 150);
+  view.Ground();
+  vtkActor* shared = view.Sphere(0.0, 1.0, 0.0, 0.5, 24);
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(shared);
+  assembly->SetPosition(1.2, 0.0, 0.0);
+  view.Renderer->AddActor(assembly);
+  view.Camera(3, 4, 7, 0, 0.5, 0);
+  const WarningLog warnings(view.Pass);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    view.Window->Render(); // a segmentation fault on the second before the fix
+  }
+  const Comparison comparison = view.Render();
+  std::printf("     %zu warnings\n", warnings.Messages.size());
+  Check(warnings.Messages.empty(), "a part also in the renderer: its shaders edited once");
+  CheckAgainstTruth("a part also in the renderer", comparison);
+}
+
 /// A soft shadow pass inside another's delegate chain draws its delegate unshadowed (the outer
 /// one shadows the frame) and a pass inside its own chain draws nothing the second time: one
 /// warning each, no receiver shader edited twice, no endless recursion.
@@ -1585,6 +1609,7 @@ int main(int argc, char* argv[])
     { "ReuseUnchangedShadows", TestReuseUnchangedShadows },
     { "CameraLeftAlone", TestCameraLeftAlone },
     { "DataObjectSwapped", TestDataObjectSwapped },
+    { "ActorInAssemblyAndRenderer", TestActorInAssemblyAndRenderer },
     { "WideFrame", TestWideFrame },
     { "NestedPasses", TestNestedPasses },
     { "ContextGoneWhileDetached", TestContextGoneWhileDetached },
