@@ -69,7 +69,7 @@ vtkDataObject* ClippedSurfaces::Apply(vtkActor* actor, std::size_t part, vtkData
   {
     return data;
   }
-  Chain& chain = this->Chains[{ actor, part }];
+  Chain& chain = this->Chains[{ actor, part, this->AppliedThisWalk[{ actor, part }]++ }];
   chain.Used = true;
   // Reconnecting marks the filters modified, so only a new input or plane count does.
   if (chain.Input != data || chain.Planes.size() != planes.size())
@@ -100,6 +100,7 @@ vtkDataObject* ClippedSurfaces::Apply(vtkActor* actor, std::size_t part, vtkData
 
 void ClippedSurfaces::PurgeUnused()
 {
+  this->AppliedThisWalk.clear();
   for (auto it = this->Chains.begin(); it != this->Chains.end();)
   {
     if (!it->second.Used)

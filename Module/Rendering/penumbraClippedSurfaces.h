@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -46,7 +47,8 @@ public:
   /// where nothing of it is left.
   vtkDataObject* Apply(vtkActor* actor, std::size_t part, vtkDataObject* data,
     const glm::dmat4& objectToWorld, const std::vector<glm::dvec4>& planes);
-  /// Drops the chains not applied since the last call: props removed, hidden or unclipped.
+  /// Drops the chains not applied since the last call: props removed, hidden or unclipped. Ends
+  /// the walk: the next Apply of an actor's part is its first place again.
   void PurgeUnused();
 
 private:
@@ -60,7 +62,10 @@ private:
   };
   void Connect(Chain& chain, vtkDataObject* data, std::size_t planes);
 
-  std::map<std::pair<vtkActor*, std::size_t>, Chain> Chains;
+  /// Keyed by actor, part and place in the walk: an actor drawn twice (added to the renderer
+  /// and a part of an assembly) is cut at each place's matrix.
+  std::map<std::tuple<vtkActor*, std::size_t, std::size_t>, Chain> Chains;
+  std::map<std::pair<vtkActor*, std::size_t>, std::size_t> AppliedThisWalk;
 };
 
 } // namespace penumbra

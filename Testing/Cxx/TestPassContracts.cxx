@@ -1250,6 +1250,15 @@ void TestActorInAssemblyAndRenderer()
   std::printf("     %zu warnings\n", warnings.Messages.size());
   Check(warnings.Messages.empty(), "a part also in the renderer: its shaders edited once");
   CheckAgainstTruth("a part also in the renderer", comparison);
+
+  // A clipping plane in world coordinates cuts each place of it where it stands: the part at
+  // x = 1.2 loses its half beyond x = 1.2, the actor at the origin nothing.
+  vtkNew<vtkPlane> keepLeft;
+  keepLeft->SetOrigin(1.2, 0.0, 0.0);
+  keepLeft->SetNormal(-1.0, 0.0, 0.0);
+  shared->GetMapper()->AddClippingPlane(keepLeft);
+  view.Window->Render();
+  CheckAgainstTruth("a clipped part also in the renderer", view.Render());
 }
 
 /// A soft shadow pass inside another's delegate chain draws its delegate unshadowed (the outer
