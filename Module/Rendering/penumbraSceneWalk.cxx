@@ -154,15 +154,25 @@ DrawnOpacity ActorOpacity(vtkActor* actor)
 /// The same for a block of a composite mapper, as vtkCompositePolyDataMapper2 sorts its blocks
 /// into VTK's passes (BuildRenderValues): opaque where its opacity (the nearest block's that sets
 /// one, else the property's) is 1, the actor's texture is opaque and, with scalars shown, the
-/// lookup table draws the block's scalars opaque; ForceOpaque and ForceTranslucent override.
+/// lookup table draws the block's scalars opaque. ForceOpaque draws every block opaque, and
+/// ForceTranslucent every block seen through. An opaque block is drawn in the opaque pass only,
+/// which VTK skips for an actor it takes for translucent (a property opacity below 1 under a
+/// block's 1): drawn nowhere, opacity 0.
 DrawnOpacity BlockOpacity(
   vtkActor* actor, vtkCompositePolyDataMapper2* mapper, vtkPolyData* block, double opacity)
 {
+  if (actor->GetForceOpaque())
+  {
+    return { 1.0, false };
+  }
   const bool opaque = opacity >= 1.0 &&
     !(actor->GetTexture() && actor->GetTexture()->IsTranslucent()) &&
     BlockColoursOpaque(mapper, block);
-  const bool seenThrough = actor->GetForceTranslucent() || (!opaque && !actor->GetForceOpaque());
-  return { seenThrough ? std::min(opacity, 1.0) : 1.0, seenThrough };
+  if (actor->GetForceTranslucent() || !opaque)
+  {
+    return { std::min(opacity, 1.0), true };
+  }
+  return { actor->HasOpaqueGeometry() ? 1.0 : 0.0, false };
 }
 
 /// The points an imposter mapper draws its shapes at, or null where VTK draws none: no points,
@@ -235,9 +245,11 @@ bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block)
   int cellFlag = 0;
   vtkDataArray* scalars = vtkAbstractMapper::GetScalars(block, mapper->GetScalarMode(),
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-  // Without scalars VTK still asks the lookup table, which answers for its whole table.
-  return mapper->GetLookupTable()->IsOpaque(
-           scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
+  // Without scalars VTK still asks the lookup table, which answers for its whole table. Built
+  // first, as VTK builds it: asked before, it would keep its old answer for VTK too.
+  vtkScalarsToColors* table = mapper->GetLookupTable();
+  table->Build();
+  return table->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
 }
 
 bool HasCustomShaders(vtkActor* actor)
@@ -575,6 +587,10 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositePolyDataMapper2* composite,
   // A composite mapper draws each block by its opacity and colours; otherwise the actor decides.
   const DrawnOpacity drawn =
     composite ? BlockOpacity(actor, composite, block, opacity) : ActorOpacity(actor);
+  if (!(drawn.Opacity > 0.0))
+  {
+    return;
+  }
   opaqueAtFull = opaqueAtFull || (composite && drawn.SeenThrough && drawn.Opacity >= 1.0);
   if (vtkDataObject* clipped =
         this->Clipped.Apply(actor, index, node, matrix, DrawnClippingPlanes(actor->GetMapper())))
