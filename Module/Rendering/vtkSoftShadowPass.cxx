@@ -114,7 +114,8 @@ private:
 /// Puts `pass` among the render passes that edit `prop`'s shaders, once: an assembly's part keeps
 /// the assembly's keys after VTK drew it, so a part also added to the renderer shares them, and
 /// a second entry would edit its shaders twice (declarations repeated: they fail to compile).
-void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
+/// Returns the keys it went into, which VTK may take from the prop while it draws.
+vtkInformation* AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
   vtkInformation* info = prop->GetPropertyKeys();
   if (!info)
@@ -128,10 +129,11 @@ void AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
   {
     if (info->Get(passes, i) == pass)
     {
-      return;
+      return info;
     }
   }
   info->Append(passes, pass);
+  return info;
 }
 
 } // namespace
@@ -170,6 +172,8 @@ public:
   }
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
+  /// The property keys the pass put itself into this frame (AddRenderPassKey).
+  std::vector<vtkSmartPointer<vtkInformation>> ReceiverKeys;
   /// PropsCulledInView this frame: VTK does not draw them, so they cast nothing.
   std::vector<vtkProp*> CulledInView;
   /// Every receiver's box (penumbra::StableReceiverBox) and its pieces around each receiver:
@@ -857,7 +861,7 @@ void vtkSoftShadowPass::UpdateShaderConfiguration()
 void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
-  internals.Receivers.clear();
+  this->RemoveReceiverKeys(); // none are left from a frame that ended early
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     // Any prop with opaque surfaces: an assembly hands its keys to its parts as VTK draws them,
@@ -873,7 +877,7 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
     {
       for (vtkProp* drawn : penumbra::PropsDrawnFor(prop))
       {
-        AddRenderPassKey(drawn, this);
+        internals.ReceiverKeys.emplace_back(AddRenderPassKey(drawn, this));
         internals.Receivers.push_back(drawn);
       }
     }
@@ -1165,10 +1169,13 @@ void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
 
 void vtkSoftShadowPass::RemoveReceiverKeys()
 {
-  for (vtkProp* prop : this->Internals->Receivers)
+  // From the keys the pass went into: an assembly gives its parts its own keys as VTK draws
+  // them, and a part also in the renderer keeps them.
+  for (vtkInformation* keys : this->Internals->ReceiverKeys)
   {
-    prop->GetPropertyKeys()->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
+    keys->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
   }
+  this->Internals->ReceiverKeys.clear();
   this->Internals->Receivers.clear();
 }
 

@@ -26,6 +26,7 @@
 #include "vtkImageCanvasSource2D.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
 #include "vtkLightsPass.h"
 #include "vtkLookupTable.h"
@@ -35,6 +36,7 @@
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLLight.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOverlayPass.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
@@ -1242,13 +1244,34 @@ void TestActorInAssemblyAndRenderer()
   view.Renderer->AddActor(assembly);
   view.Camera(3, 4, 7, 0, 0.5, 0);
   const WarningLog warnings(view.Pass);
-  for (int frame = 0; frame < 3; ++frame)
-  {
-    view.Window->Render(); // a segmentation fault on the second before the fix
-  }
+  vtkNew<vtkInformation> ownKeys; // the actor's keys before VTK gives it the assembly's
+  shared->SetPropertyKeys(ownKeys);
+  view.Window->Render(); // the first frame's objects take references of their own
+  const int references = view.Pass->GetReferenceCount();
+  view.Window->Render(); // a segmentation fault here before the fix
+  view.Window->Render();
   const Comparison comparison = view.Render();
   std::printf("     %zu warnings\n", warnings.Messages.size());
   Check(warnings.Messages.empty(), "a part also in the renderer: its shaders edited once");
+  const auto keepsPass = [&](vtkInformation* keys)
+  {
+    vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
+    for (int i = 0; keys && i < keys->Length(passes); ++i)
+    {
+      if (keys->Get(passes, i) == view.Pass)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::printf("     pass in the actor's own keys %d, its keys now %d, the assembly's %d; "
+              "references %d, after the first frame %d\n",
+    keepsPass(ownKeys), keepsPass(shared->GetPropertyKeys()),
+    keepsPass(assembly->GetPropertyKeys()), view.Pass->GetReferenceCount(), references);
+  Check(!keepsPass(ownKeys) && !keepsPass(shared->GetPropertyKeys()) &&
+      !keepsPass(assembly->GetPropertyKeys()) && view.Pass->GetReferenceCount() == references,
+    "after the frame no keys hold the pass, and it is held no more than after the first");
   CheckAgainstTruth("a part also in the renderer", comparison);
 
   // A clipping plane in world coordinates cuts each place of it where it stands: the part at
