@@ -21,6 +21,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkCylinderSource.h"
+#include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -51,8 +52,10 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
 #include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
@@ -1121,6 +1124,30 @@ void VisibleLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attri
   }
 }
 
+/// Whether vtkCompositePolyDataMapper2 draws `block` (of `opacity`) in neither of VTK's passes:
+/// it takes a block for opaque at opacity 1 with an opaque actor texture and, showing scalars,
+/// colours its lookup table calls opaque, and draws such a block only in the opaque pass, which
+/// VTK skips for an actor it takes for translucent (a property opacity below 1, say).
+bool DrawnInNeitherPass(
+  vtkActor* actor, vtkCompositePolyDataMapper2* mapper, vtkPolyData* block, double opacity)
+{
+  if (opacity < 1.0 || actor->GetForceTranslucent() || actor->HasOpaqueGeometry() ||
+    (actor->GetTexture() && actor->GetTexture()->IsTranslucent()))
+  {
+    return false;
+  }
+  if (!mapper->GetScalarVisibility())
+  {
+    return true;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(block, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  vtkScalarsToColors* colours = mapper->GetLookupTable();
+  colours->Build();
+  return colours->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
+}
+
 /// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
 /// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
 /// property's; 1 where VTK draws it opaque.
@@ -1196,10 +1223,19 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
       continue;
     }
     auto points = vtkDataSet::SafeDownCast(leaf.first);
-    const double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
-    if (blocks && !vtkPolyData::SafeDownCast(leaf.first))
+    double leafOpacity = !blocks && actor->HasOpaqueGeometry() ? 1.0 : leaf.second;
+    auto polyData = vtkPolyData::SafeDownCast(leaf.first);
+    if (blocks && !polyData)
     {
       continue; // vtkCompositePolyDataMapper2 draws no other datasets
+    }
+    if (blocks && actor->GetForceOpaque())
+    {
+      leafOpacity = 1.0; // every block in VTK's opaque pass
+    }
+    else if (blocks && DrawnInNeitherPass(actor, blocks, polyData, leaf.second))
+    {
+      continue;
     }
     if (!glyphs)
     {
