@@ -109,6 +109,27 @@ float VisibilityAt(GlassScene& scene, double x, double y, double z)
   return pass[static_cast<std::size_t>(py) * Width + px];
 }
 
+/// Adds an actor drawing a sphere (centre, radius) as the one block of a multiblock under a
+/// vtkCompositePolyDataMapper2, the block's opacity set and the actor's property given another.
+vtkActor* AddSphereBlock(
+  PassScene& scene, const glm::dvec4& sphere, double blockOpacity, double actorOpacity)
+{
+  auto source = SphereSource(sphere.x, sphere.y, sphere.z, sphere.w, 32, 16);
+  source->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, source->GetOutputDataObject(0));
+  vtkNew<vtkCompositePolyDataMapper2> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  attributes->SetBlockOpacity(source->GetOutputDataObject(0), blockOpacity);
+  mapper->SetCompositeDataDisplayAttributes(attributes);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(actorOpacity);
+  scene.Renderer->AddActor(actor);
+  return actor;
+}
+
 /// A point light: the sphere's shadow lets (1 - a)^2 through, the sheet's 1 - a, and both
 /// agree with the truth; a change of opacity shows in the next frame.
 void TestHardShadows()
@@ -246,19 +267,8 @@ void TestOpacityAsVTKDrawsIt()
   GlassScene scene(0.5);
   scene.Pass->SetMethodToHardVolumes();
   scene.Glass->ForceOpaqueOn(); // opacity 0.5, drawn opaque
-  auto sphere = SphereSource(1.3, 1.4, -1.8, 0.4, 32, 16);
-  sphere->Update();
-  vtkNew<vtkMultiBlockDataSet> blocks;
-  blocks->SetBlock(0, sphere->GetOutputDataObject(0));
-  vtkNew<vtkCompositePolyDataMapper2> mapper;
-  mapper->SetInputDataObject(blocks);
-  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
-  attributes->SetBlockOpacity(sphere->GetOutputDataObject(0), 0.5);
-  mapper->SetCompositeDataDisplayAttributes(attributes);
-  vtkNew<vtkActor> composite;
-  composite->SetMapper(mapper);
-  composite->GetProperty()->SetOpacity(0.5); // replaced by the block's 0.5, not multiplied
-  scene.Renderer->AddActor(composite);
+  // The actor's 0.5 is replaced by the block's 0.5, not multiplied.
+  AddSphereBlock(scene, glm::dvec4(1.3, 1.4, -1.8, 0.4), 0.5, 0.5);
   const Agreement agreement = CompareTruth(scene, 1, 0.02f);
   const glm::dvec3 light(-2, 6, 3);
   auto under = [&](const glm::dvec3& centre)
@@ -361,19 +371,7 @@ void TestOpaqueBlockOfTranslucentActor()
   scene.Ground();
   scene.Camera(3.0, 5.0, 8.0, 0.0, 0.5, 0.0);
   scene.Pass->SetMethodToHardVolumes();
-  auto sphere = SphereSource(0.0, 1.2, 0.0, 0.5, 32, 16);
-  sphere->Update();
-  vtkNew<vtkMultiBlockDataSet> blocks;
-  blocks->SetBlock(0, sphere->GetOutputDataObject(0));
-  vtkNew<vtkCompositePolyDataMapper2> mapper;
-  mapper->SetInputDataObject(blocks);
-  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
-  attributes->SetBlockOpacity(sphere->GetOutputDataObject(0), 1.0);
-  mapper->SetCompositeDataDisplayAttributes(attributes);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetOpacity(0.5);
-  scene.Renderer->AddActor(actor);
+  vtkActor* actor = AddSphereBlock(scene, glm::dvec4(0.0, 1.2, 0.0, 0.5), 1.0, 0.5);
   scene.Window->Render();
   const std::vector<unsigned char> shown = WindowColours(scene.Window, scene.Renderer);
   const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
