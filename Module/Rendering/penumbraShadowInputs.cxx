@@ -21,6 +21,7 @@
 #include "vtkImageMapper3D.h"
 #include "vtkImageProperty.h"
 #include "vtkImageSlice.h"
+#include "vtkInformation.h"
 #include "vtkLODProp3D.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
@@ -119,20 +120,49 @@ void AddDrawnLook(ShadowInputs& inputs, vtkActor* actor)
   }
 }
 
+/// What places and picks a glyph mapper's glyphs (penumbra::SceneWalk::Glyphs reads the same):
+/// scaling, orientation, source indexing, masking, the arrays chosen for them, the source table.
+void AddGlyphPlacement(ShadowInputs& inputs, vtkGlyph3DMapper* glyphs)
+{
+  const double* range = glyphs->GetRange();
+  inputs.Add(glm::dvec4(
+    glyphs->GetScaling(), glyphs->GetScaleMode(), glyphs->GetScaleFactor(), glyphs->GetClamping()));
+  inputs.Add(glm::dvec4(range[0], range[1], glyphs->GetOrient(), glyphs->GetOrientationMode()));
+  inputs.Add(glm::dvec4(glyphs->GetSourceIndexing(), glyphs->GetMasking(),
+    glyphs->GetUseSourceTableTree(), glyphs->GetUseSelectionIds()));
+  vtkDataObjectTree* table = glyphs->GetSourceTableTree();
+  inputs.Add(table);
+  inputs.AddTime(table ? table->GetMTime() : 0);
+  for (int array : { vtkGlyph3DMapper::SCALE, vtkGlyph3DMapper::SOURCE_INDEX,
+         vtkGlyph3DMapper::MASK, vtkGlyph3DMapper::ORIENTATION })
+  {
+    // SetScaleArray and its kin set these (SetInputArrayToProcess), which the times record.
+    vtkInformation* chosen = glyphs->GetInputArrayInformation(array);
+    inputs.Add(chosen);
+    inputs.AddTime(chosen ? chosen->GetMTime() : 0);
+  }
+}
+
 /// What of `mapper` can change the shape or depth VTK draws, for the mappers whose settings are
-/// known (VTK 9.1's polydata, composite polydata and dataset mappers) of an actor whose colours
-/// shape nothing (not ColoursShapeIt): their time moves with colour settings too (scalar range,
-/// lookup table, colour array), which change nothing of the shadows but translucency, recorded
-/// with the actor (AddDrawnLook). Returns false for any other mapper: its time is recorded
-/// instead.
+/// known (VTK 9.1's polydata, composite polydata, dataset and glyph mappers) of an actor whose
+/// colours shape nothing (not ColoursShapeIt): their time moves with colour settings too
+/// (scalar range, lookup table, colour array), which change nothing of the shadows but
+/// translucency, recorded with the actor (AddDrawnLook). Returns false for any other mapper: its
+/// time is recorded instead.
 bool AddDrawnShape(ShadowInputs& inputs, vtkMapper* mapper)
 {
   auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper);
   const bool known = IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
-    IsExactly(mapper, "vtkCompositePolyDataMapper2") || IsExactly(mapper, "vtkDataSetMapper");
+    IsExactly(mapper, "vtkCompositePolyDataMapper2") || IsExactly(mapper, "vtkDataSetMapper") ||
+    IsExactly(mapper, "vtkOpenGLGlyph3DMapper");
   if (!known)
   {
     return false;
+  }
+  if (glyphs)
+  {
+    AddGlyphPlacement(inputs, glyphs);
   }
   double polygon[2], line[2], point;
   mapper->GetRelativeCoincidentTopologyPolygonOffsetParameters(polygon[0], polygon[1]);

@@ -14,6 +14,7 @@
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkConeSource.h"
 #include "vtkCoordinate.h"
 #include "vtkCubeSource.h"
 #include "vtkCullerCollection.h"
@@ -21,6 +22,7 @@
 #include "vtkDataSetMapper.h"
 #include "vtkDepthSortPolyData.h"
 #include "vtkFrustumCoverageCuller.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageCanvasSource2D.h"
@@ -637,6 +639,8 @@ public:
   vtkNew<vtkSelection> CellsSelected;            // the first cells of a mapper's data
   vtkNew<vtkCompositePolyDataMapper2> RootBlock; // over one polydata, not a tree
   vtkNew<vtkCompositePolyDataMapper2> TintedBlocks; // two spheres coloured by height
+  vtkNew<vtkGlyph3DMapper> Glyphs;                  // cones coloured by a scalar "size"
+  vtkNew<vtkLookupTable> GlyphTints;
   vtkNew<vtkLookupTable> BlockTints;
   vtkNew<vtkTexture> CanvasTexture;
   vtkActor* Sphere = nullptr;
@@ -774,6 +778,31 @@ public:
     vtkNew<vtkActor> tintedActor;
     tintedActor->SetMapper(this->TintedBlocks);
     this->View.Renderer->AddActor(tintedActor);
+
+    vtkNew<vtkPolyData> glyphPoints;
+    vtkNew<vtkPoints> glyphPlaces;
+    vtkNew<vtkFloatArray> sizes;
+    sizes->SetName("size");
+    for (int i = 0; i < 3; ++i)
+    {
+      glyphPlaces->InsertNextPoint(1.6 + 0.4 * i, 0.3, 2.2);
+      sizes->InsertNextValue(1.0f + 0.5f * static_cast<float>(i));
+    }
+    glyphPoints->SetPoints(glyphPlaces);
+    glyphPoints->GetPointData()->SetScalars(sizes);
+    vtkNew<vtkConeSource> cone;
+    cone->SetResolution(16);
+    this->Glyphs->SetSourceConnection(cone->GetOutputPort());
+    this->Glyphs->SetInputData(glyphPoints);
+    this->Glyphs->SetScaleFactor(0.3);
+    this->Glyphs->SetScaleModeToNoDataScaling();
+    this->Glyphs->SetLookupTable(this->GlyphTints);
+    this->Glyphs->SetScalarRange(1.0, 2.0);
+    vtkNew<vtkActor> glyphActor;
+    glyphActor->SetMapper(this->Glyphs);
+    this->View.Renderer->AddActor(glyphActor);
+    this->View.Keep.push_back(glyphPoints.GetPointer());
+    this->View.Keep.push_back(cone.GetPointer());
 
     this->Text->SetInput("frame 0");
     this->View.Renderer->AddActor2D(this->Text);
@@ -950,6 +979,20 @@ void TestReuseUnchangedShadows()
         scene.Tinted->GetMapper()->SetScalarRange(0.1, 0.5);
         scene.Tints->SetHueRange(0.6, 0.0);
         scene.Tints->ForceBuild();
+      } },
+    { "a glyph mapper's scalar range and lookup table", true,
+      [&]
+      {
+        scene.Glyphs->SetScalarRange(1.2, 1.8);
+        scene.GlyphTints->SetHueRange(0.6, 0.0);
+        scene.GlyphTints->ForceBuild();
+      } },
+    { "the glyphs' scale factor", false, [&] { scene.Glyphs->SetScaleFactor(0.45); } },
+    { "the glyphs scaled by an array chosen", false,
+      [&]
+      {
+        scene.Glyphs->SetScaleArray("size");
+        scene.Glyphs->SetScaleModeToScaleByMagnitude();
       } },
     { "a lookup table's alpha (the actor drawn translucent)", false,
       [&]
