@@ -117,12 +117,12 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
   // VTK drops fragments of alpha 0 even from an actor forced opaque, or through a texture it
   // does not count as translucent (alpha 0 and 255 only, or a property texture): holes its mesh
   // lacks.
-  if (actor->GetForceOpaque() || actor->GetTexture() || property->GetNumberOfTextures() > 0 ||
-    !actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry() ||
-    property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
-    property->GetVertexVisibility() || property->GetBackfaceCulling() ||
-    property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
-    !DrawsTrianglesWithoutOffset(mapper, property) || HasCustomShaders(actor))
+  if (actor->GetForceOpaque() || TexturesMayOpenHoles(actor) || !actor->HasOpaqueGeometry() ||
+    actor->HasTranslucentPolygonalGeometry() || property->GetRepresentation() != VTK_SURFACE ||
+    property->GetEdgeVisibility() || property->GetVertexVisibility() ||
+    property->GetBackfaceCulling() || property->GetFrontfaceCulling() ||
+    mapper->GetNumberOfClippingPlanes() > 0 || !DrawsTrianglesWithoutOffset(mapper, property) ||
+    HasCustomShaders(actor))
   {
     return false;
   }

@@ -24,6 +24,7 @@
 #include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
 #include "vtkGlyph3DMapper.h"
+#include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkLODProp3D.h"
@@ -250,6 +251,37 @@ bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block)
   vtkScalarsToColors* table = mapper->GetLookupTable();
   table->Build();
   return table->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
+}
+
+bool TexturesMayOpenHoles(vtkActor* actor)
+{
+  const auto mayHaveAlpha = [](vtkTexture* texture)
+  {
+    vtkImageData* image = texture->GetInput();
+    vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+    if (!texels)
+    {
+      return true; // nothing known yet
+    }
+    // Unsigned chars are colours as they are, unless mapped: alpha only with 2 or 4 of them.
+    // Other texels go through a lookup table, whose alpha is not looked into.
+    const bool direct = texels->GetDataType() == VTK_UNSIGNED_CHAR &&
+      texture->GetColorMode() != VTK_COLOR_MODE_MAP_SCALARS;
+    const int components = texels->GetNumberOfComponents();
+    return !direct || components == 2 || components == 4;
+  };
+  if (actor->GetTexture() && mayHaveAlpha(actor->GetTexture()))
+  {
+    return true;
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    if (mayHaveAlpha(named.second))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool HasCustomShaders(vtkActor* actor)

@@ -96,6 +96,11 @@ bool IsExactly(vtkObject* object, const char* className);
 /// table decides for the block's scalars, or for its whole table where the block has none.
 bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block);
 
+/// Whether a texture of `actor` (its own or its property's) may have texels of alpha 0, whose
+/// fragments VTK drops whatever the actor's opacity: texels with an alpha channel, texels
+/// mapped through a lookup table, or none known yet.
+bool TexturesMayOpenHoles(vtkActor* actor);
+
 /// Whether `actor`'s shader property holds shader code or replacements of the user's.
 bool HasCustomShaders(vtkActor* actor);
 

@@ -78,15 +78,14 @@ struct LegacyShaders : vtkOpenGLPolyDataMapper
 
 /// Whether `actor`'s colours can change what VTK draws of it, not only how it looks: custom
 /// shader code may read them; VTK drops fragments of alpha 0 even from an actor forced opaque,
-/// or through a texture (whose alpha VTK may not count as translucency, and whose name,
+/// or through a texture with alpha (which VTK may not count as translucency, and whose name,
 /// coordinates and interpolation decide where it applies). Otherwise colours with alpha make
 /// the actor translucent, or a composite mapper's block (AddBlockShapes), which is recorded.
 bool ColoursShapeIt(vtkActor* actor)
 {
   auto mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
   return actor->GetForceOpaque() || HasCustomShaders(actor) ||
-    (mapper && LegacyShaders::Of(mapper)) || actor->GetTexture() ||
-    actor->GetProperty()->GetNumberOfTextures() > 0;
+    (mapper && LegacyShaders::Of(mapper)) || TexturesMayOpenHoles(actor);
 }
 
 /// What of an actor's look can change its shadows or the depth they are drawn against: whether

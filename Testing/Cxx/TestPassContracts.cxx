@@ -965,6 +965,15 @@ void TestReuseUnchangedShadows()
         scene.Box->GetProperty()->SetSpecular(0.4);
         scene.Box->GetProperty()->SetInterpolationToFlat();
       } },
+    // Texels without alpha open no holes: an RGB texture keeps colours out of the shadows. (VTK
+    // 9.1 rebuilds an actor's shader for a texture newer than it only.)
+    { "an RGB texture given to an actor", false,
+      [&]
+      {
+        scene.PartTexture->Modified();
+        scene.Box->SetTexture(scene.PartTexture);
+      } },
+    { "that actor's colour", true, [&] { scene.Box->GetProperty()->SetColor(0.9, 0.5, 0.2); } },
     { "an assembly part's colour", true,
       [&] { scene.Part->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.1); } },
     { "a block's colour", true,

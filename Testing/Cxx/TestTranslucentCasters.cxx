@@ -289,10 +289,10 @@ void TestOpacityAsVTKDrawsIt()
 /// casts as a plain actor drawn so does: opaque, with one warning, onto the ground seen through
 /// it too. The volumes take a caster missing from the depth as seen through; taken for opaque,
 /// it left the ground behind the block lit (8,678 px shadowed as an actor, 25 as a block, in a
-/// user trial). The table is left for VTK to build, and the actor has an opaque texture (so
-/// that its look is recorded by its times, not read first through VTK's own translucency
-/// check): the pass must not ask the table before it is built, which left VTK itself drawing
-/// the block opaque.
+/// user trial). The table is left for VTK to build, and the actor has an opaque texture with
+/// an alpha channel (so that its look is recorded by its times, not read first through VTK's
+/// own translucency check): the pass must not ask the table before it is built, which left VTK
+/// itself drawing the block opaque.
 void TestBlocksSeenThroughByColours()
 {
   const auto shadowOf = [](bool asBlock, std::ptrdiff_t& warnings, bool& drawnTranslucent)
@@ -326,10 +326,10 @@ void TestBlocksSeenThroughByColours()
     }
     mapper->SetLookupTable(tints);
     mapper->SetScalarRange(0.0, 1.0);
-    vtkNew<vtkImageData> white; // an opaque RGB texture
+    vtkNew<vtkImageData> white; // an opaque RGBA texture: an alpha channel, all of it 255
     white->SetDimensions(2, 2, 1);
-    white->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    std::fill_n(static_cast<unsigned char*>(white->GetScalarPointer()), 12, 255);
+    white->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+    std::fill_n(static_cast<unsigned char*>(white->GetScalarPointer()), 16, 255);
     vtkNew<vtkTexture> texture;
     texture->SetInputData(white);
     vtkNew<vtkActor> actor;
