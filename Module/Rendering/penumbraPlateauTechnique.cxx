@@ -83,14 +83,14 @@ bool PlateauTechnique::FindReceiverPlane(vtkRenderer* renderer, vtkObject* owner
     PlaneFit fit;
     if (!FitReceiverPlane(world, fit))
     {
-      if (this->WarnedProps.insert(actor).second)
+      if (this->WarnedProps.First(actor, "plane"))
       {
         vtkWarningWithObjectMacro(
           owner, "Shadow plane " << actor << " has no flat surface: it is not used.");
       }
       continue;
     }
-    if (fit.Thickness > 1e-6 * fit.Extent && this->WarnedProps.insert(actor).second)
+    if (fit.Thickness > 1e-6 * fit.Extent && this->WarnedProps.First(actor, "plane"))
     {
       vtkWarningWithObjectMacro(owner,
         "Shadow plane " << actor << " is not flat (points up to " << fit.Thickness

@@ -9,6 +9,7 @@
 
 #include "penumbraHardShadowTechnique.h"
 #include "penumbraPlateaus.h"
+#include "penumbraPropWarnings.h"
 #include "penumbraShadowTechnique.h"
 
 #include "vtkNew.h"
@@ -16,7 +17,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for vtkNew
 
-#include <set>
 #include <vector>
 
 class vtkProp;
@@ -74,7 +74,7 @@ private:
   /// data change.
   vtkProp* FittedProp = nullptr;
   vtkMTimeType FittedAt = 0;
-  std::set<vtkProp*> WarnedProps;
+  PropWarnings WarnedProps;
   bool WarnedNoPlane = false;
   std::vector<PlateauVertex> Triangles;
   /// What the triangles and the texture were made from (light, plane, casters' silhouettes and

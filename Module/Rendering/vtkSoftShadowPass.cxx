@@ -202,7 +202,7 @@ public:
   /// (`used`).
   bool OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
     std::vector<penumbra::Box>& boxes, std::map<vtkDataSet*, Occupancy>& used);
-  std::set<vtkLight*> WarnedLights;
+  penumbra::LightWarnings WarnedLights;
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
   bool WarnedNoDelegate = false;
@@ -220,7 +220,6 @@ public:
   int MaxLayerSize = 0;
   vtkOpenGLRenderWindow* MaxLayerSizeWindow = nullptr;
   bool WarnedLayerSize = false;
-  std::set<vtkLight*> WarnedReachingLights;
 
   std::string ShaderConfiguration;
   vtkTimeStamp ShaderStageTime;
@@ -811,7 +810,7 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
       const double length = glm::length(towards);
       if (!(length > 0.0) || !std::isfinite(length))
       {
-        if (internals.WarnedLights.insert(light).second)
+        if (internals.WarnedLights.First(light, "no direction"))
         {
           vtkWarningMacro("Directional light " << light << " has no direction (position equals "
                                                << "focal point): it casts no shadow.");
@@ -822,7 +821,7 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
     }
     else if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
     {
-      if (internals.WarnedLights.insert(light).second)
+      if (internals.WarnedLights.First(light, "non-finite position"))
       {
         vtkWarningMacro("Light " << light << " has a non-finite position: it casts no shadow.");
       }
@@ -1765,14 +1764,14 @@ void vtkSoftShadowPass::WarnOfLightsReachingTheScene(vtkRenderer* renderer)
   for (const vtkInternals::ShadowLight& light : internals.Lights)
   {
     if (light.World.w == 0.0 || !(light.SoftRadius > 0.0) ||
-      internals.WarnedReachingLights.count(light.Light))
+      internals.WarnedLights.Said(light.Light, "reaching"))
     {
       continue;
     }
     const double distance = NearestPropBoxSurface(renderer, glm::dvec3(light.World));
     if (distance < light.SoftRadius)
     {
-      internals.WarnedReachingLights.insert(light.Light);
+      internals.WarnedLights.First(light.Light, "reaching");
       vtkWarningMacro("Light " << light.Light << " has a radius of " << light.SoftRadius
                                << ", more than its distance to the nearest visible prop's box ("
                                << distance

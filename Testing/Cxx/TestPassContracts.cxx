@@ -915,6 +915,34 @@ void TestLightRecordsFollowLights()
   view.Window->Render();
   Check(light.Get() == first && log.Count("clamped to 89") == 2,
     "a new light of 95 degrees at the deleted one's address: warned again");
+
+  // The same for a positional light whose radius reaches the scene.
+  const auto nearLamp = []
+  {
+    vtkSmartPointer<vtkLight> lamp = vtkSmartPointer<SameAddressLight>::New();
+    lamp->SetLightTypeToSceneLight();
+    lamp->SetPositional(true);
+    lamp->SetConeAngle(180);
+    lamp->SetPosition(2.5, 1.0, 2.5);
+    lamp->SetFocalPoint(0.0, 0.0, 0.0);
+    vtkSoftShadowPass::SetLightRadius(lamp, 1.5);
+    return lamp;
+  };
+  view.Renderer->RemoveLight(light);
+  light = nullptr;
+  for (int lamp = 0; lamp < 2; ++lamp)
+  {
+    light = nearLamp();
+    view.Renderer->AddLight(light);
+    view.Window->Render();
+    view.Window->Render();
+    view.Renderer->RemoveLight(light);
+    light = nullptr;
+  }
+  std::printf("     radius reaching the scene: %ld warnings for two lights at one address\n",
+    static_cast<long>(log.Count("more than its distance")));
+  Check(log.Count("more than its distance") == 2,
+    "a new light reaching the scene at the deleted one's address: warned again");
 }
 
 void TestReuseUnchangedShadows()
