@@ -1,7 +1,7 @@
 /**
  * @file   penumbraPropWarnings.h
  * @brief  Which (object, problem) pairs vtkSoftShadowPass has reported, so that each is reported
- *         once while its object (a prop, a light) lives.
+ *         once while its object (a prop, a light, a data object) lives.
  *
  * Warnings about props and lights are raised every frame the problem persists (the scene walk,
  * the shader edits and the lights' checks run each frame); the user should read each once. A
@@ -12,6 +12,7 @@
 #ifndef penumbraPropWarnings_h
 #define penumbraPropWarnings_h
 
+#include "vtkDataObject.h"
 #include "vtkLight.h"
 #include "vtkProp.h"
 #include "vtkWeakPointer.h"
@@ -69,6 +70,7 @@ private:
 
 using PropWarnings = WarnedOnce<vtkProp>;
 using LightWarnings = WarnedOnce<vtkLight>;
+using DataWarnings = WarnedOnce<vtkDataObject>;
 
 } // namespace penumbra
 

@@ -52,7 +52,8 @@ std::size_t NewGeneration()
 
 } // namespace
 
-bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner)
+bool MeshCache::Update(
+  vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner, DataWarnings& warned)
 {
   this->Used = true;
   if (this->Data == data && this->BuiltAt >= data->GetMTime() && this->Builds > 0)
@@ -92,19 +93,18 @@ bool MeshCache::Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vt
     caster << "part of " << viewProp->GetClassName() << " (" << viewProp << "), ";
   }
   caster << "its " << data->GetClassName() << " (" << data << ")";
-  if (this->Topology.Empty() && !this->WarnedEmpty)
+  if (this->Topology.Empty() && warned.First(data, "empty"))
   {
     vtkWarningWithObjectMacro(owner, << caster.str()
                                      << " has no surface triangles, so it casts no shadow"
                                      << (problems.empty() ? "" : ": " + problems) << ".");
-    this->WarnedEmpty = this->WarnedProblems = true;
+    warned.First(data, "problems"); // said with it
   }
-  else if (!problems.empty() && !this->WarnedProblems)
+  else if (!problems.empty() && warned.First(data, "problems"))
   {
     vtkWarningWithObjectMacro(
       owner, << caster.str() << ": " << problems
              << (this->Builds > 1 ? " (not repeated for later versions)." : "."));
-    this->WarnedProblems = true;
   }
   return true;
 }
@@ -499,18 +499,8 @@ MeshCache* ShadowCaches::FindMesh(
   if (!mesh || mesh->Data != data)
   {
     mesh.reset(new MeshCache);
-    auto warned = this->Warned.find(data);
-    if (warned != this->Warned.end())
-    {
-      if (warned->second.Data == data) // not another object at a freed one's address
-      {
-        mesh->WarnedProblems = warned->second.Problems;
-        mesh->WarnedEmpty = warned->second.Empty;
-      }
-      this->Warned.erase(warned);
-    }
   }
-  mesh->Update(data, prop, viewProp, owner);
+  mesh->Update(data, prop, viewProp, owner, this->Warned);
   return mesh.get();
 }
 
@@ -578,24 +568,9 @@ void ShadowCaches::PurgeUnused()
     }
     ++it;
   }
-  for (auto it = this->Warned.begin(); it != this->Warned.end();)
-  {
-    it = it->second.Data ? std::next(it) : this->Warned.erase(it);
-  }
   for (auto it = this->Meshes.begin(); it != this->Meshes.end();)
   {
-    const MeshCache& mesh = *it->second;
-    if (mesh.Used)
-    {
-      ++it;
-      continue;
-    }
-    // A mesh outlives its data (a weak pointer): only a live data object is remembered.
-    if (mesh.Data && (mesh.WarnedProblems || mesh.WarnedEmpty))
-    {
-      this->Warned[it->first] = { mesh.Data, mesh.WarnedProblems, mesh.WarnedEmpty };
-    }
-    it = this->Meshes.erase(it);
+    it = it->second->Used ? std::next(it) : this->Meshes.erase(it);
   }
 }
 

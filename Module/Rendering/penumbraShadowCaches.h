@@ -16,6 +16,7 @@
 #include "penumbraShadowVolume.h"
 
 #include "penumbraOpenGLHelpers.h"
+#include "penumbraPropWarnings.h"
 
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
@@ -61,14 +62,13 @@ struct MeshCache
   int Winding = 0;
   std::size_t WindingGeneration = 0; ///< the Generation Winding was worked out for; 0: none
   bool Used = false;
-  bool WarnedProblems = false; ///< a mesh problem was reported once for this data object
-  bool WarnedEmpty = false;
 
   /// Rebuilds the topology when `data` changed. Returns true when it did; warns via `owner`,
-  /// once per data object and kind (problems, no triangles), naming `prop`, the first prop
-  /// found drawing it, and `viewProp`, the renderer's prop it is part of where that is another
-  /// (an assembly, a vtkAxesActor).
-  bool Update(vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner);
+  /// once per data object and kind (problems, no triangles: `warned` keeps which, beyond this
+  /// mesh's life), naming `prop`, the first prop found drawing it, and `viewProp`, the
+  /// renderer's prop it is part of where that is another (an assembly, a vtkAxesActor).
+  bool Update(
+    vtkDataObject* data, vtkProp* prop, vtkProp* viewProp, vtkObject* owner, DataWarnings& warned);
   /// Uploads the doubled vertex buffer (w = 1 points, then w = 0 swept copies) if needed and
   /// binds the VAO for `program`.
   void Bind(vtkShaderProgram* program);
@@ -250,15 +250,9 @@ struct CasterCache
 struct ShadowCaches
 {
   std::map<vtkDataObject*, std::unique_ptr<MeshCache>> Meshes;
-  /// What the meshes freed while their data lives on had warned of: a prop hidden and shown
-  /// again is not warned again.
-  struct WarnedData
-  {
-    vtkWeakPointer<vtkDataObject> Data;
-    bool Problems = false;
-    bool Empty = false;
-  };
-  std::map<vtkDataObject*, WarnedData> Warned;
+  /// What each live data object's mesh warned of, kept when the mesh is freed: a prop hidden
+  /// and shown again is not warned again.
+  DataWarnings Warned;
   /// Keyed by actor, part (penumbra::DrawnSurface: a block or glyph of it) and occurrence in the
   /// frame: an actor VTK draws twice (added to the renderer and a part of an assembly) casts
   /// from each place.
