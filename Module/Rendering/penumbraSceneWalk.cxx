@@ -253,6 +253,20 @@ bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block)
   return table->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
 }
 
+std::vector<vtkTexture*> TexturesOf(vtkActor* actor)
+{
+  std::vector<vtkTexture*> textures;
+  if (actor->GetTexture())
+  {
+    textures.push_back(actor->GetTexture());
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    textures.push_back(named.second);
+  }
+  return textures;
+}
+
 bool TexturesMayOpenHoles(vtkActor* actor)
 {
   const auto mayHaveAlpha = [](vtkTexture* texture)
@@ -270,18 +284,8 @@ bool TexturesMayOpenHoles(vtkActor* actor)
     const int components = texels->GetNumberOfComponents();
     return !direct || components == 2 || components == 4;
   };
-  if (actor->GetTexture() && mayHaveAlpha(actor->GetTexture()))
-  {
-    return true;
-  }
-  for (const auto& named : actor->GetProperty()->GetAllTextures())
-  {
-    if (mayHaveAlpha(named.second))
-    {
-      return true;
-    }
-  }
-  return false;
+  const std::vector<vtkTexture*> textures = TexturesOf(actor);
+  return std::any_of(textures.begin(), textures.end(), mayHaveAlpha);
 }
 
 bool HasCustomShaders(vtkActor* actor)

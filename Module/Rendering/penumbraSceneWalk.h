@@ -49,6 +49,7 @@ class vtkObject;
 class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
+class vtkTexture;
 
 namespace penumbra
 {
@@ -95,6 +96,9 @@ bool IsExactly(vtkObject* object, const char* className);
 /// into VTK's opaque and translucent passes (BuildRenderValues): with scalars shown, its lookup
 /// table decides for the block's scalars, or for its whole table where the block has none.
 bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block);
+
+/// The textures VTK draws `actor` with: its own and its property's.
+std::vector<vtkTexture*> TexturesOf(vtkActor* actor);
 
 /// Whether a texture of `actor` (its own or its property's) may have texels of alpha 0, whose
 /// fragments VTK drops whatever the actor's opacity: texels with an alpha channel, texels

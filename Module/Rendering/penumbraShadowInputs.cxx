@@ -267,20 +267,6 @@ void UpdateInputs(vtkAlgorithm* algorithm)
   }
 }
 
-/// The textures VTK draws `actor` with: a texture's alpha can open holes or make it translucent.
-std::vector<vtkTexture*> TexturesOf(vtkActor* actor)
-{
-  std::vector<vtkTexture*> textures;
-  if (actor->GetTexture())
-  {
-    textures.push_back(actor->GetTexture());
-  }
-  for (const auto& named : actor->GetProperty()->GetAllTextures())
-  {
-    textures.push_back(named.second);
-  }
-  return textures;
-}
 } // namespace
 
 void ShadowInputs::Begin()

@@ -77,8 +77,8 @@ private:
 };
 
 /// Runs what feeds the mappers and textures of `renderer`'s visible props (not those
-/// OutsideTheShadows), each
-/// input's producer as VTK's polydata mapper runs it while it draws (vtkOpenGLPolyDataMapper's
+/// OutsideTheShadows), each input's producer as VTK's polydata mapper runs it while it draws
+/// (vtkOpenGLPolyDataMapper's
 /// RenderPiece), before anything of the frame's shadows reads the props' data or bounds: a source
 /// changed since the last frame has not run yet, and a time step requested through a mapper's
 /// input information (UPDATE_TIME_STEP) runs only so, not through the mapper's own Update. Other
