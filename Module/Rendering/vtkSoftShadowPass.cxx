@@ -111,19 +111,24 @@ private:
   bool& Flag;
 };
 
+/// `prop`'s property keys, made if it has none (which modifies the prop).
+vtkInformation* PropertyKeysOf(vtkProp* prop)
+{
+  if (!prop->GetPropertyKeys())
+  {
+    vtkNew<vtkInformation> keys;
+    prop->SetPropertyKeys(keys);
+  }
+  return prop->GetPropertyKeys();
+}
+
 /// Puts `pass` among the render passes that edit `prop`'s shaders, once: an assembly's part keeps
 /// the assembly's keys after VTK drew it, so a part also added to the renderer shares them, and
 /// a second entry would edit its shaders twice (declarations repeated: they fail to compile).
 /// Returns the keys it went into, which VTK may take from the prop while it draws.
 vtkInformation* AddRenderPassKey(vtkProp* prop, vtkOpenGLRenderPass* pass)
 {
-  vtkInformation* info = prop->GetPropertyKeys();
-  if (!info)
-  {
-    vtkNew<vtkInformation> keys;
-    prop->SetPropertyKeys(keys);
-    info = keys;
-  }
+  vtkInformation* info = PropertyKeysOf(prop);
   vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
   for (int i = 0; i < info->Length(passes); ++i)
   {
@@ -434,12 +439,7 @@ void SetPropFlag(vtkProp* prop, vtkInformationIntegerKey* key, bool value)
   {
     return;
   }
-  if (!prop->GetPropertyKeys())
-  {
-    vtkNew<vtkInformation> keys;
-    prop->SetPropertyKeys(keys);
-  }
-  prop->GetPropertyKeys()->Set(key, value ? 1 : 0);
+  PropertyKeysOf(prop)->Set(key, value ? 1 : 0);
   prop->Modified();
 }
 
@@ -871,6 +871,10 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
     // A vtkAxesActor does not hand its keys to its parts: the keys go on what it draws. Props
     // outside the shadows (widgets) draw through actors that never see the keys.
     vtkProp* prop = s->GetPropArray()[i];
+    // VTK's translucent pass makes a prop's keys the first time it draws it, which modifies the
+    // prop after this frame's inputs were recorded, so the next frame would draw its shadows
+    // again: made here, before the record.
+    PropertyKeysOf(prop);
     if (GetReceivesShadows(prop) && prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop) &&
       !penumbra::OutsideTheShadows(prop))
     {
