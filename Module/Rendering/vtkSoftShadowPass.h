@@ -6,7 +6,9 @@
  * Drop it into any renderer (`renderer->SetPass(pass)`) and the scene renders as VTK would
  * (opaque, translucent, volumes, overlays) with the opaque geometry shadowed by every
  * switched-on light that can cast shadows: positional (point and spot) and directional scene or
- * camera lights. Headlights cast no visible shadow and are skipped at no cost.
+ * camera lights. Headlights are skipped at no cost: a positional one casts no visible shadow,
+ * and a directional one (VTK's automatic light) only thin slivers beside objects in a
+ * perspective view, which stay lit as VTK draws them.
  *
  * Per frame the pass
  * 1. updates, on the CPU and only when a light, an actor's matrix or its data changed, the
