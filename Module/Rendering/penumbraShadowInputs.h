@@ -12,12 +12,11 @@
  * that can are recorded by value where the classes are VTK's own), and modification times
  * elsewhere: each prop, its mapper with its clipping planes and shader property, and every input
  * data object of the mapper (each block of composite data), brought up to date first
- * (UpdateMapperInputs). 2D props (vtkActor2D) are
- * left out: VTK draws them over the scene, never into its depth. A prop whose changes cannot be
- * seen this way (one that is neither a vtkProp3D nor a vtkPropAssembly, such as a 3D widget's
- * representation, a vtkLODActor or vtkLODProp3D, which pick their level by render time, or a
- * mapper with an UpdateShaderEvent observer, which may move vertices through uniforms) makes
- * every frame draw its shadows.
+ * (UpdateMapperInputs). Props outside the shadows (neither a vtkProp3D nor a vtkPropAssembly:
+ * 2D props, widget representations, captions) are left out: they neither cast nor receive. A
+ * prop whose changes cannot be seen this way (a vtkLODActor or vtkLODProp3D, which pick their
+ * level by render time, or a mapper with an UpdateShaderEvent observer, which may move vertices
+ * through uniforms) makes every frame draw its shadows.
  */
 #ifndef penumbraShadowInputs_h
 #define penumbraShadowInputs_h

@@ -1170,6 +1170,22 @@ void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
   bounds.Pieces = penumbra::DisjointPieces(each);
 }
 
+bool vtkSoftShadowPass::IsReceiverLeaf(vtkProp* prop)
+{
+  for (vtkProp* receiver : this->Internals->Receivers)
+  {
+    receiver->InitPathTraversal();
+    while (vtkAssemblyPath* path = receiver->GetNextPath())
+    {
+      if (path->GetLastNode()->GetViewProp() == prop)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 void vtkSoftShadowPass::RemoveReceiverKeys()
 {
   // From the keys the pass went into: an assembly gives its parts its own keys as VTK draws
@@ -1593,7 +1609,9 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     return true; // nothing inserted, already reported
   }
   auto actor = vtkActor::SafeDownCast(prop);
-  if (penumbra::IsUnlit(fragmentShader) && actor)
+  // Actors that a prop such as vtkCubeAxesActor draws through, unseen by the renderer, are its
+  // annotation: VTK draws their lines unlit by design, so they say nothing.
+  if (penumbra::IsUnlit(fragmentShader) && actor && this->IsReceiverLeaf(actor))
   {
     // Worth saying: vedo's Plane, for one, is unlit by default, and VTK draws streamlines
     // (whose normals vtkStreamTracer does not make active) unlit. Splats are unlit by nature

@@ -359,12 +359,13 @@ public:
    * the last frame the pass drew instead of drawing them again: the same renderer, viewport and
    * camera matrices, the same shadowing lights at the same places and radii, the same settings,
    * and no prop, mapper, clipping plane, shader property or input data object (each block of
-   * composite data) modified since (penumbraShadowInputs.h). Text, scalar bars and other 2D
-   * props, and the 2D widgets (scalar bar, text, logo, 2D slider), may change freely; a colour
-   * change of a 3D prop redraws the shadows. On by default. A frame is always drawn while a
-   * visible prop is neither a vtkProp3D nor a vtkPropAssembly (a 3D widget's representation, a
-   * caption with a 3D leader), is a vtkLODActor or vtkLODProp3D (they pick their level by
-   * render time) or has a mapper with an UpdateShaderEvent observer. Geometry that
+   * composite data) modified since (penumbraShadowInputs.h). Props that are neither a
+   * vtkProp3D nor a vtkPropAssembly (text, scalar bars, 2D and 3D widgets' representations,
+   * captions), which neither cast nor receive, may change freely, and so may the colours of
+   * VTK's own actors and mappers (not those that can open holes or have shader code of their
+   * own). On by default. A frame is always drawn while a visible prop is a vtkLODActor or
+   * vtkLODProp3D (they pick their level by render time) or has a mapper with an
+   * UpdateShaderEvent observer. Geometry that
    * changes without any VTK object being modified (data arrays edited in place without
    * Modified(), which VTK's mappers do not redraw either) keeps its old shadows: call Modified()
    * on the data, or on this pass to redraw.
@@ -461,6 +462,8 @@ private:
   void UpdateShaderConfiguration();
   void AddReceiverKeys(const vtkRenderState* s);
   void RemoveReceiverKeys();
+  /// Whether `prop` is one of this frame's receivers or a part of one's assembly paths.
+  bool IsReceiverLeaf(vtkProp* prop);
   /// Clears the depth and draws, through VTK, that of the props not left to RenderCasterDepth.
   void RenderDepth(const vtkRenderState* s);
   /// After UpdateCasters: the depth of the props left to it, from their caster meshes.

@@ -23,6 +23,7 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
+#include "vtkCubeAxesActor.h"
 #include "vtkCylinderSource.h"
 #include "vtkDataSetMapper.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -966,6 +967,30 @@ void TestAnnotatedCube()
     });
 }
 
+void TestCubeAxes()
+{
+  // A vtkCubeAxesActor draws its axes, ticks and grid lines through actors of its own, which
+  // take the pass's keys from it: VTK draws those lines unlit by design, so nothing is said
+  // (eleven warnings before, one for each of them).
+  View view;
+  Ground(view.Renderer);
+  view.Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16), 0.9, 0.3, 0.3));
+  vtkNew<vtkCubeAxesActor> cubeAxes;
+  cubeAxes->SetBounds(-1.5, -0.3, 0.4, 1.6, -0.6, 0.6);
+  cubeAxes->SetCamera(view.Renderer->GetActiveCamera());
+  cubeAxes->DrawXGridlinesOn();
+  cubeAxes->DrawYGridlinesOn();
+  view.Renderer->AddActor(cubeAxes);
+  const WarningLog log(view.Pass);
+  view.Render();
+  view.Render();
+  for (const std::string& w : log.Messages)
+  {
+    std::printf("     warning: %s", w.c_str());
+  }
+  Check(log.Count("without lighting") == 0, "vtkCubeAxesActor's lines: no warning");
+}
+
 //------------------------------------------------------------------------------
 void TestLODActor()
 {
@@ -1488,6 +1513,7 @@ int main()
   TestAssembly();
   TestAxesActor();
   TestAnnotatedCube();
+  TestCubeAxes();
   TestLODActor();
   TestDataSetInput();
   TestLODProp3D();
