@@ -223,6 +223,27 @@ bool EdgePlaneMissesSamples(const glm::dvec3& p, const glm::dvec3& a, const glm:
     (spread + 1e-5 * glm::length(edgeToCentre)) * glm::length(sampleSide);
 }
 
+double CasterAngularRadius(const glm::dvec3& light, double radius, const glm::dvec3& boxMin,
+  const glm::dvec3& boxMax, const std::vector<glm::dvec3>& points,
+  const std::vector<SilhouetteEdge>& silhouette, const glm::dmat4& toWorld)
+{
+  const bool inside =
+    glm::all(glm::greaterThanEqual(light, boxMin)) && glm::all(glm::lessThanEqual(light, boxMax));
+  double distance = glm::length(0.5 * (boxMin + boxMax) - light);
+  if (inside)
+  {
+    double sum = 0.0;
+    for (const SilhouetteEdge& edge : silhouette)
+    {
+      const glm::dvec3 middle = 0.5 * (points[edge.From] + points[edge.To]);
+      sum += glm::length(glm::dvec3(toWorld * glm::dvec4(middle, 1.0)) - light);
+    }
+    distance = silhouette.empty() ? 0.5 * glm::length(boxMax - boxMin)
+                                  : sum / static_cast<double>(silhouette.size());
+  }
+  return distance > radius ? radius / distance : 1e300;
+}
+
 double CountingToAveraging(const std::vector<CountingCost>& casters, int samples)
 {
   double potential = 0.0, weighted = 0.0, silhouettes = 0.0;

@@ -25,6 +25,7 @@
 
 #include "penumbraCasterTopology.h"
 #include "penumbraConvexClip.h"
+#include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
 
 #include <glm/glm.hpp>
@@ -138,6 +139,19 @@ struct CountingCost
                                    ///< about as many sides for every sample, each once
   double AngularRadius = 0.0;      ///< the light's radius over its distance, or a sun's radius
 };
+
+/**
+ * A positional light's angular radius seen from one caster, for CountingCost: `radius` over the
+ * distance from `light` to the centre of the caster's world box [boxMin, boxMax], as the model
+ * was fitted. With the light inside the box (a lamp in a room, in a torus's hole, amid glyphs)
+ * the centre may lie next to it however far the surfaces are: then over the mean distance to
+ * the caster's centre silhouette (`silhouette`, between `points` mapped by `toWorld`), or, with
+ * none, half the box's diagonal. 1e300 where the distance is within the radius: the light
+ * reaches the caster, and its wedges would cover the view.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT double CasterAngularRadius(const glm::dvec3& light, double radius,
+  const glm::dvec3& boxMin, const glm::dvec3& boxMax, const std::vector<glm::dvec3>& points,
+  const std::vector<SilhouetteEdge>& silhouette, const glm::dmat4& toWorld);
 
 /**
  * Whether counting `samples` light samples (one volume pass and the potential silhouette's

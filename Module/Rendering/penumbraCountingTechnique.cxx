@@ -138,17 +138,13 @@ bool CountingTechnique::IsCheaper(
     }
     CountingCost cost;
     cost.PotentialEdges = caster->CountingWedges[light.Light].Potential.size();
-    cost.SilhouetteEdges = caster->Volumes[light.VolumeKey(0)].Volume.Silhouette.size();
-    if (light.World.w != 0.0)
-    {
-      const double distance =
-        glm::length(0.5 * (caster->WorldMin + caster->WorldMax) - glm::dvec3(light.World));
-      cost.AngularRadius = distance > light.SoftRadius ? light.SoftRadius / distance : 1e300;
-    }
-    else
-    {
-      cost.AngularRadius = light.SoftRadius;
-    }
+    const std::vector<SilhouetteEdge>& silhouette =
+      caster->Volumes[light.VolumeKey(0)].Volume.Silhouette;
+    cost.SilhouetteEdges = silhouette.size();
+    cost.AngularRadius = light.World.w != 0.0
+      ? CasterAngularRadius(glm::dvec3(light.World), light.SoftRadius, caster->WorldMin,
+          caster->WorldMax, caster->Mesh->Topology.Points, silhouette, caster->ObjectToWorld)
+      : light.SoftRadius;
     costs.push_back(cost);
   }
   return CountingIsCheaper(costs, static_cast<int>(light.CountingSamples.size()), last);

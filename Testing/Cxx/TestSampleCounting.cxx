@@ -531,11 +531,42 @@ void TestCostModel()
   Check(!CountingIsCheaper({ { 504, 296, 0.08 } }, 16, LastChoice::Counted),
     "far above the boundary: averaging, whatever the last choice");
 }
+void TestCasterAngularRadius()
+{
+  // A ring of 16 silhouette edges of radius 2 around the origin, in a box from -2 to 2 (z from
+  // -0.5 to 0.5), placed by a translation of 10 along x.
+  std::vector<glm::dvec3> points;
+  std::vector<SilhouetteEdge> ring;
+  for (std::uint32_t i = 0; i < 16; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979 * i / 16.0;
+    points.emplace_back(2.0 * std::cos(angle), 2.0 * std::sin(angle), 0.0);
+    ring.push_back({ i, (i + 1) % 16, 1 });
+  }
+  const glm::dmat4 moved = glm::translate(glm::dmat4(1.0), glm::dvec3(10.0, 0.0, 0.0));
+  const glm::dvec3 lo(8.0, -2.0, -0.5), hi(12.0, 2.0, 0.5);
+  const double outside = CasterAngularRadius({ 10.0, 0.0, 5.0 }, 0.1, lo, hi, points, ring, moved);
+  Check(
+    std::abs(outside - 0.02) < 1e-12, "a light outside the box: radius over the centre's distance");
+  // A lamp in the ring's hole: the box's centre lies next to it (1e300 before: averaging at up
+  // to 9 times counting's time, a user trial), its silhouette about 2 away.
+  const double hole = CasterAngularRadius({ 10.05, 0.0, 0.0 }, 0.1, lo, hi, points, ring, moved);
+  std::printf("a lamp in a ring's hole: angular radius %.4f\n", hole);
+  Check(
+    hole > 0.045 && hole < 0.055, "a lamp inside the box: radius over its silhouette's distance");
+  Check(CasterAngularRadius({ 10.0, 0.0, 0.0 }, 0.1, lo, hi, points, {}, moved) ==
+      0.1 / (0.5 * glm::length(hi - lo)),
+    "inside the box, no silhouette: radius over half the box's diagonal");
+  Check(CasterAngularRadius({ 10.0, 0.0, 0.0 }, 2.5, lo, hi, points, ring, moved) == 1e300 &&
+      CasterAngularRadius({ 10.0, 0.0, 0.6 }, 0.7, lo, hi, points, ring, moved) == 1e300,
+    "a light reaching its caster, inside the box or out: averaging");
+}
 } // namespace
 
 int main()
 {
   std::mt19937 rng(7);
+  TestCasterAngularRadius();
   TestFacingOverLight();
   TestDegenerate();
   TestPotentialSilhouetteIsSmall();
