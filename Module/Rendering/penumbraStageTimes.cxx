@@ -8,7 +8,7 @@ void StageTimes::BeginFrame(bool enabled)
   this->Enabled = enabled;
   this->Used = 0;
   this->Intervals.clear();
-  this->Cpu.fill(0.0);
+  this->Cpu.fill(enabled ? 0.0 : -1.0);
   this->Gpu.fill(-1.0);
 }
 

@@ -24,7 +24,11 @@ namespace penumbra
 class StageTimes
 {
 public:
-  StageTimes() { this->Gpu.fill(-1.0); }
+  StageTimes()
+  {
+    this->Cpu.fill(-1.0);
+    this->Gpu.fill(-1.0);
+  }
   /// The stages, in frame order; the same numbers as vtkSoftShadowPass::STAGE_*.
   enum Stage
   {
@@ -42,6 +46,7 @@ public:
   void End(Stage stage);
   /// Reads the frame's queries back (waiting for the GPU) and sums each stage.
   void EndFrame();
+  /// Negative when the frame was not timed.
   double CpuMilliseconds(Stage stage) const { return this->Cpu[stage]; }
   /// Negative when the frame was not timed or timestamps are not supported.
   double GpuMilliseconds(Stage stage) const { return this->Gpu[stage]; }

@@ -1385,7 +1385,8 @@ void vtkSoftShadowPass::vtkInternals::SortOutTranslucentCasters(ShadowLight& lig
     {
       vtkWarningWithObjectMacro(this->Owner,
         "Penumbra wedges and plateaus leave translucent casters out: they cast no shadow. "
-        "Averaged hard shadows and soft shadow volumes shadow them by their opacity.");
+        "Hard shadows, averaged hard shadows and soft shadow volumes shadow them by their "
+        "opacity.");
       this->WarnedTranslucent = true;
     }
     caster->Culled.insert(light.Light);
@@ -1769,7 +1770,7 @@ double vtkSoftShadowPass::GetStageCPUMilliseconds(int stage)
 {
   return stage >= 0 && stage < NUMBER_OF_STAGES
     ? this->Internals->StageTimes.CpuMilliseconds(static_cast<penumbra::StageTimes::Stage>(stage))
-    : 0.0;
+    : -1.0;
 }
 
 double vtkSoftShadowPass::GetStageGPUMilliseconds(int stage)

@@ -293,8 +293,8 @@ public:
   vtkGetMacro(CollectStageTimes, bool);
   vtkBooleanMacro(CollectStageTimes, bool);
   ///@}
-  /// Milliseconds of the last frame in `stage` on the CPU, and on the GPU (-1 when the frame was
-  /// not timed).
+  /// Milliseconds of the last frame in `stage` on the CPU, and on the GPU: -1 for both when the
+  /// frame was not timed or `stage` is not one, and on the GPU where timestamps are not supported.
   double GetStageCPUMilliseconds(int stage);
   double GetStageGPUMilliseconds(int stage);
 
@@ -357,7 +357,8 @@ public:
   /**
    * Whether a frame whose shadows cannot have changed composites the light-intensity layers of
    * the last frame the pass drew instead of drawing them again: the same renderer, viewport and
-   * camera matrices, the same shadowing lights at the same places and radii, the same settings,
+   * camera matrices, the same shadowing lights, unmodified (a light's colour, which changes no
+   * shadow, redraws that light's too), the same settings,
    * and no prop, mapper, clipping plane, shader property or input data object (each block of
    * composite data) modified since (penumbraShadowInputs.h). Props that are neither a
    * vtkProp3D nor a vtkPropAssembly (text, scalar bars, 2D and 3D widgets' representations,
@@ -378,7 +379,10 @@ public:
   /// (ReuseUnchangedShadows). The other statistics then describe that drawn frame.
   vtkGetMacro(NumberOfReusedFrames, vtkIdType);
   /// Lights whose shadows the last drawn frame drew: with ReuseUnchangedShadows, a frame in which
-  /// only some lights changed draws those alone, against the depth it kept.
+  /// only some lights changed draws those alone, against the depth it kept. The statistics of
+  /// what is drawn per light (volume triangles, wedges, z-fail volumes, plateau triangles,
+  /// counted and averaged lights) then count those lights alone; NumberOfShadowingLights counts
+  /// them all.
   vtkGetMacro(NumberOfRedrawnLights, int);
 
   void Render(const vtkRenderState* s) override;

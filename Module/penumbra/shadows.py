@@ -44,17 +44,20 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
     light (vtkSoftShadowPass.SetLightSamples), None for the default.
 
     The scene is drawn as the renderer draws it without a pass: its depth peeling, FXAA and SSAO
-    settings are kept (vtkRendererSettingsPass). Headlights cast no shadow (it would lie behind
-    what casts it); camera lights do. A Python warning says so when no light of the renderer can
-    cast.
+    settings are kept (vtkRendererSettingsPass). Headlights cast no shadow; camera lights do.
+    A Python warning says so when no light of the renderer can cast, and when visible actors are
+    unlit (Lighting off, as vedo's Plane is by default): no shadow shows on them.
     """
     if method not in METHODS:
         raise ValueError("method must be one of %s, not %r" % (", ".join(sorted(METHODS)), method))
     targets = list(lights) if lights is not None else _lights_of(renderer)
+    # Headlights cannot cast: VTK's automatic one, directional, is in the list once the
+    # renderer has drawn, and must not hide a size given for the wrong kind of light.
+    casting = [light for light in targets if vtkSoftShadowPass.LightCastsShadows(light)]
     for name, value, positional, instead in (
             ("radius", radius, True, "angular_radius (degrees)"),
             ("angular_radius", angular_radius, False, "radius (world units)")):
-        if value and targets and not any(bool(l.GetPositional()) == positional for l in targets):
+        if value and casting and not any(bool(l.GetPositional()) == positional for l in casting):
             kind = "positional" if positional else "directional"
             warnings.warn("penumbra.enable_shadows: %s=%r is for %s lights and none of these is "
                           "one, so no light changes size; give %s" % (name, value, kind, instead),
@@ -74,7 +77,26 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
         warnings.warn("penumbra.enable_shadows: no light of this renderer casts shadows "
                       "(headlights do not, nor lights that are off); add a scene or camera light",
                       stacklevel=2)
+    unlit = _unlit_receivers(renderer)
+    if unlit:
+        # The pass says so too, as a VTK warning, which vedo switches off.
+        warnings.warn("penumbra.enable_shadows: %d visible actor(s) have Lighting off (%s), so "
+                      "no shadow shows on them; turn it on (vedo: mesh.lighting(\"default\"))"
+                      % (len(unlit), ", ".join(sorted({a.GetClassName() for a in unlit}))),
+                      stacklevel=2)
     return shadows
+
+
+def _unlit_receivers(renderer):
+    actors = renderer.GetActors()
+    found = []
+    for i in range(actors.GetNumberOfItems()):
+        actor = actors.GetItemAsObject(i)
+        if (actor.GetVisibility() and actor.GetProperty() is not None
+                and not actor.GetProperty().GetLighting()
+                and vtkSoftShadowPass.GetReceivesShadows(actor)):
+            found.append(actor)
+    return found
 
 
 def add_light(renderer, position, radius=0.0, focal_point=(0.0, 0.0, 0.0)):
@@ -86,6 +108,8 @@ def add_light(renderer, position, radius=0.0, focal_point=(0.0, 0.0, 0.0)):
     light.SetConeAngle(180)
     light.SetPosition(*position)
     light.SetFocalPoint(*focal_point)
+    if radius < 0:
+        raise ValueError("a light's radius cannot be negative (%r)" % radius)
     vtkSoftShadowPass.SetLightRadius(light, radius)
     renderer.AddLight(light)
     return light

@@ -116,6 +116,37 @@ with python_warnings.catch_warnings(record=True) as caught:
 said = [str(w.message) for w in caught if "radius=0.3 is for positional lights" in str(w.message)]
 check(len(said) == 1 and penumbra.vtkSoftShadowPass.GetLightRadius(sun) == before,
       "a radius for directional lights only: one warning, the light unchanged")
+# A headlight cannot cast: beside a positional light (VTK's automatic headlight is in the list
+# once the renderer has drawn), an angle given for directional lights still changes nothing.
+from vtkmodules.vtkRenderingCore import vtkLight
+headlight = vtkLight()
+headlight.SetLightTypeToHeadlight()
+lamp = vtkLight()
+lamp.SetPositional(True)
+lamp.SetPosition(2, 6, 3)
+with python_warnings.catch_warnings(record=True) as caught:
+    python_warnings.simplefilter("always")
+    penumbra.enable_shadows(renderer, angular_radius=2, lights=[lamp, headlight])
+said = [str(w.message) for w in caught if "angular_radius=2 is for directional" in str(w.message)]
+check(len(said) == 1, "an angle beside a positional light and a headlight: one warning")
+
+# vedo's Plane is unlit by default, so no shadow shows on it, and vedo switches VTK's warnings
+# (the pass's among them) off: enable_shadows says so in Python.
+plane = vedo.Plane(pos=(0, 0.01, 2.5), s=(1, 1), normal=(0, 1, 0))
+plotter.add(plane)
+
+
+def unlit_warnings():
+    with python_warnings.catch_warnings(record=True) as caught:
+        python_warnings.simplefilter("always")
+        penumbra.enable_shadows(renderer)
+    return [str(w.message) for w in caught if "Lighting off" in str(w.message)]
+
+
+check(len(unlit_warnings()) == 1, "an unlit vedo Plane: one Python warning")
+plane.lighting("default")
+check(not unlit_warnings(), "the plane lit: no warning")
+plotter.remove(plane)
 penumbra.disable_shadows(renderer)
 check(renderer.GetPass() is None, "disable_shadows takes the pass off")
 light = penumbra.add_light(renderer, (1, 4, 2), radius=0.3)
