@@ -40,8 +40,10 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLMoleculeMapper.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
+#include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
@@ -1151,6 +1153,38 @@ bool DrawnInNeitherPass(
 /// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
 /// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
 /// property's; 1 where VTK draws it opaque.
+/// VTK 9.1's polydata mapper, with one of its automatic shift methods (the default), moves its
+/// vertex buffer by the middle of its input points' range: a point at an infinite coordinate
+/// makes every vertex NaN, and nothing of the data is drawn.
+bool ShiftedOutOfSight(vtkMapper* mapper)
+{
+  auto drawn = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  auto input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!drawn || !input || !input->GetPoints())
+  {
+    return false;
+  }
+  switch (drawn->GetVBOShiftScaleMethod())
+  {
+    case vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE:
+    case vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE:
+    case vtkOpenGLVertexBufferObject::AUTO_SHIFT:
+      break;
+    default:
+      return false;
+  }
+  vtkDataArray* coordinates = input->GetPoints()->GetData();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double* range = coordinates->GetRange(axis);
+    if (std::isinf(range[0]) || std::isinf(range[1]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
 {
   vtkMapper* mapper = actor->GetMapper();
@@ -1206,6 +1240,10 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
       const glm::dvec3 n = glm::make_vec3(planes->GetItem(i)->GetNormal());
       clipPlanes.emplace_back(n, -glm::dot(n, glm::make_vec3(planes->GetItem(i)->GetOrigin())));
     }
+  }
+  if (ShiftedOutOfSight(mapper))
+  {
+    return;
   }
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::vector<std::pair<vtkDataObject*, double>> leaves;
@@ -1327,13 +1365,18 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
   vtkObject* owner, vtkIdType& triangles, vtkIdType& casterTriangles)
 {
   // Embree traces in float: everything is moved next to the origin in double first.
+  // The box of what is traced: points no triangle uses (common in PLY, OBJ and scanner files)
+  // may lie anywhere, and would move the origin and the epsilon with them.
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const Mesh& mesh : this->Meshes)
   {
-    for (const glm::dvec3& p : mesh.Points)
+    for (const glm::uvec3& triangle : mesh.Triangles)
     {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
+      for (int corner = 0; corner < 3; ++corner)
+      {
+        lo = glm::min(lo, mesh.Points[triangle[corner]]);
+        hi = glm::max(hi, mesh.Points[triangle[corner]]);
+      }
     }
     for (const glm::dvec4& sphere : mesh.Spheres)
     {
@@ -1341,8 +1384,9 @@ bool vtkRayTracedVisibility::vtkInternals::BuildScenes(
       hi = glm::max(hi, glm::dvec3(sphere) + sphere.w);
     }
   }
-  this->Origin = this->Meshes.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
-  const double diagonal = this->Meshes.empty() ? 1.0 : glm::length(hi - lo);
+  const bool traced = lo.x <= hi.x;
+  this->Origin = traced ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+  const double diagonal = traced ? glm::length(hi - lo) : 1.0;
   // Far above float rounding of coordinates near the origin (~6e-8 of the extent).
   this->Epsilon = 1e-5 * (diagonal > 0.0 ? diagonal : 1.0);
 

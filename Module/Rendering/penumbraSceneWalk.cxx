@@ -32,8 +32,10 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLMoleculeMapper.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
+#include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -92,6 +94,36 @@ struct MoleculeParts : vtkOpenGLMoleculeMapper
   static constexpr vtkNew<vtkOpenGLStickMapper> vtkOpenGLMoleculeMapper::*Bonds =
     &MoleculeParts::FastBondMapper;
 };
+
+/// Whether VTK 9.1's polydata mapper draws nothing of `data`: its automatic shift methods (the
+/// default) move the vertex buffer by the middle of the points' range, which a point at an
+/// infinite coordinate, used by a cell or not, makes infinite (vtkOpenGLVertexBufferObject).
+bool ShiftedToInfinity(vtkMapper* mapper, vtkDataObject* data)
+{
+  auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  auto polyData = vtkPolyData::SafeDownCast(data);
+  if (!polyMapper || !polyData || !polyData->GetPoints())
+  {
+    return false;
+  }
+  const int method = polyMapper->GetVBOShiftScaleMethod();
+  if (method != vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE &&
+    method != vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE &&
+    method != vtkOpenGLVertexBufferObject::AUTO_SHIFT)
+  {
+    return false;
+  }
+  for (int component = 0; component < 3; ++component)
+  {
+    double range[2];
+    polyData->GetPoints()->GetData()->GetRange(range, component);
+    if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 /// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader) that
 /// have no stand-in caster: there are no triangles to cast from.
@@ -566,6 +598,13 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   vtkDataObject* data = mapper->GetInputDataObject(0, 0);
   if (!data)
   {
+    return;
+  }
+  if (ShiftedToInfinity(mapper, data))
+  {
+    this->Warn(owner, leaf,
+      "has points at infinite coordinates: VTK 9.1 shifts its vertex buffer by the points' "
+      "range, which they make infinite, and draws none of it; it casts nothing");
     return;
   }
   auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);

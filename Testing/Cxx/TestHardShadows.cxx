@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 
 using namespace penumbra_test;
@@ -425,6 +426,35 @@ void TestCompositeBlocksVTKDraws()
     "an image block VTK does not draw casts no shadow");
 }
 
+/// A sphere whose data holds one point, used by no cell, at an infinite coordinate (as files
+/// do): VTK 9.1 shifts the vertex buffer by the points' range and draws none of it, so it casts
+/// nothing, with one warning, and the truth agrees. The pass cast the whole sphere and drew its
+/// depth: a shadow and a self-shadow crescent where VTK showed the ground (a user trial).
+void TestInfinitePointsVTKDraws()
+{
+  Scene scene(320, 240);
+  scene.Ground();
+  vtkSmartPointer<vtkSphereSource> sphere = SphereSource(0, 1, 0, 0.6, 32, 16);
+  sphere->Update();
+  vtkNew<vtkPolyData> data;
+  data->DeepCopy(sphere->GetOutput());
+  data->GetPoints()->InsertNextPoint(std::numeric_limits<double>::infinity(), 0.0, 0.0);
+  data->GetPoints()->Modified();
+  scene.AddData(data, 0.9, 0.3, 0.3);
+  scene.Camera(3, 4, 7, 0, 0.5, 0);
+  const WarningLog log(scene.Pass);
+  const Comparison truth = scene.Render();
+  std::printf("     truth: %d px compared, %d shadowed, %d wrong\n", truth.Compared, truth.Shadowed,
+    truth.Mismatched);
+  Check(truth.Compared > 1000 && truth.Shadowed == 0 && truth.Mismatched == 0,
+    "the truth casts nothing of it either");
+  const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
+  Check(!visibility.empty() &&
+      std::all_of(visibility.begin(), visibility.end(), [](float v) { return v == 1.0f; }),
+    "data VTK does not draw (a point at infinity) casts no shadow");
+  Check(log.Count("draws none of it") == 1 && log.Count("infinite") == 1, "one warning says why");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -441,6 +471,7 @@ int main(int argc, char* argv[])
     { "GlyphsAroundTheEye", TestGlyphsAroundTheEye },
     { "CompositeBlocksVTKDraws", TestCompositeBlocksVTKDraws },
     { "ExplicitProjection", TestExplicitProjection },
+    { "InfinitePointsVTKDraws", TestInfinitePointsVTKDraws },
   };
   return RunFeatures(argc, argv, features);
 }
