@@ -177,6 +177,10 @@ public:
   }
   std::vector<penumbra::CasterCache*> Casters;
   std::vector<vtkProp*> Receivers;
+  /// The receivers' assembly-path leaves, and their properties, which a vtkLODActor's or a
+  /// vtkFollower's inner device actor draws with (DrawsForReceiver).
+  std::set<vtkProp*> ReceiverLeaves;
+  std::set<vtkProperty*> ReceiverProperties;
   /// The property keys the pass put itself into this frame (AddRenderPassKey).
   std::vector<vtkSmartPointer<vtkInformation>> ReceiverKeys;
   /// PropsCulledInView this frame: VTK does not draw them, so they cast nothing.
@@ -882,6 +886,7 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
       {
         internals.ReceiverKeys.emplace_back(AddRenderPassKey(drawn, this));
         internals.Receivers.push_back(drawn);
+        this->AddReceiverLeaves(drawn);
       }
     }
   }
@@ -1170,20 +1175,28 @@ void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
   bounds.Pieces = penumbra::DisjointPieces(each);
 }
 
-bool vtkSoftShadowPass::IsReceiverLeaf(vtkProp* prop)
+bool vtkSoftShadowPass::DrawsForReceiver(vtkActor* actor) const
 {
-  for (vtkProp* receiver : this->Internals->Receivers)
+  const vtkInternals& internals = *this->Internals;
+  return internals.ReceiverLeaves.count(actor) ||
+    internals.ReceiverProperties.count(actor->GetProperty());
+}
+
+void vtkSoftShadowPass::AddReceiverLeaves(vtkProp* receiver)
+{
+  // Here, before anything is drawn: walking an assembly's paths rebuilds them when a part was
+  // modified, and VTK modifies each part (PokeMatrix) as it draws it, walking those paths.
+  vtkInternals& internals = *this->Internals;
+  receiver->InitPathTraversal();
+  while (vtkAssemblyPath* path = receiver->GetNextPath())
   {
-    receiver->InitPathTraversal();
-    while (vtkAssemblyPath* path = receiver->GetNextPath())
+    vtkProp* leaf = path->GetLastNode()->GetViewProp();
+    internals.ReceiverLeaves.insert(leaf);
+    if (auto actor = vtkActor::SafeDownCast(leaf))
     {
-      if (path->GetLastNode()->GetViewProp() == prop)
-      {
-        return true;
-      }
+      internals.ReceiverProperties.insert(actor->GetProperty());
     }
   }
-  return false;
 }
 
 void vtkSoftShadowPass::RemoveReceiverKeys()
@@ -1196,6 +1209,8 @@ void vtkSoftShadowPass::RemoveReceiverKeys()
   }
   this->Internals->ReceiverKeys.clear();
   this->Internals->Receivers.clear();
+  this->Internals->ReceiverLeaves.clear();
+  this->Internals->ReceiverProperties.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -1612,7 +1627,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
   auto actor = vtkActor::SafeDownCast(prop);
   // Actors that a prop such as vtkCubeAxesActor draws through, unseen by the renderer, are its
   // annotation: VTK draws their lines unlit by design, so they say nothing.
-  if (penumbra::IsUnlit(fragmentShader) && actor && this->IsReceiverLeaf(actor))
+  if (penumbra::IsUnlit(fragmentShader) && actor && this->DrawsForReceiver(actor))
   {
     // Worth saying: vedo's Plane, for one, is unlit by default, and VTK draws streamlines
     // (whose normals vtkStreamTracer does not make active) unlit. Splats are unlit by nature

@@ -56,6 +56,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkActor;
 class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
@@ -466,8 +467,11 @@ private:
   void UpdateShaderConfiguration();
   void AddReceiverKeys(const vtkRenderState* s);
   void RemoveReceiverKeys();
-  /// Whether `prop` is one of this frame's receivers or a part of one's assembly paths.
-  bool IsReceiverLeaf(vtkProp* prop);
+  /// Records `receiver`'s assembly-path leaves and their properties for DrawsForReceiver.
+  void AddReceiverLeaves(vtkProp* receiver);
+  /// Whether `actor` is one of this frame's receivers or a leaf of one's assembly paths, or
+  /// draws with one's property (a vtkLODActor's or vtkFollower's device actor).
+  bool DrawsForReceiver(vtkActor* actor) const;
   /// Clears the depth and draws, through VTK, that of the props not left to RenderCasterDepth.
   void RenderDepth(const vtkRenderState* s);
   /// After UpdateCasters: the depth of the props left to it, from their caster meshes.

@@ -30,6 +30,7 @@
 #include "vtkDelaunay3D.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkFollower.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageActor.h"
@@ -991,6 +992,38 @@ void TestCubeAxes()
   Check(log.Count("without lighting") == 0, "vtkCubeAxesActor's lines: no warning");
 }
 
+void TestUnlitPartsWarn()
+{
+  // Unlit actors drawn for the renderer's props warn once each: assembly parts, and a
+  // vtkLODActor's and a vtkFollower's device actors, which draw with their property. Finding
+  // the parts walked the assembly's paths while VTK drew them, which rebuilt them under VTK's
+  // loop (freed memory read; ctest runs this with MALLOC_PERTURB_ set).
+  View view;
+  Ground(view.Renderer);
+  vtkNew<vtkAssembly> assembly;
+  for (int i = 0; i < 6; ++i)
+  {
+    auto part = MakeActor(SphereSource(-1.5 + 0.6 * i, 1.0, 0.0, 0.25, 16, 8), 0.9, 0.3, 0.3);
+    part->GetProperty()->SetLighting(i % 2 == 0);
+    assembly->AddPart(part);
+  }
+  view.Renderer->AddActor(assembly);
+  vtkNew<vtkLODActor> levels;
+  levels->SetMapper(MakeActor(SphereSource(-1.0, 0.5, 1.5, 0.3, 16, 8), 1, 1, 1)->GetMapper());
+  levels->GetProperty()->LightingOff();
+  view.Renderer->AddActor(levels);
+  vtkNew<vtkFollower> follower;
+  follower->SetMapper(MakeActor(SphereSource(1.0, 0.5, 1.5, 0.3, 16, 8), 1, 1, 1)->GetMapper());
+  follower->SetCamera(view.Renderer->GetActiveCamera());
+  follower->GetProperty()->LightingOff();
+  view.Renderer->AddActor(follower);
+  const WarningLog log(view.Pass);
+  view.Render();
+  view.Render();
+  Check(log.Count("Lighting off") == 5,
+    "three unlit assembly parts, a vtkLODActor and a vtkFollower: one warning each");
+}
+
 //------------------------------------------------------------------------------
 void TestLODActor()
 {
@@ -1514,6 +1547,7 @@ int main()
   TestAxesActor();
   TestAnnotatedCube();
   TestCubeAxes();
+  TestUnlitPartsWarn();
   TestLODActor();
   TestDataSetInput();
   TestLODProp3D();
