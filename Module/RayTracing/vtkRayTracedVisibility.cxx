@@ -24,6 +24,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
+#include "vtkDataSetMapper.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
@@ -1150,31 +1151,25 @@ bool DrawnInNeitherPass(
   return colours->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
 }
 
-/// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
-/// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
-/// property's; 1 where VTK draws it opaque.
-/// VTK 9.1's polydata mapper, with one of its automatic shift methods (the default), moves its
-/// vertex buffer by the middle of its input points' range: a point at an infinite coordinate
-/// makes every vertex NaN, and nothing of the data is drawn.
-bool ShiftedOutOfSight(vtkMapper* mapper)
+/// Whether `data` holds a polydata whose points reach an infinite coordinate.
+bool ReachesInfinity(vtkDataObject* data)
 {
-  auto drawn = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
-  auto input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!drawn || !input || !input->GetPoints())
+  if (auto tree = vtkDataObjectTree::SafeDownCast(data))
   {
+    vtkSmartPointer<vtkDataObjectTreeIterator> it;
+    it.TakeReference(tree->NewTreeIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (ReachesInfinity(it->GetCurrentDataObject()))
+      {
+        return true;
+      }
+    }
     return false;
   }
-  switch (drawn->GetVBOShiftScaleMethod())
-  {
-    case vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE:
-    case vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE:
-    case vtkOpenGLVertexBufferObject::AUTO_SHIFT:
-      break;
-    default:
-      return false;
-  }
-  vtkDataArray* coordinates = input->GetPoints()->GetData();
-  for (int axis = 0; axis < 3; ++axis)
+  auto input = vtkPolyData::SafeDownCast(data);
+  vtkDataArray* coordinates = input && input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  for (int axis = 0; coordinates && axis < 3; ++axis)
   {
     const double* range = coordinates->GetRange(axis);
     if (std::isinf(range[0]) || std::isinf(range[1]))
@@ -1185,6 +1180,52 @@ bool ShiftedOutOfSight(vtkMapper* mapper)
   return false;
 }
 
+/// VTK 9.1's polydata mapper, with one of its automatic shift methods (the default), moves its
+/// vertex buffer by the middle of its input points' range: a point at an infinite coordinate
+/// makes every vertex NaN, and nothing of the data is drawn. vtkDataSetMapper hands a polydata
+/// input, all its points, to such a mapper of its own; vtkCompositePolyDataMapper2 shifts one
+/// buffer for all its polydata blocks.
+bool ShiftedOutOfSight(vtkMapper* mapper)
+{
+  if (!vtkOpenGLVertexBufferObject::GetGlobalCoordShiftAndScaleEnabled())
+  {
+    return false;
+  }
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  int method = vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE; // a vtkDataSetMapper's before it drew
+  if (auto datasets = vtkDataSetMapper::SafeDownCast(mapper))
+  {
+    if (!vtkPolyData::SafeDownCast(input))
+    {
+      return false;
+    }
+    if (auto inner = vtkOpenGLPolyDataMapper::SafeDownCast(datasets->GetPolyDataMapper()))
+    {
+      method = inner->GetVBOShiftScaleMethod();
+    }
+  }
+  else if (auto drawn = vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    method = drawn->GetVBOShiftScaleMethod();
+  }
+  else
+  {
+    return false;
+  }
+  switch (method)
+  {
+    case vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE:
+    case vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE:
+    case vtkOpenGLVertexBufferObject::AUTO_SHIFT:
+      return ReachesInfinity(input);
+    default:
+      return false;
+  }
+}
+
+/// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
+/// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
+/// property's; 1 where VTK draws it opaque.
 void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
 {
   vtkMapper* mapper = actor->GetMapper();

@@ -23,6 +23,7 @@
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
@@ -95,34 +96,69 @@ struct MoleculeParts : vtkOpenGLMoleculeMapper
     &MoleculeParts::FastBondMapper;
 };
 
-/// Whether VTK 9.1's polydata mapper draws nothing of `data`: its automatic shift methods (the
-/// default) move the vertex buffer by the middle of the points' range, which a point at an
-/// infinite coordinate, used by a cell or not, makes infinite (vtkOpenGLVertexBufferObject).
-bool ShiftedToInfinity(vtkMapper* mapper, vtkDataObject* data)
+/// Whether `points` has a coordinate whose range is infinite.
+bool InfiniteRange(vtkPoints* points)
 {
-  auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
-  auto polyData = vtkPolyData::SafeDownCast(data);
-  if (!polyMapper || !polyData || !polyData->GetPoints())
-  {
-    return false;
-  }
-  const int method = polyMapper->GetVBOShiftScaleMethod();
-  if (method != vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE &&
-    method != vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE &&
-    method != vtkOpenGLVertexBufferObject::AUTO_SHIFT)
-  {
-    return false;
-  }
-  for (int component = 0; component < 3; ++component)
+  for (int component = 0; points && component < 3; ++component)
   {
     double range[2];
-    polyData->GetPoints()->GetData()->GetRange(range, component);
+    points->GetData()->GetRange(range, component);
     if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
     {
       return true;
     }
   }
   return false;
+}
+
+/// Whether VTK 9.1 draws nothing of `data`: its polydata mapper's automatic shift methods (the
+/// default) move the vertex buffer by the middle of the points' range, which a point at an
+/// infinite coordinate, used by a cell or not, makes infinite (vtkOpenGLVertexBufferObject).
+/// vtkDataSetMapper draws a polydata input through a polydata mapper of its own (made at its
+/// first frame, with the default method), all its points kept; a composite mapper shifts one
+/// buffer by all its polydata blocks' points.
+bool ShiftedToInfinity(vtkMapper* mapper, vtkDataObject* data)
+{
+  if (!vtkOpenGLVertexBufferObject::GetGlobalCoordShiftAndScaleEnabled())
+  {
+    return false;
+  }
+  vtkMapper* drawing = mapper;
+  if (auto datasets = vtkDataSetMapper::SafeDownCast(mapper))
+  {
+    if (!vtkPolyData::SafeDownCast(data))
+    {
+      return false; // drawn from its surface's points
+    }
+    drawing = datasets->GetPolyDataMapper();
+  }
+  auto polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(drawing);
+  if (drawing && !polyMapper)
+  {
+    return false;
+  }
+  const int method = polyMapper ? polyMapper->GetVBOShiftScaleMethod()
+                                : vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE;
+  if (method != vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE &&
+    method != vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE &&
+    method != vtkOpenGLVertexBufferObject::AUTO_SHIFT)
+  {
+    return false;
+  }
+  if (auto tree = vtkDataObjectTree::SafeDownCast(data))
+  {
+    for (vtkDataObject* leaf : vtk::Range(tree))
+    {
+      auto block = vtkPolyData::SafeDownCast(leaf);
+      if (block && InfiniteRange(block->GetPoints()))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  auto polyData = vtkPolyData::SafeDownCast(data);
+  return polyData && InfiniteRange(polyData->GetPoints());
 }
 
 /// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader) that

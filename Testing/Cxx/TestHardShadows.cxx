@@ -8,6 +8,7 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
@@ -19,6 +20,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkTransform.h"
 
@@ -432,27 +434,58 @@ void TestCompositeBlocksVTKDraws()
 /// depth: a shadow and a self-shadow crescent where VTK showed the ground (a user trial).
 void TestInfinitePointsVTKDraws()
 {
-  Scene scene(320, 240);
-  scene.Ground();
-  vtkSmartPointer<vtkSphereSource> sphere = SphereSource(0, 1, 0, 0.6, 32, 16);
-  sphere->Update();
-  vtkNew<vtkPolyData> data;
-  data->DeepCopy(sphere->GetOutput());
-  data->GetPoints()->InsertNextPoint(std::numeric_limits<double>::infinity(), 0.0, 0.0);
-  data->GetPoints()->Modified();
-  scene.AddData(data, 0.9, 0.3, 0.3);
-  scene.Camera(3, 4, 7, 0, 0.5, 0);
-  const WarningLog log(scene.Pass);
-  const Comparison truth = scene.Render();
-  std::printf("     truth: %d px compared, %d shadowed, %d wrong\n", truth.Compared, truth.Shadowed,
-    truth.Mismatched);
-  Check(truth.Compared > 1000 && truth.Shadowed == 0 && truth.Mismatched == 0,
-    "the truth casts nothing of it either");
-  const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
-  Check(!visibility.empty() &&
-      std::all_of(visibility.begin(), visibility.end(), [](float v) { return v == 1.0f; }),
-    "data VTK does not draw (a point at infinity) casts no shadow");
-  Check(log.Count("draws none of it") == 1 && log.Count("infinite") == 1, "one warning says why");
+  // Through a polydata mapper, a vtkDataSetMapper (PyVista's) and, as a block beside a clean
+  // sphere, a vtkCompositePolyDataMapper2, which shifts one buffer for both blocks.
+  for (const char* kind :
+    { "vtkPolyDataMapper", "vtkDataSetMapper", "vtkCompositePolyDataMapper2" })
+  {
+    Scene scene(320, 240);
+    scene.Ground();
+    vtkSmartPointer<vtkSphereSource> sphere = SphereSource(0, 1, 0, 0.6, 32, 16);
+    sphere->Update();
+    vtkNew<vtkPolyData> data;
+    data->DeepCopy(sphere->GetOutput());
+    data->GetPoints()->InsertNextPoint(std::numeric_limits<double>::infinity(), 0.0, 0.0);
+    data->GetPoints()->Modified();
+    vtkSmartPointer<vtkSphereSource> clean = SphereSource(-1.5, 1, 0, 0.4, 32, 16);
+    clean->Update();
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetBlock(0, data);
+    blocks->SetBlock(1, clean->GetOutput());
+    vtkSmartPointer<vtkMapper> mapper;
+    if (std::string(kind) == "vtkPolyDataMapper")
+    {
+      mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+      mapper->SetInputDataObject(data);
+    }
+    else if (std::string(kind) == "vtkDataSetMapper")
+    {
+      mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+      mapper->SetInputDataObject(data);
+    }
+    else
+    {
+      mapper = vtkSmartPointer<vtkCompositePolyDataMapper2>::New();
+      mapper->SetInputDataObject(blocks);
+    }
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    scene.Renderer->AddActor(actor);
+    scene.Camera(3, 4, 7, 0, 0.5, 0);
+    const WarningLog log(scene.Pass);
+    const Comparison truth = scene.Render();
+    std::printf("     %s: truth %d px compared, %d shadowed, %d wrong\n", kind, truth.Compared,
+      truth.Shadowed, truth.Mismatched);
+    const std::string what = std::string(" (") + kind + ")";
+    Check(truth.Compared > 1000 && truth.Shadowed == 0 && truth.Mismatched == 0,
+      "the truth casts nothing of it either" + what);
+    const std::vector<float> visibility = ImageValues(scene.Pass->GetVisibilityImage(0));
+    Check(!visibility.empty() &&
+        std::all_of(visibility.begin(), visibility.end(), [](float v) { return v == 1.0f; }),
+      "data VTK does not draw (a point at infinity) casts no shadow" + what);
+    Check(log.Count("draws none of it") == 1 && log.Count("infinite") == 1,
+      "one warning says why" + what);
+  }
 }
 
 } // namespace
