@@ -12,7 +12,7 @@ The plain VTK way, which this wraps:
 """
 import warnings
 
-from vtkmodules.vtkRenderingCore import vtkLight
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight
 
 from .vtkPenumbraRendering import vtkSoftShadowPass
 
@@ -65,8 +65,8 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
     for light in targets:
         size = radius if light.GetPositional() else angular_radius
         if size is not None:
-            if size < 0:
-                raise ValueError("a light's radius cannot be negative (%r)" % size)
+            if not size >= 0:
+                raise ValueError("a light's radius must be a number of at least 0 (%r)" % size)
             vtkSoftShadowPass.SetLightRadius(light, size)
     shadows = vtkSoftShadowPass()
     shadows.SetMethod(METHODS[method])
@@ -88,14 +88,22 @@ def enable_shadows(renderer, radius=None, angular_radius=None, method="automatic
 
 
 def _unlit_receivers(renderer):
-    actors = renderer.GetActors()
+    """The visible actors drawn unlit for the renderer's receivers: top-level actors and the
+    parts of assemblies, under the top-level prop's ReceivesShadows flag, as the pass reads it."""
+    props = renderer.GetViewProps()
     found = []
-    for i in range(actors.GetNumberOfItems()):
-        actor = actors.GetItemAsObject(i)
-        if (actor.GetVisibility() and actor.GetProperty() is not None
-                and not actor.GetProperty().GetLighting()
-                and vtkSoftShadowPass.GetReceivesShadows(actor)):
-            found.append(actor)
+    for i in range(props.GetNumberOfItems()):
+        prop = props.GetItemAsObject(i)
+        if not prop.GetVisibility() or not vtkSoftShadowPass.GetReceivesShadows(prop):
+            continue
+        prop.InitPathTraversal()
+        path = prop.GetNextPath()
+        while path is not None:
+            leaf = path.GetLastNode().GetViewProp()
+            if (isinstance(leaf, vtkActor) and leaf.GetVisibility()
+                    and not leaf.GetProperty().GetLighting()):
+                found.append(leaf)
+            path = prop.GetNextPath()
     return found
 
 
@@ -108,8 +116,8 @@ def add_light(renderer, position, radius=0.0, focal_point=(0.0, 0.0, 0.0)):
     light.SetConeAngle(180)
     light.SetPosition(*position)
     light.SetFocalPoint(*focal_point)
-    if radius < 0:
-        raise ValueError("a light's radius cannot be negative (%r)" % radius)
+    if not radius >= 0:
+        raise ValueError("a light's radius must be a number of at least 0 (%r)" % radius)
     vtkSoftShadowPass.SetLightRadius(light, radius)
     renderer.AddLight(light)
     return light

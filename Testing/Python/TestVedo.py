@@ -147,6 +147,17 @@ check(len(unlit_warnings()) == 1, "an unlit vedo Plane: one Python warning")
 plane.lighting("default")
 check(not unlit_warnings(), "the plane lit: no warning")
 plotter.remove(plane)
+
+for bad in (-1.0, float("nan")):
+    refused = []
+    for call in (lambda: penumbra.add_light(renderer, (0, 5, 0), radius=bad),
+                 lambda: penumbra.enable_shadows(renderer, angular_radius=bad, lights=[sun])):
+        try:
+            call()
+            refused.append(False)
+        except ValueError:
+            refused.append(True)
+    check(all(refused), "a radius of %r: both helpers refuse it" % bad)
 penumbra.disable_shadows(renderer)
 check(renderer.GetPass() is None, "disable_shadows takes the pass off")
 light = penumbra.add_light(renderer, (1, 4, 2), radius=0.3)
