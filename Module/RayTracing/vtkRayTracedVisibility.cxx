@@ -1267,8 +1267,9 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
     }
     return;
   }
-  // Lines and points: a wireframe or points representation draws no surface.
-  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  // Lines and points: a wireframe or points representation draws no surface; nor does data
+  // VTK shifts out of sight.
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE || ShiftedOutOfSight(mapper))
   {
     return;
   }
@@ -1281,10 +1282,6 @@ void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vec
       const glm::dvec3 n = glm::make_vec3(planes->GetItem(i)->GetNormal());
       clipPlanes.emplace_back(n, -glm::dot(n, glm::make_vec3(planes->GetItem(i)->GetOrigin())));
     }
-  }
-  if (ShiftedOutOfSight(mapper))
-  {
-    return;
   }
   auto blocks = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
   std::vector<std::pair<vtkDataObject*, double>> leaves;
