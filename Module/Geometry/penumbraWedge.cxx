@@ -255,15 +255,12 @@ const std::array<unsigned int, 24>& Wedge::Triangles()
   return triangles;
 }
 
-LightPyramid LightPyramid::Build(
-  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+namespace
 {
-  LightPyramid pyramid;
-  if (light.w == 0.0 || !(radius >= 0.0))
-  {
-    return pyramid;
-  }
-  const glm::dvec3 centre(light);
+/// A positional light's pyramid: apex at the centre, around the edge's directions from it.
+bool PositionalPyramidCone(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& centre,
+  double radius, glm::dvec3& apex, glm::dvec3& axis, double& halfAngle)
+{
   const glm::dvec3 toA = a - centre, toB = b - centre;
   // The nearest point of the edge to the centre bounds the widening angle.
   const glm::dvec3 edge = b - a;
@@ -273,20 +270,59 @@ LightPyramid LightPyramid::Build(
   const double nearest = glm::length(toA + t * edge);
   if (!(nearest > radius) || !(glm::length(toA) > 0.0) || !(glm::length(toB) > 0.0))
   {
-    return pyramid;
+    return false;
   }
   const glm::dvec3 dirA = glm::normalize(toA), dirB = glm::normalize(toB);
   const glm::dvec3 sum = dirA + dirB;
   if (!(glm::length(sum) > 1e-12))
   {
-    return pyramid; // the edge spans the centre: no cone holds it
+    return false; // the edge spans the centre: no cone holds it
   }
-  const glm::dvec3 axis = glm::normalize(sum);
+  apex = centre;
+  axis = glm::normalize(sum);
   const double spread = std::acos(glm::clamp(glm::dot(axis, dirA), -1.0, 1.0));
-  const double widening = std::atan(radius / (nearest - radius));
-  const double halfAngle = spread + widening;
+  halfAngle = spread + std::atan(radius / (nearest - radius));
+  return true;
+}
+
+/// A directional light's pyramid. The points that see the edge cross the light are the edge
+/// swept along the cone of directions away from the light; where the edge itself runs within a
+/// cone of that axis from its end nearer the light, the sweep of that end holds the others'.
+bool DirectionalPyramidCone(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& towards,
+  double radius, glm::dvec3& apex, glm::dvec3& axis, double& halfAngle)
+{
+  if (!(glm::length(towards) > 0.0))
+  {
+    return false;
+  }
+  axis = -glm::normalize(towards);
+  const bool aNearer = glm::dot(a, axis) <= glm::dot(b, axis);
+  apex = aNearer ? a : b;
+  const glm::dvec3 along = (aNearer ? b : a) - apex;
+  const double length = glm::length(along);
+  const double edgeAngle =
+    length > 0.0 ? std::acos(glm::clamp(glm::dot(along / length, axis), -1.0, 1.0)) : 0.0;
+  // Widened a little so that an edge on the cone's side stays inside against rounding.
+  halfAngle = std::max(radius, edgeAngle) * (1.0 + 1e-6) + 1e-9;
+  return true;
+}
+} // namespace
+
+LightPyramid LightPyramid::Build(
+  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+{
+  LightPyramid pyramid;
+  if (!(radius >= 0.0))
+  {
+    return pyramid;
+  }
+  glm::dvec3 apex, axis;
+  double halfAngle = 0.0;
+  const bool cone = light.w != 0.0
+    ? PositionalPyramidCone(a, b, glm::dvec3(light), radius, apex, axis, halfAngle)
+    : DirectionalPyramidCone(a, b, glm::dvec3(light), radius, apex, axis, halfAngle);
   constexpr double MaximumHalfAngle = Pi / 3.0;
-  if (!(halfAngle < MaximumHalfAngle))
+  if (!cone || !(halfAngle < MaximumHalfAngle))
   {
     return pyramid;
   }
@@ -295,7 +331,7 @@ LightPyramid LightPyramid::Build(
   const double reach = std::tan(halfAngle);
   const glm::dvec3 corners[4] = { axis + reach * (e1 + e2), axis + reach * (-e1 + e2),
     axis + reach * (-e1 - e2), axis + reach * (e1 - e2) };
-  pyramid.Vertices[0] = glm::dvec4(centre, 1.0);
+  pyramid.Vertices[0] = glm::dvec4(apex, 1.0);
   for (int k = 0; k < 4; ++k)
   {
     pyramid.Vertices[k + 1] = glm::dvec4(glm::normalize(corners[k]), 0.0);

@@ -68,14 +68,20 @@ struct VTKPENUMBRAGEOMETRY_EXPORT Wedge
 };
 
 /**
- * A convex bound for an edge that has no Wedge because its line passes through a positional
- * light's sphere (the edge points at the light): every point from which the edge can be seen
- * crossing the light lies in this square pyramid, apex at the light's centre, open to infinity
- * away from it. A point p that sees edge point E in front of light point X lies on the ray from X
- * through E, and the angle at the centre between p and E is below atan(r / (|E - c| - r)); the
- * pyramid circumscribes the cone of the edge's directions from the centre widened by that angle.
- * Valid is false for a directional light, an edge reaching into the light, or a bound wider than
- * 60 degrees: then the whole viewport is the only bound.
+ * A convex bound for an edge that has no Wedge because its line passes through the light (the
+ * edge points at the light): every point from which the edge can be seen crossing the light lies
+ * in this square pyramid, open to infinity away from the light.
+ * - Positional light: apex at the light's centre. A point p that sees edge point E in front of
+ *   light point X lies on the ray from X through E, and the angle at the centre between p and E is
+ *   below atan(r / (|E - c| - r)); the pyramid circumscribes the cone of the edge's directions
+ *   from the centre widened by that angle.
+ * - Directional light (radius an angle): such points are the edge swept along the cone of
+ *   directions away from the light. Apex at the edge's end nearer the light, axis away from it,
+ *   half-angle the larger of the radius and the edge's angle to the axis: the pyramid holds both
+ *   the cone and the edge, so their sum. It is as narrow as the light's own cone, where the
+ *   receivers' box (all the viewport, for a terrain) was the only bound before.
+ * Valid is false for an edge reaching into a positional light or a bound wider than 60 degrees:
+ * then the whole viewport is the only bound.
  */
 struct VTKPENUMBRAGEOMETRY_EXPORT LightPyramid
 {

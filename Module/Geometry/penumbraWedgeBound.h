@@ -4,7 +4,7 @@
  * view of the edge can cross the light, as triangles ready to upload.
  *
  * Wedges (the 2002 method) and per-sample counting both draw it. It is the edge's Wedge, or its
- * LightPyramid where the edge points at a positional light, or the whole viewport where it has
+ * LightPyramid where the edge points at the light, or the whole viewport where it has
  * neither; with a receivers' box it is cut to that box and to the edge's silhouette sector.
  */
 #ifndef penumbraWedgeBound_h
@@ -27,7 +27,7 @@ struct EdgeFace;
 enum class WedgeShape
 {
   Planes,       ///< a Wedge: four planes around the edge
-  Pyramid,      ///< a LightPyramid: the edge points at a positional light
+  Pyramid,      ///< a LightPyramid: the edge points at the light
   FullViewport, ///< no bound of its own: the receivers' box, or a triangle over the viewport
   Nothing       ///< the bound misses the receivers' box
 };

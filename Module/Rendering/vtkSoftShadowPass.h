@@ -246,8 +246,10 @@ public:
   vtkGetMacro(NumberOfShadowingLights, int);
   vtkGetMacro(NumberOfShadowVolumeTriangles, vtkIdType);
   /// Wedges drawn in the last frame (centre-silhouette penumbra wedges and soft shadow volumes'
-  /// potential-silhouette wedges), and those drawn over the whole viewport because their edge
-  /// nearly points at the light (no wedge planes exist).
+  /// potential-silhouette wedges), and those drawn over the whole viewport (or the receivers'
+  /// box) because their edge points at the light and has no bound: no wedge planes exist, and
+  /// its light pyramid (penumbra::LightPyramid) would be wider than 60 degrees or the edge
+  /// reaches into a positional light.
   vtkGetMacro(NumberOfPenumbraWedges, vtkIdType);
   vtkGetMacro(NumberOfFullViewportWedges, vtkIdType);
   /// (caster, light) pairs skipped in the last frame because that shadow cannot reach the view.

@@ -151,6 +151,19 @@ void RunScene(const SceneMaker& make, const Limits& limits)
   Check(maeCounted <= maeAveraged + 0.01, scene.Name + ": as accurate as averaging");
 }
 
+/// Edges within a directional light's cone of its direction have no wedge: each is bounded by
+/// the pyramid swept from its end nearer the light, never by the whole viewport.
+void TestNoFullViewportWedges(const SceneMaker& make)
+{
+  const Scene scene = make();
+  SceneWindow view(scene);
+  view.Pass->SetMethodToSoftShadowVolumes();
+  view.Window->Render();
+  Check(
+    view.Pass->GetNumberOfPenumbraWedges() > 0 && view.Pass->GetNumberOfFullViewportWedges() == 0,
+    scene.Name + ": no wedge drawn over the whole viewport");
+}
+
 /// Stage times: off by default (-1), then every stage timed, the wedges' GPU time > 0 when
 /// counting and none of the stages longer than the whole frame.
 void TestStageTimes(const SceneMaker& make)
@@ -764,6 +777,24 @@ int main()
     },
     []
     {
+      // A table under a directional light nearly overhead: its legs' vertical edges lie within
+      // the light's cone, so they have no wedge (TestNoFullViewportWedges).
+      return MakeScene("table, legs along a directional light",
+        [](Scene& s)
+        {
+          s.Add(MakeActor(BoxSource(0.0, 1.6, 0.0, 2.0, 0.1, 1.2), 0.6, 0.4, 0.3));
+          for (const double x : { -0.9, 0.9 })
+          {
+            for (const double z : { -0.5, 0.5 })
+            {
+              s.Add(MakeActor(BoxSource(x, 0.78, z, 0.12, 1.55, 0.12), 0.6, 0.4, 0.3));
+            }
+          }
+        },
+        true, 4.0, { 0.03, 1.0, 0.02 });
+    },
+    []
+    {
       // Under the slab's edge, looking across the ground: the eye and near plane in its
       // penumbra.
       return MakeScene("eye inside a penumbra",
@@ -854,6 +885,7 @@ int main()
   TestEyeInsideRoom(RoomKind::AssemblyPart, "an assembly's part");
   TestCompositeFarApart();
   TestHalfResolutionEdges(scenes[0]);
+  TestNoFullViewportWedges(scenes[4]);
   TestAutomaticChoice(scenes[0]);
   TestLampInsideCasterBox();
   TestSampleCounts(scenes[0]);

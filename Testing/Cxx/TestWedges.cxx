@@ -497,8 +497,57 @@ void TestLightPyramid()
   Check(outward, "pyramid triangles face outwards");
   Check(!LightPyramid::Build({ 0, 0, 0 }, { 0, 1, 0 }, glm::dvec4(0, 0.5, 0, 1), 0.6).Valid,
     "no pyramid for an edge reaching into the light");
-  Check(!LightPyramid::Build({ 0, 0, 0 }, { 0, 1, 0 }, glm::dvec4(0, 1, 0, 0), 0.1).Valid,
-    "no pyramid for a directional light");
+}
+
+void TestDirectionalLightPyramid()
+{
+  // A directional light's edges at up to twice its angular radius from its direction (those
+  // within it have no wedge): every point from which some direction of the light's cone meets
+  // the edge lies in the pyramid, and the pyramid stays as narrow as that cone.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const glm::dvec3 towards = glm::normalize(glm::dvec3(0.3, 0.15, 1.0));
+  const double radius = 0.05;
+  glm::dvec3 e1, e2;
+  PlaneBasis(towards, e1, e2);
+  auto within = [&](double angle)
+  {
+    const double turn = 6.283185307179586 * unit(rng), tilt = angle * std::sqrt(unit(rng));
+    return std::cos(tilt) * towards + std::sin(tilt) * (std::cos(turn) * e1 + std::sin(turn) * e2);
+  };
+  int withoutWedge = 0, inside = 0, tried = 0;
+  bool narrow = true;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    const glm::dvec3 a(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
+    const glm::dvec3 b =
+      a + (0.05 + unit(rng)) * (unit(rng) < 0.5 ? 1.0 : -1.0) * within(2.0 * radius);
+    const glm::dvec4 light(3.0 * towards, 0.0); // a direction of any length
+    withoutWedge += !Wedge::Build(a, b, light, radius).Valid;
+    const LightPyramid pyramid = LightPyramid::Build(a, b, light, radius);
+    if (!pyramid.Valid)
+    {
+      narrow = false;
+      continue;
+    }
+    for (int v = 1; v < 5; ++v)
+    {
+      narrow = narrow && glm::dot(glm::dvec3(pyramid.Vertices[v]), -towards) > std::cos(0.15);
+    }
+    for (int k = 0; k < 50; ++k)
+    {
+      const glm::dvec3 e = a + unit(rng) * (b - a);
+      const glm::dvec3 p = e - (0.01 + 30.0 * unit(rng)) * within(radius);
+      ++tried;
+      inside += pyramid.Contains(p, 1e-12);
+    }
+  }
+  std::printf("directional light pyramids: %d of 200 edges without a wedge, %d of %d points "
+              "inside\n",
+    withoutWedge, inside, tried);
+  Check(withoutWedge > 30, "edges within the light's cone of its direction have no wedge");
+  Check(narrow, "a directional light's pyramid is built, within 3 radii of its direction");
+  Check(inside == tried, "every point that can see such an edge cross the light is inside");
 }
 
 } // namespace
@@ -512,5 +561,6 @@ int main()
   TestDegenerateEdges();
   TestLightSamples();
   TestLightPyramid();
+  TestDirectionalLightPyramid();
   return penumbra_test::Finish();
 }
