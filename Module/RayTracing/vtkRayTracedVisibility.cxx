@@ -967,10 +967,15 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   index = same(index);
 
   // vtkGlyph3D has one Range for clamping and for picking sources; the mapper clamps with it
-  // and picks by the index itself. With both, each glyph gets its own transform.
+  // and picks by the index itself. And it has one vector array, for orienting and for scaling
+  // by a vector's components or length; the mapper may take two. With either, each glyph gets
+  // its own transform.
   const bool clampsAndPicks = mapper->GetClamping() && scale && index && sources > 1;
+  const bool twoVectorArrays = scale && orientation && scale != orientation &&
+    (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS ||
+      scale->GetNumberOfComponents() > 1);
   if ((!orientation || mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION) &&
-    !clampsAndPicks)
+    !clampsAndPicks && !twoVectorArrays)
   {
     vtkNew<vtkGlyph3D> glyphs;
     glyphs->SetInputData(points);

@@ -205,8 +205,10 @@ void CompareScenes(const std::string& name, const std::function<void(vtkRenderer
 vtkSmartPointer<vtkPolyData> GlyphPoints()
 {
   vtkNew<vtkPoints> points;
-  vtkNew<vtkDoubleArray> size, direction, angles, index;
+  vtkNew<vtkDoubleArray> size, direction, angles, index, stretch;
   size->SetName("size");
+  stretch->SetName("stretch");
+  stretch->SetNumberOfComponents(3);
   direction->SetName("direction");
   direction->SetNumberOfComponents(3);
   angles->SetName("angles");
@@ -222,6 +224,7 @@ vtkSmartPointer<vtkPolyData> GlyphPoints()
     direction->InsertNextTuple3(1.0, 0.3 * (i % 5) - 0.6, 0.2 * (i % 3));
     angles->InsertNextTuple3(15.0 * i, 40.0 - 7.0 * i, 25.0 * (i % 4));
     index->InsertNextValue(i % 2);
+    stretch->InsertNextTuple3(0.4 + 0.05 * i, 1.2 - 0.06 * i, 0.5 + 0.1 * (i % 3));
     mask->InsertNextValue(i % 5 != 3);
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();
@@ -231,6 +234,7 @@ vtkSmartPointer<vtkPolyData> GlyphPoints()
   poly->GetPointData()->AddArray(angles);
   poly->GetPointData()->AddArray(index);
   poly->GetPointData()->AddArray(mask);
+  poly->GetPointData()->AddArray(stretch);
   return poly;
 }
 
@@ -540,6 +544,50 @@ void TestGlyphsByQuaternionTableAndClamping()
           rotation.first, rotation.second.x, rotation.second.y, rotation.second.z);
         transform->Scale(scale, scale, scale);
         auto actor = MakeActor(i % 2 ? static_cast<vtkAlgorithm*>(box) : cone, 1, 1, 1);
+        actor->SetUserTransform(transform);
+        r->AddActor(actor);
+      }
+    });
+}
+
+void TestGlyphsStretchedAndDirected()
+{
+  // Scaled by the components of one array and turned along another: vtkGlyph3D has one vector
+  // array for both, so the truth must not build these with it.
+  vtkSmartPointer<vtkPolyData> points = GlyphPoints();
+  auto cone = Cone();
+  cone->Update();
+  const double factor = 1.3;
+  CompareScenes(
+    "glyph mapper, component scales, directions",
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkNew<vtkGlyph3DMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetSourceConnection(cone->GetOutputPort());
+      mapper->SetOrientationArray("direction");
+      mapper->SetScaleArray("stretch");
+      mapper->SetScaleModeToScaleByVectorComponents();
+      mapper->SetScaleFactor(factor);
+      r->AddActor(LitActor(mapper));
+    },
+    [&](vtkRenderer* r)
+    {
+      Ground(r);
+      vtkDataArray* directions = points->GetPointData()->GetArray("direction");
+      vtkDataArray* stretches = points->GetPointData()->GetArray("stretch");
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        // The mapper turns x onto the direction by a half turn about their bisector.
+        double d[3], s[3];
+        directions->GetTuple(i, d);
+        stretches->GetTuple(i, s);
+        vtkNew<vtkTransform> transform;
+        transform->Translate(points->GetPoint(i));
+        transform->RotateWXYZ(180.0, d[0] + vtkMath::Norm(d), d[1], d[2]);
+        transform->Scale(factor * s[0], factor * s[1], factor * s[2]);
+        auto actor = MakeActor(cone, 1, 1, 1);
         actor->SetUserTransform(transform);
         r->AddActor(actor);
       }
@@ -1541,6 +1589,7 @@ int main()
   TestGlyphsOfCompositeInput();
   TestGlyphsByDirectionClampingAndIndex();
   TestGlyphsByQuaternionTableAndClamping();
+  TestGlyphsStretchedAndDirected();
   TestMultiBlock();
   TestClippingPlanes();
   TestAssembly();
