@@ -1,5 +1,6 @@
 #include "penumbraReceiverShader.h"
 
+#include <cctype>
 #include <sstream>
 
 namespace penumbra
@@ -30,14 +31,30 @@ int Count(const std::string& text, const std::string& what)
   return count;
 }
 
+/// How often `name` occurs in `text` from `from` on as a whole identifier (lightColor1 is not
+/// in lightColor10).
+int IdentifierUses(const std::string& text, const std::string& name, std::size_t from)
+{
+  auto inIdentifier = [](char c)
+  { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  int count = 0;
+  for (std::size_t at = text.find(name, from); at != std::string::npos;
+       at = text.find(name, at + 1))
+  {
+    const std::size_t end = at + name.size();
+    count +=
+      (at == 0 || !inIdentifier(text[at - 1])) && (end == text.size() || !inIdentifier(text[end]));
+  }
+  return count;
+}
+
 const char* const DeclarationsTag = "//VTK::Light::Dec";
-const char* const ImplementationTag = "//VTK::Light::Impl";
 } // namespace
 
 bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights)
 {
-  if (Count(fragmentShader, DeclarationsTag) != 1 || Count(fragmentShader, ImplementationTag) != 1)
+  if (Count(fragmentShader, DeclarationsTag) != 1)
   {
     return false;
   }
@@ -45,15 +62,6 @@ bool InsertLightFactors(std::string& fragmentShader, const std::string& declarat
   dec << declarations << "uniform float penumbraAttenuation[" << lights.size() << "];\n"
       << DeclarationsTag;
   ReplaceAll(fragmentShader, DeclarationsTag, dec.str());
-
-  std::ostringstream factors;
-  for (const ReceiverLight& light : lights)
-  {
-    factors << "  float penumbraFactor" << light.ShaderIndex << " = penumbraLightFactor("
-            << light.Layer << ", penumbraAttenuation[" << light.Layer << "]);\n";
-  }
-  factors << ImplementationTag;
-  ReplaceAll(fragmentShader, ImplementationTag, factors.str());
   return true;
 }
 
@@ -74,26 +82,28 @@ std::vector<int> ScaleLightTerms(
   }
   for (const ReceiverLight& light : lights)
   {
-    // The exact statements VTK 9.1's vtkOpenGLPolyDataMapper writes per light (Phong and PBR,
-    // directional and positional); only diffuse and specular are scaled, ambient stays.
+    // Every use of the light's colour after its declaration is that light's diffuse and
+    // specular (Phong) or radiance (PBR) term, in VTK 9.1's statements and in a user's own: the
+    // colour is redefined as itself times the light's factor. The preprocessor does not expand
+    // a macro inside its own expansion, and the statements keep their text, so that a
+    // vtkShaderProperty's later replacement of them still finds them.
     const std::string colour = "lightColor" + std::to_string(light.ShaderIndex);
-    const std::string factor = "penumbraFactor" + std::to_string(light.ShaderIndex) + " * ";
-    const int diffuse = ReplaceAll(fragmentShader, "diffuse += (df * " + colour + ");",
-      "diffuse += (df * " + factor + colour + ");");
-    const int specular = ReplaceAll(fragmentShader, "specular += (sf * " + colour + ");",
-      "specular += (sf * " + factor + colour + ");");
-    const int radiance = ReplaceAll(fragmentShader, "radiance = " + colour + ";",
-                           "radiance = " + factor + colour + ";") +
-      ReplaceAll(fragmentShader, "radiance = " + colour + " * attenuation;",
-        "radiance = " + factor + colour + " * attenuation;");
-    // VTK writes Phong's diffuse and specular statements as a pair: one without the other
-    // would leave that light's highlights (or its diffuse light) unshadowed.
-    const bool scaled =
-      radiance > 0 ? diffuse == 0 && specular == 0 : diffuse > 0 && diffuse == specular;
-    if (!scaled && fragmentShader.find("vec3 " + colour + ";") != std::string::npos)
+    const std::string declaration = "uniform vec3 " + colour + ";";
+    const std::size_t at = fragmentShader.find(declaration);
+    if (at == std::string::npos)
     {
-      missing.push_back(light.ShaderIndex);
+      continue; // not a light this shader draws with
     }
+    const std::size_t after = at + declaration.size();
+    if (IdentifierUses(fragmentShader, colour, after) == 0)
+    {
+      missing.push_back(light.ShaderIndex); // its own light code, without the light's colour
+      continue;
+    }
+    const std::string layer = std::to_string(light.Layer);
+    fragmentShader.insert(after,
+      "\n#define " + colour + " (penumbraLightFactor(" + layer + ", penumbraAttenuation[" + layer +
+        "]) * " + colour + ")");
   }
   return missing;
 }

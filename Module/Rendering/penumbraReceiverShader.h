@@ -4,10 +4,12 @@
  *         that reports what it could not find.
  *
  * The pass scales each shadowing light's diffuse and specular terms by that light's visibility
- * from the LI buffer. It does so by rewriting the statements VTK 9.1's vtkOpenGLPolyDataMapper
- * writes per light; a different VTK, or a user's vtkShaderProperty replacing VTK's light code,
- * would leave nothing to rewrite and the prop silently unshadowed. So every edit is counted and
- * what is missing is returned for the pass to warn about.
+ * from the LI buffer. It does so by redefining the light's colour uniform, which VTK 9.1's
+ * vtkOpenGLPolyDataMapper uses in those terms only (Phong's diffuse and specular, PBR's
+ * radiance), as the colour times the visibility: VTK's statements keep their text, so a user's
+ * vtkShaderProperty that replaces them afterwards (a toon shading of the diffuse term) still
+ * finds them and is shadowed too. Light code that does not use the colour cannot be shadowed;
+ * that is returned for the pass to warn about.
  */
 #ifndef penumbraReceiverShader_h
 #define penumbraReceiverShader_h
@@ -25,10 +27,10 @@ struct ReceiverLight
   int Layer = 0;
 };
 
-/// Adds the LI lookup (`declarations`: penumbraReceiverDec.glsl) at VTK's light declarations and
-/// one factor per light before its light code. Returns false, changing nothing, unless the
-/// shader has VTK's //VTK::Light::Dec and //VTK::Light::Impl tags once each (a second copy, from
-/// a vtkShaderProperty, would declare the lookup twice and the shader would not build).
+/// Adds the LI lookup (`declarations`: penumbraReceiverDec.glsl) and the lights' attenuations at
+/// VTK's light declarations. Returns false, changing nothing, unless the shader has VTK's
+/// //VTK::Light::Dec tag once (a second copy, from a vtkShaderProperty, would declare the lookup
+/// twice and the shader would not build).
 bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights);
 
@@ -36,10 +38,11 @@ bool InsertLightFactors(std::string& fragmentShader, const std::string& declarat
 /// splats): its ambient-plus-diffuse statement and no light terms.
 bool IsUnlit(const std::string& fragmentShader);
 
-/// Scales each light's diffuse and specular (Phong) or radiance (PBR) by its factor. Returns
-/// the shader indices of the lights whose colour the shader declares but whose statements were
-/// not all found: none of them, or Phong's diffuse without its specular (or the reverse). A shader
-/// VTK wrote unlit (its ambient-plus-diffuse statement) is left alone and not reported.
+/// After VTK's light code is in place: redefines each light's colour, after its declaration, as
+/// the colour times the light's factor, so that every term using it is scaled. Returns the
+/// shader indices of the lights whose colour the shader declares but never uses (light code of
+/// its own). A shader VTK wrote unlit (its ambient-plus-diffuse statement) is left alone and not
+/// reported.
 std::vector<int> ScaleLightTerms(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights);
 

@@ -1610,8 +1610,8 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(
     !penumbra::InsertLightFactors(fragmentShader, penumbraReceiverDec, ReceiverLights(lights)))
   {
     this->WarnShaderEdit(mapper, prop,
-      "has no //VTK::Light::Dec and //VTK::Light::Impl tags (a vtkShaderProperty replacing "
-      "them?)");
+      "does not have VTK's //VTK::Light::Dec tag exactly once (a vtkShaderProperty replacing "
+      "or repeating it?)");
   }
   return true;
 }
@@ -1648,13 +1648,14 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     return true;
   }
   // VTK's vtkShadowMapPass, later in the delegate chain, declares its shadow maps before and
-  // scales the same statements after this pass: this pass takes them first, and the shadow
-  // maps' factors are left unused.
+  // scales VTK's light statements after this pass, which leaves them as they are: each light
+  // is darkened by both passes' shadows.
   if (fragmentShader.find("uniform sampler2D shadowMap") != std::string::npos &&
     !this->Internals->WarnedShadowMapPass)
   {
     vtkWarningMacro("VTK's vtkShadowMapPass draws inside this pass: both scale the same light "
-                    "terms, and only this pass's shadows are drawn. Use one or the other.");
+                    "terms, so each light is darkened by both passes' shadows. Use one or the "
+                    "other.");
     this->Internals->WarnedShadowMapPass = true;
   }
   const std::vector<int> missing =
@@ -1666,9 +1667,8 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     {
       which += (k ? ", " : "") + std::to_string(missing[k]);
     }
-    this->WarnShaderEdit(mapper, prop,
-      "does not contain all of VTK 9.1's diffuse and specular statements for " + which +
-        " (another VTK version, or custom light code?)");
+    this->WarnShaderEdit(
+      mapper, prop, "does not use the colour of " + which + " (light code of its own?)");
   }
   return true;
 }

@@ -1380,6 +1380,62 @@ void TestMolecule()
   CheckAgainstTruth("molecule", CompareWithTruth(view.Window, view.Renderer, view.Pass, 0));
 }
 
+void TestUserLightStatements()
+{
+  // A vtkShaderProperty that replaces VTK's own diffuse statement once VTK has written it (a
+  // toon shading): where lit, drawn as VTK draws it; in the shadow, as VTK draws it with the
+  // light off; without a warning.
+  View view;
+  auto ground = Ground(view.Renderer);
+  ground->GetShaderProperty()->AddFragmentShaderReplacement("diffuse += (df * lightColor0);", false,
+    "diffuse += (step(0.5, df) * 0.5 * lightColor0);", false);
+  view.Renderer->AddActor(MakeActor(SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16), 0.9, 0.3, 0.3));
+  const WarningLog log(view.Pass);
+  view.Render();
+  const std::vector<float> visibility = view.Visibility();
+  const std::vector<unsigned char> withShadows = view.Colours();
+  view.Renderer->SetPass(nullptr);
+  view.Render();
+  const std::vector<unsigned char> lightOn = view.Colours();
+  const double intensity = view.Light->GetIntensity();
+  view.Light->SetIntensity(0.0);
+  view.Render();
+  const std::vector<unsigned char> lightOff = view.Colours();
+  view.Light->SetIntensity(intensity);
+  view.Renderer->SetPass(view.Pass);
+  auto apart = [&withShadows](const std::vector<unsigned char>& other, std::size_t pixel)
+  {
+    int worst = 0;
+    for (std::size_t c = 3 * pixel; c < 3 * pixel + 3; ++c)
+    {
+      worst = std::max(worst, std::abs(int(withShadows[c]) - int(other[c])));
+    }
+    return worst > 8;
+  };
+  int lit = 0, litOff = 0, shadowed = 0, shadowedOff = 0;
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    if (visibility[i] == 1.0f)
+    {
+      ++lit;
+      litOff += apart(lightOn, i);
+    }
+    else if (visibility[i] == 0.0f)
+    {
+      ++shadowed;
+      shadowedOff += apart(lightOff, i);
+    }
+  }
+  std::printf("toon diffuse: %d of %d lit px off VTK's frame, %d of %d shadowed px off VTK's "
+              "frame with the light off\n",
+    litOff, lit, shadowedOff, shadowed);
+  Check(lit > Width * Height / 4 && litOff <= lit / 1000,
+    "a user's replacement of VTK's light statement: lit as VTK draws it");
+  Check(shadowed > Width * Height / 100 && shadowedOff <= shadowed / 100,
+    "a user's replacement of VTK's light statement: shadowed");
+  Check(log.Messages.empty(), "a user's replacement of VTK's light statement: no warning");
+}
+
 void TestWarnings()
 {
   View view;
@@ -1552,7 +1608,7 @@ void TestWarnings()
   Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
   Check(count("orientation is not finite") == 1,
     "glyphs with a NaN or infinite orientation: one warning");
-  Check(count("Light::Impl tags") == 1, "custom light code: one warning");
+  Check(count("does not use the colour of light 0") == 1, "custom light code: one warning");
   Check(count("neither casts nor receives shadows: the pass does not edit image slices") == 1,
     "an image slice: one warning, that it is not shadowed either");
   Check(count("neither casts nor receives shadows: the pass does not edit volume") == 1,
@@ -1604,6 +1660,7 @@ int main()
   TestImposterSpheres();
   TestImposterSticks();
   TestMolecule();
+  TestUserLightStatements();
   TestWarnings();
   return penumbra_test::Finish();
 }

@@ -1,6 +1,7 @@
 // The receivers' shader edits (penumbraReceiverShader) on the light code VTK 9.1's
-// vtkOpenGLPolyDataMapper writes: Phong and PBR, directional and positional lights; and what they
-// report when the code is not VTK 9.1's (another version, a vtkShaderProperty's own lighting).
+// vtkOpenGLPolyDataMapper writes: Phong and PBR, directional and positional lights; light code of
+// other shapes (another version, a vtkShaderProperty's toon shading); and what they report when
+// the code does not use a light's colour.
 #include "penumbraCheck.h"
 #include "penumbraReceiverShader.h"
 
@@ -42,6 +43,14 @@ int Count(const std::string& text, const std::string& what)
 }
 } // namespace
 
+/// The definition ScaleLightTerms gives light `index` of LI layer `layer`.
+std::string Scaled(int index, int layer)
+{
+  const std::string colour = "lightColor" + std::to_string(index), l = std::to_string(layer);
+  return "#define " + colour + " (penumbraLightFactor(" + l + ", penumbraAttenuation[" + l +
+    "]) * " + colour + ")";
+}
+
 int main()
 {
   const std::vector<penumbra::ReceiverLight> lights = { { 0, 0 }, { 1, 1 } };
@@ -49,17 +58,23 @@ int main()
   {
     const std::string name = pbr ? "PBR" : "Phong";
     std::string shader = pbr ? PbrShader() : PhongShader();
+    const std::string vtkShader = shader;
     Check(penumbra::InsertLightFactors(shader, "// LI lookup\n", lights),
-      name + ": VTK's light tags found");
-    Check(Count(shader, "float penumbraFactor0 = penumbraLightFactor(0,") == 1 &&
-        Count(shader, "float penumbraFactor1 = penumbraLightFactor(1,") == 1 &&
-        Count(shader, "// LI lookup") == 1 && Count(shader, "//VTK::Light::Impl") == 1,
-      name + ": one factor per light, declarations once, tags kept for VTK");
+      name + ": VTK's light tag found");
+    Check(Count(shader, "// LI lookup") == 1 && Count(shader, "penumbraAttenuation[2]") == 1 &&
+        Count(shader, "//VTK::Light::Dec") == 1 && Count(shader, "//VTK::Light::Impl") == 1,
+      name + ": declarations once, tags kept for VTK");
     Check(penumbra::ScaleLightTerms(shader, lights).empty(), name + ": every light scaled");
-    const int expected = pbr ? 1 : 2; // diffuse and specular, or the radiance
-    Check(Count(shader, "penumbraFactor0 * lightColor0") == expected &&
-        Count(shader, "penumbraFactor1 * lightColor1") == expected,
-      name + ": each light's terms scaled by its own factor");
+    // Each colour redefined once, right after its declaration; VTK's statements keep their text
+    // (a vtkShaderProperty's later replacement of them must still find them).
+    Check(Count(shader, "uniform vec3 lightColor0;\n" + Scaled(0, 0)) == 1 &&
+        Count(shader, "uniform vec3 lightColor1;\n" + Scaled(1, 1)) == 1 &&
+        Count(shader, "#define") == 2,
+      name + ": each light's colour scaled by its own layer's factor");
+    const char* statement =
+      pbr ? "  radiance = lightColor1 * attenuation;\n" : "  diffuse += (df * lightColor0);\n";
+    Check(Count(shader, statement) == 1 && Count(vtkShader, statement) == 1,
+      name + ": VTK's statements kept as they were");
   }
 
   // A shader whose tags a vtkShaderProperty replaced: nothing changed, reported.
@@ -73,28 +88,29 @@ int main()
   Check(
     !penumbra::InsertLightFactors(repeated, "// LI lookup\n", lights) && repeated == repeatedBefore,
     "a light tag twice: reported, shader unchanged");
-  // Two lights whose statements are not VTK 9.1's: both reported.
-  std::string neither = PhongShader();
-  for (const char* light : { "0", "1" })
-  {
-    const std::string statement = std::string("specular += (sf * lightColor") + light + ");";
-    neither.replace(neither.find(statement), statement.size(), "/* replaced */");
-  }
-  const std::vector<int> both = penumbra::ScaleLightTerms(neither, lights);
-  Check(both.size() == 2 && both[0] == 0 && both[1] == 1, "two lights not found: both reported");
-  // Light code that is not VTK 9.1's: the light is reported.
+  // A repeated //VTK::Light::Impl is VTK's to expand: the light code is scaled all the same.
+  std::string repeatedImpl = PhongShader() + "//VTK::Light::Impl\n";
+  Check(penumbra::InsertLightFactors(repeatedImpl, "// LI lookup\n", lights) &&
+      penumbra::ScaleLightTerms(repeatedImpl, lights).empty(),
+    "the light code's tag twice: scaled");
+  // Light code that is not VTK 9.1's, using the lights' colours (a toon diffuse term, another
+  // spacing): scaled all the same.
   std::string other = PhongShader();
-  other.replace(other.find("diffuse += (df * lightColor1);"), 30, "diffuse += df*lightColor1;  ");
   other.replace(
-    other.find("specular += (sf * lightColor1);"), 31, "specular += sf*lightColor1;   ");
-  const std::vector<int> missing = penumbra::ScaleLightTerms(other, lights);
-  Check(missing.size() == 1 && missing[0] == 1, "another VTK's statements: that light reported");
-  // Only the diffuse statement is VTK 9.1's: the light's highlights would stay unshadowed.
-  std::string halfScaled = PhongShader();
-  halfScaled.replace(
-    halfScaled.find("specular += (sf * lightColor0);"), 31, "specular += sf*lightColor0;   ");
-  const std::vector<int> partial = penumbra::ScaleLightTerms(halfScaled, lights);
-  Check(partial.size() == 1 && partial[0] == 0, "diffuse found without specular: reported");
+    other.find("diffuse += (df * lightColor1);"), 30, "diffuse += step(0.5, df)*lightColor1;");
+  other.replace(other.find("specular += (sf * lightColor0);"), 31, "specular+=sf*lightColor0;");
+  Check(penumbra::ScaleLightTerms(other, lights).empty() && Count(other, "#define") == 2,
+    "light code of other shapes, with the lights' colours: scaled");
+  // Light code of its own that does not use a light's colour: that light reported, and left.
+  std::string own = PhongShader();
+  for (const char* term : { "diffuse += (df * lightColor1);", "specular += (sf * lightColor1);" })
+  {
+    own.replace(own.find(term), std::string(term).size(), "/* its own */");
+  }
+  const std::vector<int> missing = penumbra::ScaleLightTerms(own, lights);
+  Check(missing.size() == 1 && missing[0] == 1 && Count(own, "#define lightColor1") == 0 &&
+      Count(own, Scaled(0, 0)) == 1,
+    "a light whose colour is not used: reported, the others scaled");
   // An unlit shader declares no light colour: nothing to scale, nothing to report.
   std::string unlit = "//VTK::Light::Dec\nvoid main() {\n//VTK::Light::Impl\n}\n";
   Check(penumbra::ScaleLightTerms(unlit, lights).empty(), "an unlit shader is not reported");
@@ -110,8 +126,11 @@ int main()
     "VTK's unlit statement is recognised, and only it");
   // Light 1 is not a prefix match of light 10.
   std::string ten = "uniform vec3 lightColor10;\n  diffuse += (df * lightColor10);\n";
-  Check(
-    penumbra::ScaleLightTerms(ten, { { 1, 0 } }).empty() && Count(ten, "penumbraFactor1 *") == 0,
+  const std::string tenBefore = ten;
+  Check(penumbra::ScaleLightTerms(ten, { { 1, 0 } }).empty() && ten == tenBefore,
     "light 1's edits leave light 10 alone");
+  std::string unusedOne = "uniform vec3 lightColor1;\n  diffuse += (df * lightColor10);\n";
+  Check(penumbra::ScaleLightTerms(unusedOne, { { 1, 0 } }).size() == 1,
+    "light 10's colour is not a use of light 1's");
   return penumbra_test::Finish();
 }
