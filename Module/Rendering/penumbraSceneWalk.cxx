@@ -356,6 +356,24 @@ bool TexturesMayOpenHoles(vtkActor* actor)
   return std::any_of(textures.begin(), textures.end(), mayHaveAlpha);
 }
 
+bool TexturesCutHoles(vtkActor* actor)
+{
+  const auto cutsHoles = [](vtkTexture* texture)
+  {
+    vtkImageData* image = texture->GetInput();
+    vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+    if (!texels || texels->GetDataType() != VTK_UNSIGNED_CHAR ||
+      texture->GetColorMode() == VTK_COLOR_MODE_MAP_SCALARS)
+    {
+      return false; // alpha unknown, or from a lookup table: not looked into
+    }
+    const int components = texels->GetNumberOfComponents();
+    return (components == 2 || components == 4) && texels->GetRange(components - 1)[0] < 255.0;
+  };
+  const std::vector<vtkTexture*> textures = TexturesOf(actor);
+  return std::any_of(textures.begin(), textures.end(), cutsHoles);
+}
+
 bool HasCustomShaders(vtkActor* actor)
 {
   vtkShaderProperty* shaders = actor->GetShaderProperty();
@@ -603,6 +621,14 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     this->Warn(owner, leaf,
       "is drawn translucent with an opacity of 1 (colours with alpha, a texture or "
       "ForceTranslucent): its shadow takes the opacity, 1, and is opaque");
+  }
+  if (actor->HasOpaqueGeometry() && TexturesCutHoles(actor))
+  {
+    // VTK 9.1 draws a texture whose alpha is only 0 or 1 (cut-outs: leaves, holes) in the
+    // opaque pass and discards its transparent texels; the casters are meshes.
+    this->Warn(owner, leaf,
+      "has a texture with transparent texels, which VTK leaves out of the surface it draws: "
+      "its shadow is that of the whole surface (cut the holes into the mesh to cast them)");
   }
   // A path's last matrix is the composed one; a plain actor's path carries none.
   const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());

@@ -105,6 +105,10 @@ std::vector<vtkTexture*> TexturesOf(vtkActor* actor);
 /// mapped through a lookup table, or none known yet.
 bool TexturesMayOpenHoles(vtkActor* actor);
 
+/// Whether one of the actor's textures has colours whose alpha is known to fall below 1
+/// somewhere (unsigned chars with an alpha component, not mapped through a lookup table).
+bool TexturesCutHoles(vtkActor* actor);
+
 /// Whether `actor`'s shader property holds shader code or replacements of the user's.
 bool HasCustomShaders(vtkActor* actor);
 

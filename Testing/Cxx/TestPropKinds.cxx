@@ -1184,6 +1184,44 @@ void TestSkybox()
   Check(warnings.Messages.empty(), "skybox: no warning");
 }
 
+void TestCutOutTextures()
+{
+  // A quad with an RGBA texture whose alpha is 0 or 255: VTK draws it opaque and leaves out the
+  // transparent texels, the pass casts the whole quad. One warning; none for the same quad
+  // whose alpha is all 255, nor for one without an alpha channel.
+  int cutWarnings[3] = { 0, 0, 0 };
+  for (int alpha = 0; alpha < 3; ++alpha)
+  {
+    View view;
+    Ground(view.Renderer);
+    const int components = alpha == 2 ? 3 : 4;
+    vtkNew<vtkImageData> texels;
+    texels->SetDimensions(8, 8, 1);
+    texels->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+    auto* values = static_cast<unsigned char*>(texels->GetScalarPointer());
+    for (int i = 0; i < 64; ++i)
+    {
+      std::fill_n(values + components * i, components, 200);
+      if (components == 4)
+      {
+        values[4 * i + 3] = alpha == 0 && (i / 8 + i % 8) % 2 ? 0 : 255; // a checker of holes
+      }
+    }
+    vtkNew<vtkTexture> texture;
+    texture->SetInputData(texels);
+    auto leaf = MakeActor(GroundSource(0.8, 1.2), 0.9, 0.9, 0.9);
+    leaf->SetTexture(texture);
+    view.Renderer->AddActor(leaf);
+    const WarningLog warnings(view.Pass);
+    view.Render();
+    cutWarnings[alpha] = warnings.Count("transparent texels");
+  }
+  std::printf("cut-out textures: %d, %d, %d warnings (holes, alpha all 1, RGB)\n", cutWarnings[0],
+    cutWarnings[1], cutWarnings[2]);
+  Check(cutWarnings[0] == 1, "a cut-out texture on a caster: one warning");
+  Check(cutWarnings[1] == 0 && cutWarnings[2] == 0, "opaque textures: no warning");
+}
+
 void TestDataSetInput()
 {
   // Not polydata: an unstructured grid of tetrahedra through vtkDataSetMapper, which VTK draws
@@ -1657,6 +1695,7 @@ int main()
   TestDataSetInput();
   TestLODProp3D();
   TestSkybox();
+  TestCutOutTextures();
   TestImposterSpheres();
   TestImposterSticks();
   TestMolecule();
