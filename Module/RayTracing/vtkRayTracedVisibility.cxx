@@ -967,15 +967,18 @@ vtkSmartPointer<vtkPolyData> GlyphSurface(vtkGlyph3DMapper* mapper, vtkDataSet* 
   index = same(index);
 
   // vtkGlyph3D has one Range for clamping and for picking sources; the mapper clamps with it
-  // and picks by the index itself. And it has one vector array, for orienting and for scaling
-  // by a vector's components or length; the mapper may take two. With either, each glyph gets
-  // its own transform.
-  const bool clampsAndPicks = mapper->GetClamping() && scale && index && sources > 1;
-  const bool twoVectorArrays = scale && orientation && scale != orientation &&
+  // and picks by the index itself. It has one scalar array, for scaling and for picking, and
+  // one vector array, for orienting and for scaling by a vector's components or length; the
+  // mapper may take two of each. With any of these, each glyph gets its own transform.
+  const bool picks = index && sources > 1;
+  const bool clampsAndPicks = mapper->GetClamping() && scale && picks;
+  const bool scalesByVector = scale &&
     (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS ||
       scale->GetNumberOfComponents() > 1);
+  const bool twoScalarArrays = picks && scale && !scalesByVector && scale != index;
+  const bool twoVectorArrays = scalesByVector && orientation && scale != orientation;
   if ((!orientation || mapper->GetOrientationMode() == vtkGlyph3DMapper::DIRECTION) &&
-    !clampsAndPicks && !twoVectorArrays)
+    !clampsAndPicks && !twoScalarArrays && !twoVectorArrays)
   {
     vtkNew<vtkGlyph3D> glyphs;
     glyphs->SetInputData(points);

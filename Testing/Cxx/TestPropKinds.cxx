@@ -377,17 +377,18 @@ void TestGlyphsOfCompositeInput()
     });
 }
 
-void TestGlyphsByDirectionClampingAndIndex()
+void TestGlyphsByDirectionAndIndex(bool clamping)
 {
-  // Direction, sizes clamped to a range, two sources picked by an index: the mapper clamps with
-  // Range and picks by the index value, so the plain scene is one vtkGlyph3D per source, each
-  // over the points that pick it.
+  // Direction, sizes (clamped to a range, or not), two sources picked by an index: the mapper
+  // clamps with Range and picks by the index value, so the plain scene is one vtkGlyph3D per
+  // source, each over the points that pick it. (vtkGlyph3D reads sizes and indices from one
+  // array: the truth must not build these with one.)
   vtkSmartPointer<vtkPolyData> points = GlyphPoints();
   auto cone = Cone();
   auto box = GlyphBox();
   const double range[2] = { 0.4, 1.1 }, factor = 0.9;
   CompareScenes(
-    "glyph mapper, direction, clamping, index",
+    clamping ? "glyph mapper, direction, clamping, index" : "glyph mapper, direction, index",
     [&](vtkRenderer* r)
     {
       Ground(r);
@@ -395,7 +396,7 @@ void TestGlyphsByDirectionClampingAndIndex()
       mapper->SetOrientationArray("direction");
       mapper->SetScaleArray("size");
       mapper->SetScaleModeToScaleByMagnitude();
-      mapper->ClampingOn();
+      mapper->SetClamping(clamping);
       mapper->SetRange(range[0], range[1]);
       mapper->SetScaleFactor(factor);
       mapper->SourceIndexingOn();
@@ -427,7 +428,7 @@ void TestGlyphsByDirectionClampingAndIndex()
           1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "direction");
         glyphs->SetScaleModeToScaleByScalar();
         glyphs->SetVectorModeToUseVector();
-        glyphs->ClampingOn();
+        glyphs->SetClamping(clamping);
         glyphs->SetRange(range[0], range[1]);
         glyphs->SetScaleFactor(factor);
         AddGlyphFilter(r, glyphs);
@@ -1681,7 +1682,8 @@ int main()
   TestGlyphsByDirection();
   TestGlyphsByRotation();
   TestGlyphsOfCompositeInput();
-  TestGlyphsByDirectionClampingAndIndex();
+  TestGlyphsByDirectionAndIndex(true);
+  TestGlyphsByDirectionAndIndex(false);
   TestGlyphsByQuaternionTableAndClamping();
   TestGlyphsStretchedAndDirected();
   TestMultiBlock();
