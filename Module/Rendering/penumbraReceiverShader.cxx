@@ -51,7 +51,7 @@ int IdentifierUses(const std::string& text, const std::string& name, std::size_t
 const char* const DeclarationsTag = "//VTK::Light::Dec";
 } // namespace
 
-bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
+bool InsertLightDeclarations(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights)
 {
   if (Count(fragmentShader, DeclarationsTag) != 1)
@@ -72,7 +72,7 @@ bool IsUnlit(const std::string& fragmentShader)
     std::string::npos;
 }
 
-std::vector<int> ScaleLightTerms(
+std::vector<int> ScaleLightColours(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights)
 {
   std::vector<int> missing;
@@ -103,7 +103,7 @@ std::vector<int> ScaleLightTerms(
     const std::string layer = std::to_string(light.Layer);
     fragmentShader.insert(after,
       "\n#define " + colour + " (penumbraLightFactor(" + layer + ", penumbraAttenuation[" + layer +
-        "]) * " + colour + ")");
+        "]) * " + colour + ")\n");
   }
   return missing;
 }

@@ -31,7 +31,7 @@ struct ReceiverLight
 /// VTK's light declarations. Returns false, changing nothing, unless the shader has VTK's
 /// //VTK::Light::Dec tag once (a second copy, from a vtkShaderProperty, would declare the lookup
 /// twice and the shader would not build).
-bool InsertLightFactors(std::string& fragmentShader, const std::string& declarations,
+bool InsertLightDeclarations(std::string& fragmentShader, const std::string& declarations,
   const std::vector<ReceiverLight>& lights);
 
 /// Whether VTK wrote the fragment shader unlit (Lighting off, no normals, point-gaussian
@@ -43,7 +43,7 @@ bool IsUnlit(const std::string& fragmentShader);
 /// shader indices of the lights whose colour the shader declares but never uses (light code of
 /// its own). A shader VTK wrote unlit (its ambient-plus-diffuse statement) is left alone and not
 /// reported.
-std::vector<int> ScaleLightTerms(
+std::vector<int> ScaleLightColours(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights);
 
 } // namespace penumbra

@@ -1607,7 +1607,7 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(
 {
   const auto& lights = this->Internals->Lights;
   if (!lights.empty() &&
-    !penumbra::InsertLightFactors(fragmentShader, penumbraReceiverDec, ReceiverLights(lights)))
+    !penumbra::InsertLightDeclarations(fragmentShader, penumbraReceiverDec, ReceiverLights(lights)))
   {
     this->WarnShaderEdit(mapper, prop,
       "does not have VTK's //VTK::Light::Dec tag exactly once (a vtkShaderProperty replacing "
@@ -1659,7 +1659,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     this->Internals->WarnedShadowMapPass = true;
   }
   const std::vector<int> missing =
-    penumbra::ScaleLightTerms(fragmentShader, ReceiverLights(lights));
+    penumbra::ScaleLightColours(fragmentShader, ReceiverLights(lights));
   if (!missing.empty())
   {
     std::string which = missing.size() == 1 ? "light " : "lights ";

@@ -43,7 +43,7 @@ int Count(const std::string& text, const std::string& what)
 }
 } // namespace
 
-/// The definition ScaleLightTerms gives light `index` of LI layer `layer`.
+/// The definition ScaleLightColours gives light `index` of LI layer `layer`.
 std::string Scaled(int index, int layer)
 {
   const std::string colour = "lightColor" + std::to_string(index), l = std::to_string(layer);
@@ -59,12 +59,12 @@ int main()
     const std::string name = pbr ? "PBR" : "Phong";
     std::string shader = pbr ? PbrShader() : PhongShader();
     const std::string vtkShader = shader;
-    Check(penumbra::InsertLightFactors(shader, "// LI lookup\n", lights),
+    Check(penumbra::InsertLightDeclarations(shader, "// LI lookup\n", lights),
       name + ": VTK's light tag found");
     Check(Count(shader, "// LI lookup") == 1 && Count(shader, "penumbraAttenuation[2]") == 1 &&
         Count(shader, "//VTK::Light::Dec") == 1 && Count(shader, "//VTK::Light::Impl") == 1,
       name + ": declarations once, tags kept for VTK");
-    Check(penumbra::ScaleLightTerms(shader, lights).empty(), name + ": every light scaled");
+    Check(penumbra::ScaleLightColours(shader, lights).empty(), name + ": every light scaled");
     // Each colour redefined once, right after its declaration; VTK's statements keep their text
     // (a vtkShaderProperty's later replacement of them must still find them).
     Check(Count(shader, "uniform vec3 lightColor0;\n" + Scaled(0, 0)) == 1 &&
@@ -80,18 +80,18 @@ int main()
   // A shader whose tags a vtkShaderProperty replaced: nothing changed, reported.
   std::string custom = "uniform vec3 lightColor0;\nvoid main() { gl_FragColor = vec4(1.0); }\n";
   const std::string before = custom;
-  Check(!penumbra::InsertLightFactors(custom, "// LI lookup\n", lights) && custom == before,
+  Check(!penumbra::InsertLightDeclarations(custom, "// LI lookup\n", lights) && custom == before,
     "no light tags: reported, shader unchanged");
   // A vtkShaderProperty that repeats a tag: the lookup would be declared twice. Reported.
   std::string repeated = PhongShader() + "//VTK::Light::Dec\n";
   const std::string repeatedBefore = repeated;
-  Check(
-    !penumbra::InsertLightFactors(repeated, "// LI lookup\n", lights) && repeated == repeatedBefore,
+  Check(!penumbra::InsertLightDeclarations(repeated, "// LI lookup\n", lights) &&
+      repeated == repeatedBefore,
     "a light tag twice: reported, shader unchanged");
   // A repeated //VTK::Light::Impl is VTK's to expand: the light code is scaled all the same.
   std::string repeatedImpl = PhongShader() + "//VTK::Light::Impl\n";
-  Check(penumbra::InsertLightFactors(repeatedImpl, "// LI lookup\n", lights) &&
-      penumbra::ScaleLightTerms(repeatedImpl, lights).empty(),
+  Check(penumbra::InsertLightDeclarations(repeatedImpl, "// LI lookup\n", lights) &&
+      penumbra::ScaleLightColours(repeatedImpl, lights).empty(),
     "the light code's tag twice: scaled");
   // Light code that is not VTK 9.1's, using the lights' colours (a toon diffuse term, another
   // spacing): scaled all the same.
@@ -99,7 +99,7 @@ int main()
   other.replace(
     other.find("diffuse += (df * lightColor1);"), 30, "diffuse += step(0.5, df)*lightColor1;");
   other.replace(other.find("specular += (sf * lightColor0);"), 31, "specular+=sf*lightColor0;");
-  Check(penumbra::ScaleLightTerms(other, lights).empty() && Count(other, "#define") == 2,
+  Check(penumbra::ScaleLightColours(other, lights).empty() && Count(other, "#define") == 2,
     "light code of other shapes, with the lights' colours: scaled");
   // Light code of its own that does not use a light's colour: that light reported, and left.
   std::string own = PhongShader();
@@ -107,30 +107,38 @@ int main()
   {
     own.replace(own.find(term), std::string(term).size(), "/* its own */");
   }
-  const std::vector<int> missing = penumbra::ScaleLightTerms(own, lights);
+  const std::vector<int> missing = penumbra::ScaleLightColours(own, lights);
   Check(missing.size() == 1 && missing[0] == 1 && Count(own, "#define lightColor1") == 0 &&
       Count(own, Scaled(0, 0)) == 1,
     "a light whose colour is not used: reported, the others scaled");
   // An unlit shader declares no light colour: nothing to scale, nothing to report.
   std::string unlit = "//VTK::Light::Dec\nvoid main() {\n//VTK::Light::Impl\n}\n";
-  Check(penumbra::ScaleLightTerms(unlit, lights).empty(), "an unlit shader is not reported");
+  Check(penumbra::ScaleLightColours(unlit, lights).empty(), "an unlit shader is not reported");
   // VTK's own unlit shader (Lighting off, point-gaussian splats) still declares the renderer's
   // light colours: it is not reported either, and left as it is.
   std::string vtkUnlit = "uniform vec3 lightColor0;\nuniform vec3 lightColor1;\nvoid main() {\n"
                          "  gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);\n}\n";
   const std::string vtkUnlitBefore = vtkUnlit;
-  Check(penumbra::ScaleLightTerms(vtkUnlit, lights).empty() && vtkUnlit == vtkUnlitBefore,
+  Check(penumbra::ScaleLightColours(vtkUnlit, lights).empty() && vtkUnlit == vtkUnlitBefore,
     "VTK's unlit shader, light colours declared: not reported, unchanged");
   Check(
     penumbra::IsUnlit(vtkUnlit) && !penumbra::IsUnlit(unlit) && !penumbra::IsUnlit(PhongShader()),
     "VTK's unlit statement is recognised, and only it");
+  // VTK's positional lights declare the next light's colour on the line of the previous one's
+  // last uniform, and a user's template may go on after a declaration: each definition is a line
+  // of its own, the rest moved to the next line.
+  std::string sameLine = "uniform int lightPositional0;uniform vec3 lightColor1; uniform vec3 x;\n"
+                         "void main() {\n  diffuse += (df * lightColor1);\n}\n";
+  Check(penumbra::ScaleLightColours(sameLine, { { 1, 0 } }).empty() &&
+      Count(sameLine, "uniform vec3 lightColor1;\n" + Scaled(1, 0) + "\n uniform vec3 x;\n") == 1,
+    "a definition after a declaration that shares its line: a line of its own");
   // Light 1 is not a prefix match of light 10.
   std::string ten = "uniform vec3 lightColor10;\n  diffuse += (df * lightColor10);\n";
   const std::string tenBefore = ten;
-  Check(penumbra::ScaleLightTerms(ten, { { 1, 0 } }).empty() && ten == tenBefore,
+  Check(penumbra::ScaleLightColours(ten, { { 1, 0 } }).empty() && ten == tenBefore,
     "light 1's edits leave light 10 alone");
   std::string unusedOne = "uniform vec3 lightColor1;\n  diffuse += (df * lightColor10);\n";
-  Check(penumbra::ScaleLightTerms(unusedOne, { { 1, 0 } }).size() == 1,
+  Check(penumbra::ScaleLightColours(unusedOne, { { 1, 0 } }).size() == 1,
     "light 10's colour is not a use of light 1's");
   return penumbra_test::Finish();
 }
