@@ -58,6 +58,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -367,10 +368,27 @@ bool TexturesCutHoles(vtkActor* actor)
     {
       return false; // alpha unknown, or from a lookup table: not looked into
     }
+    // VTK 9.1 discards a fragment whose alpha is 0.
     const int components = texels->GetNumberOfComponents();
-    return (components == 2 || components == 4) && texels->GetRange(components - 1)[0] < 255.0;
+    return (components == 2 || components == 4) && texels->GetRange(components - 1)[0] <= 0.0;
   };
-  const std::vector<vtkTexture*> textures = TexturesOf(actor);
+  // The actor's texture and the property's colour textures; the PBR maps other than the albedo
+  // (normals, material, emission...) carry no opacity.
+  std::vector<vtkTexture*> textures;
+  if (actor->GetTexture())
+  {
+    textures.push_back(actor->GetTexture());
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    static const std::array<const char*, 7> noOpacity = { "normalTex", "materialTex", "brdfTex",
+      "emissiveTex", "anisotropyTex", "coatNormalTex", "colortexture" };
+    if (std::none_of(noOpacity.begin(), noOpacity.end(),
+          [&named](const char* name) { return named.first == name; }))
+    {
+      textures.push_back(named.second);
+    }
+  }
   return std::any_of(textures.begin(), textures.end(), cutsHoles);
 }
 
@@ -625,7 +643,8 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   if (actor->HasOpaqueGeometry() && TexturesCutHoles(actor))
   {
     // VTK 9.1 draws a texture whose alpha is only 0 or 1 (cut-outs: leaves, holes) in the
-    // opaque pass and discards its transparent texels; the casters are meshes.
+    // opaque pass (ForceOpaque any texture) and discards its texels of alpha 0; the casters are
+    // meshes.
     this->Warn(owner, leaf,
       "has a texture with transparent texels, which VTK leaves out of the surface it draws: "
       "its shadow is that of the whole surface (cut the holes into the mesh to cast them)");

@@ -105,8 +105,9 @@ std::vector<vtkTexture*> TexturesOf(vtkActor* actor);
 /// mapped through a lookup table, or none known yet.
 bool TexturesMayOpenHoles(vtkActor* actor);
 
-/// Whether one of the actor's textures has colours whose alpha is known to fall below 1
-/// somewhere (unsigned chars with an alpha component, not mapped through a lookup table).
+/// Whether one of the textures that colour the actor (its own, its property's other than the PBR
+/// maps without opacity) is known to have texels of alpha 0, which VTK discards: unsigned chars
+/// with an alpha component, not mapped through a lookup table.
 bool TexturesCutHoles(vtkActor* actor);
 
 /// Whether `actor`'s shader property holds shader code or replacements of the user's.
