@@ -38,6 +38,7 @@
 #include "vtkOpenGLStickMapper.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPointData.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -653,9 +654,17 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
   if (DrawsImposters(mapper))
   {
+    // Lit splats are drawn in VTK's opaque pass, their squares' depth written corners and all;
+    // the light-intensity buffer holds one surface a pixel, theirs.
+    auto splats = vtkPointGaussianMapper::SafeDownCast(mapper);
+    const bool lit = splats && !splats->GetEmissive() && actor->HasOpaqueGeometry();
     this->Warn(owner, leaf,
       std::string("is drawn by ") + mapper->GetClassName() +
-        ", whose imposters have no triangles: it casts no shadow");
+        ", whose imposters have no triangles: it casts no shadow" +
+        (lit ? "; its splats are lit (EmissiveOff) and write their squares' depth, so the "
+               "surfaces seen through their squares' corners take the splats' shadows, not "
+               "their own"
+             : ""));
     return;
   }
   if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE && !DrawsImposterInstances(mapper))

@@ -1642,7 +1642,8 @@ void TestWarnings()
   {
     std::printf("     warning: %s", w.c_str());
   }
-  Check(count("PointGaussianMapper") == 1, "point gaussian splats: one warning naming the mapper");
+  Check(count("PointGaussianMapper") == 1 && count("squares' corners") == 0,
+    "point gaussian splats: one warning naming the mapper");
   Check(count("radius is not positive") == 1, "an imposter sphere of NaN radius: one warning");
   Check(count("default glyph is a line") == 1, "a glyph mapper without a source: one warning");
   Check(count("orientation is not finite") == 1,
@@ -1668,6 +1669,22 @@ void TestWarnings()
     "imposter spheres with a clipping plane: one warning naming the mapper");
   // The line shafts of vtkAxesActor have no normals either: one more such warning.
   Check(count("active point normals") == 2 && warnings.size() == 15, "no other warning");
+
+  // Lit splats write their squares' depth: what is seen through their corners is shaded as
+  // they are. Said in their warning.
+  View litView;
+  Ground(litView.Renderer);
+  vtkNew<vtkPointGaussianMapper> litSplats;
+  litSplats->SetInputData(centres);
+  litSplats->SetScaleFactor(0.2);
+  litSplats->EmissiveOff();
+  vtkNew<vtkActor> litParticles;
+  litParticles->SetMapper(litSplats);
+  litView.Renderer->AddActor(litParticles);
+  const WarningLog litLog(litView.Pass);
+  litView.Render();
+  Check(litLog.Count("PointGaussianMapper") == 1 && litLog.Count("squares' corners") == 1,
+    "lit point gaussian splats: one warning, naming what is seen through their corners");
   const std::vector<float> visibility = view.Visibility();
   const auto shadowed =
     std::count_if(visibility.begin(), visibility.end(), [](float v) { return v < 0.5f; });
