@@ -323,8 +323,11 @@ bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block)
   return table->IsOpaque(scalars, mapper->GetColorMode(), mapper->GetArrayComponent()) != 0;
 }
 
-std::vector<vtkTexture*> TexturesOf(vtkActor* actor)
+std::vector<vtkTexture*> TexturesOf(vtkActor* actor, bool colourOnly)
 {
+  // The PBR maps other than the albedo (normals, material, emission...) carry no opacity.
+  static const std::array<const char*, 7> noOpacity = { "normalTex", "materialTex", "brdfTex",
+    "emissiveTex", "anisotropyTex", "coatNormalTex", "colortexture" };
   std::vector<vtkTexture*> textures;
   if (actor->GetTexture())
   {
@@ -332,27 +335,43 @@ std::vector<vtkTexture*> TexturesOf(vtkActor* actor)
   }
   for (const auto& named : actor->GetProperty()->GetAllTextures())
   {
-    textures.push_back(named.second);
+    if (!colourOnly ||
+      std::none_of(noOpacity.begin(), noOpacity.end(),
+        [&named](const char* name) { return named.first == name; }))
+    {
+      textures.push_back(named.second);
+    }
   }
   return textures;
 }
+
+namespace
+{
+/// A texture's texels where VTK takes them as colours as they are: unsigned chars, not mapped
+/// through a lookup table (whose alpha is not looked into). Null otherwise, or where none are
+/// known yet.
+vtkDataArray* DirectColours(vtkTexture* texture)
+{
+  vtkImageData* image = texture->GetInput();
+  vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+  const bool direct = texels && texels->GetDataType() == VTK_UNSIGNED_CHAR &&
+    texture->GetColorMode() != VTK_COLOR_MODE_MAP_SCALARS;
+  return direct ? texels : nullptr;
+}
+
+/// Whether colours of `components` to a texel carry alpha: luminance-alpha or RGBA.
+bool HasAlpha(int components)
+{
+  return components == 2 || components == 4;
+}
+} // namespace
 
 bool TexturesMayOpenHoles(vtkActor* actor)
 {
   const auto mayHaveAlpha = [](vtkTexture* texture)
   {
-    vtkImageData* image = texture->GetInput();
-    vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
-    if (!texels)
-    {
-      return true; // nothing known yet
-    }
-    // Unsigned chars are colours as they are, unless mapped: alpha only with 2 or 4 of them.
-    // Other texels go through a lookup table, whose alpha is not looked into.
-    const bool direct = texels->GetDataType() == VTK_UNSIGNED_CHAR &&
-      texture->GetColorMode() != VTK_COLOR_MODE_MAP_SCALARS;
-    const int components = texels->GetNumberOfComponents();
-    return !direct || components == 2 || components == 4;
+    vtkDataArray* colours = DirectColours(texture);
+    return !colours || HasAlpha(colours->GetNumberOfComponents());
   };
   const std::vector<vtkTexture*> textures = TexturesOf(actor);
   return std::any_of(textures.begin(), textures.end(), mayHaveAlpha);
@@ -362,34 +381,12 @@ bool TexturesCutHoles(vtkActor* actor)
 {
   const auto cutsHoles = [](vtkTexture* texture)
   {
-    vtkImageData* image = texture->GetInput();
-    vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
-    if (!texels || texels->GetDataType() != VTK_UNSIGNED_CHAR ||
-      texture->GetColorMode() == VTK_COLOR_MODE_MAP_SCALARS)
-    {
-      return false; // alpha unknown, or from a lookup table: not looked into
-    }
     // VTK 9.1 discards a fragment whose alpha is 0.
-    const int components = texels->GetNumberOfComponents();
-    return (components == 2 || components == 4) && texels->GetRange(components - 1)[0] <= 0.0;
+    vtkDataArray* colours = DirectColours(texture);
+    const int components = colours ? colours->GetNumberOfComponents() : 0;
+    return HasAlpha(components) && colours->GetRange(components - 1)[0] <= 0.0;
   };
-  // The actor's texture and the property's colour textures; the PBR maps other than the albedo
-  // (normals, material, emission...) carry no opacity.
-  std::vector<vtkTexture*> textures;
-  if (actor->GetTexture())
-  {
-    textures.push_back(actor->GetTexture());
-  }
-  for (const auto& named : actor->GetProperty()->GetAllTextures())
-  {
-    static const std::array<const char*, 7> noOpacity = { "normalTex", "materialTex", "brdfTex",
-      "emissiveTex", "anisotropyTex", "coatNormalTex", "colortexture" };
-    if (std::none_of(noOpacity.begin(), noOpacity.end(),
-          [&named](const char* name) { return named.first == name; }))
-    {
-      textures.push_back(named.second);
-    }
-  }
+  const std::vector<vtkTexture*> textures = TexturesOf(actor, true);
   return std::any_of(textures.begin(), textures.end(), cutsHoles);
 }
 

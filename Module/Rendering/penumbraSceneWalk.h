@@ -97,17 +97,18 @@ bool IsExactly(vtkObject* object, const char* className);
 /// table decides for the block's scalars, or for its whole table where the block has none.
 bool BlockColoursOpaque(vtkCompositePolyDataMapper2* mapper, vtkPolyData* block);
 
-/// The textures VTK draws `actor` with: its own and its property's.
-std::vector<vtkTexture*> TexturesOf(vtkActor* actor);
+/// The textures VTK draws `actor` with: its own and its property's; with `colourOnly`, without
+/// the PBR maps that carry no opacity (normal, material, emissive...).
+std::vector<vtkTexture*> TexturesOf(vtkActor* actor, bool colourOnly = false);
 
 /// Whether a texture of `actor` (its own or its property's) may have texels of alpha 0, whose
 /// fragments VTK drops whatever the actor's opacity: texels with an alpha channel, texels
 /// mapped through a lookup table, or none known yet.
 bool TexturesMayOpenHoles(vtkActor* actor);
 
-/// Whether one of the textures that colour the actor (its own, its property's other than the PBR
-/// maps without opacity) is known to have texels of alpha 0, which VTK discards: unsigned chars
-/// with an alpha component, not mapped through a lookup table.
+/// Whether one of the textures that colour the actor (TexturesOf, colourOnly) is known to have
+/// texels of alpha 0, which VTK discards: unsigned chars with an alpha component, not mapped
+/// through a lookup table.
 bool TexturesCutHoles(vtkActor* actor);
 
 /// Whether `actor`'s shader property holds shader code or replacements of the user's.
