@@ -30,10 +30,12 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
+#include "vtkMapperCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
@@ -1231,12 +1233,40 @@ bool ShiftedOutOfSight(vtkMapper* mapper)
   }
 }
 
+/// The mapper VTK drew `actor` with last: a vtkLODActor's level as vtkLODActor::Render picks it
+/// (VTK 9.1): its mapper when its last draw time fits the time the renderer allotted the
+/// actor; else, over its levels in order and until one never drawn (time 0) is met, a faster
+/// one while none fits and a slower one that still fits.
+vtkMapper* LastDrawnMapper(vtkActor* actor)
+{
+  auto lod = vtkLODActor::SafeDownCast(actor);
+  vtkMapper* best = actor->GetMapper();
+  if (!lod || !best || best->GetTimeToDraw() <= lod->GetAllocatedRenderTime())
+  {
+    return best;
+  }
+  const double allotted = lod->GetAllocatedRenderTime();
+  vtkMapperCollection* levels = lod->GetLODMappers();
+  for (int i = 0; i < levels->GetNumberOfItems() && best->GetTimeToDraw() != 0.0; ++i)
+  {
+    auto level = vtkMapper::SafeDownCast(levels->GetItemAsObject(i));
+    const double time = level->GetTimeToDraw(), bestTime = best->GetTimeToDraw();
+    const bool faster = bestTime > allotted && time < bestTime;
+    const bool slowerButFits = time > bestTime && time < allotted;
+    if (time == 0.0 || faster || slowerButFits)
+    {
+      best = level;
+    }
+  }
+  return best;
+}
+
 /// Appends what VTK draws of one leaf prop (an actor, or an assembly's part at the path's
 /// composed matrix) to `meshes`, with its opacity: its block's where one is set, else its
 /// property's; 1 where VTK draws it opaque.
 void CollectLeaf(vtkActor* actor, vtkMatrix4x4* pathMatrix, bool casts, std::vector<Mesh>& meshes)
 {
-  vtkMapper* mapper = actor->GetMapper();
+  vtkMapper* mapper = LastDrawnMapper(actor);
   const double opacity = actor->GetProperty()->GetOpacity();
   if (!actor->GetVisibility() || !mapper || !(opacity > 0.0))
   {

@@ -28,7 +28,9 @@
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
+#include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
+#include "vtkMapperCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -450,7 +452,7 @@ double ImposterReach(vtkProp* prop)
   for (prop->InitPathTraversal(); (path = prop->GetNextPath());)
   {
     auto actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
-    const double local = actor ? MapperImposterReach(actor->GetMapper()) : 0.0;
+    const double local = actor ? MapperImposterReach(MapperDrawn(actor)) : 0.0;
     if (local == 0.0)
     {
       continue;
@@ -473,6 +475,52 @@ double ImposterReach(vtkProp* prop)
     reach = std::max(reach, std::isfinite(local) ? local * stretch : HUGE_VAL);
   }
   return reach;
+}
+
+namespace
+{
+/// Whether `mapper` is one of the levels a vtkLODActor makes of its own: a cloud of points and
+/// the outline of its bounds.
+bool DrawsPointsOrOutline(vtkLODActor* levels, vtkMapper* mapper)
+{
+  vtkAlgorithm* input =
+    mapper->GetNumberOfInputConnections(0) ? mapper->GetInputAlgorithm() : nullptr;
+  return levels && input &&
+    (input == levels->GetLowResFilter() || input == levels->GetMediumResFilter());
+}
+} // namespace
+
+vtkMapper* MapperDrawn(vtkActor* actor)
+{
+  vtkMapper* drawn = actor->GetMapper();
+  auto levels = vtkLODActor::SafeDownCast(actor);
+  if (!levels || !drawn)
+  {
+    return drawn;
+  }
+  // vtkLODActor::Render's choice, step for step (it depends on the levels' order as VTK's
+  // does): the full mapper while it fits the time, else faster levels until one fits and then
+  // slower ones that still fit.
+  const double allotted = levels->GetAllocatedRenderTime();
+  double drawnTime = drawn->GetTimeToDraw();
+  if (drawnTime <= allotted)
+  {
+    return drawn;
+  }
+  vtkCollectionSimpleIterator it;
+  vtkMapperCollection* mappers = levels->GetLODMappers();
+  mappers->InitTraversal(it);
+  for (vtkMapper* level; drawnTime != 0.0 && (level = mappers->GetNextMapper(it));)
+  {
+    const double time = level->GetTimeToDraw();
+    if (time == 0.0 || (drawnTime > allotted && time < drawnTime) ||
+      (time > drawnTime && time < allotted))
+    {
+      drawn = level;
+      drawnTime = time;
+    }
+  }
+  return drawn;
 }
 
 std::vector<vtkProp*> PropsCulledInView(const vtkRenderState* s)
@@ -626,9 +674,16 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     }
     return; // 2D props and the like: overlays, nothing to cast
   }
-  vtkMapper* mapper = actor->GetMapper();
+  vtkMapper* mapper = MapperDrawn(actor);
   if (!mapper || !(actor->HasOpaqueGeometry() || actor->HasTranslucentPolygonalGeometry()))
   {
+    return;
+  }
+  if (DrawsPointsOrOutline(vtkLODActor::SafeDownCast(actor), mapper))
+  {
+    this->Warn(owner, leaf,
+      "is a vtkLODActor drawing its point cloud or outline, as its mapper takes longer to draw "
+      "than the time the renderer allots it: it casts no shadow while it does");
     return;
   }
   if (!actor->HasOpaqueGeometry() && actor->GetProperty()->GetOpacity() >= 1.0 &&
@@ -755,7 +810,7 @@ void SceneWalk::Blocks(vtkActor* actor, vtkCompositePolyDataMapper2* composite,
   }
   opaqueAtFull = opaqueAtFull || (composite && drawn.SeenThrough && drawn.Opacity >= 1.0);
   if (vtkDataObject* clipped =
-        this->Clipped.Apply(actor, index, node, matrix, DrawnClippingPlanes(actor->GetMapper())))
+        this->Clipped.Apply(actor, index, node, matrix, DrawnClippingPlanes(MapperDrawn(actor))))
   {
     surfaces.push_back({ actor, clipped, matrix, index, drawn.Opacity, drawn.SeenThrough });
   }
@@ -902,7 +957,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
 void SceneWalk::ClipGlyphs(
   vtkActor* actor, std::size_t firstGlyph, std::vector<DrawnSurface>& surfaces)
 {
-  const std::vector<glm::dvec4> planes = DrawnClippingPlanes(actor->GetMapper());
+  const std::vector<glm::dvec4> planes = DrawnClippingPlanes(MapperDrawn(actor));
   if (planes.empty())
   {
     return;

@@ -80,6 +80,12 @@ struct DrawnSurface
 /// casters after its depth pass, in which VTK places them for the frame.
 std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
 
+/// The mapper VTK draws `actor` with this frame: its own, but for a vtkLODActor the level
+/// vtkLODActor::Render picks from the time the renderer allotted it and its mappers' last draw
+/// times (a level never drawn, of time 0, is tried first). The renderer allots the times
+/// before the pass runs, and mappers time themselves when VTK draws them.
+vtkMapper* MapperDrawn(vtkActor* actor);
+
 /// What to visit of composite data for its datasets: every leaf at any depth, none empty
 /// (vtk::Range's default visits the first level only, composite children and empty ones too).
 inline vtk::DataObjectTreeOptions EveryLeaf()

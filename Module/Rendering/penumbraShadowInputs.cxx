@@ -22,6 +22,7 @@
 #include "vtkImageProperty.h"
 #include "vtkImageSlice.h"
 #include "vtkInformation.h"
+#include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
@@ -56,7 +57,7 @@ vtkAbstractMapper* MapperOf(vtkProp* leaf)
 {
   if (auto actor = vtkActor::SafeDownCast(leaf))
   {
-    return actor->GetMapper();
+    return MapperDrawn(actor);
   }
   if (auto slice = vtkImageSlice::SafeDownCast(leaf))
   {
@@ -378,10 +379,9 @@ bool ShadowInputs::AddPaths(vtkProp* prop)
 
 bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
 {
-  if (leaf->IsA("vtkLODActor") || vtkLODProp3D::SafeDownCast(leaf))
+  if (vtkLODActor::SafeDownCast(leaf) || vtkLODProp3D::SafeDownCast(leaf))
   {
-    // They pick their level by render time, which modifies nothing. (vtkLODActor by name: this
-    // module does not link RenderingLOD.)
+    // They pick their level by render time, which modifies nothing.
     return false;
   }
   this->Add(leaf);

@@ -956,7 +956,7 @@ PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const doubl
   double reach, std::vector<PropBox>& boxes)
 {
   auto* actor = vtkActor::SafeDownCast(part);
-  vtkMapper* mapper = actor && reach == 0.0 ? actor->GetMapper() : nullptr;
+  vtkMapper* mapper = actor && reach == 0.0 ? penumbra::MapperDrawn(actor) : nullptr;
   auto* tree = penumbra::IsExactly(mapper, "vtkCompositePolyDataMapper2")
     ? vtkDataObjectTree::SafeDownCast(mapper->GetInputDataObject(0, 0))
     : nullptr;

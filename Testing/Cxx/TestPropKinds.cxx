@@ -45,6 +45,8 @@
 #include "vtkMoleculeMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLStickMapper.h"
 #include "vtkPiecewiseFunction.h"
@@ -1100,6 +1102,100 @@ void TestLODActor()
     });
 }
 
+/// A polydata mapper whose draws take the time it is told: VTK times them with timer queries,
+/// which would make the level a vtkLODActor draws depend on this machine.
+class FixedTimeMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static FixedTimeMapper* New();
+  vtkTypeMacro(FixedTimeMapper, vtkOpenGLPolyDataMapper);
+  void SetSeconds(double seconds) { this->TimeToDraw = this->Seconds = seconds; }
+  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override
+  {
+    this->Superclass::RenderPiece(renderer, actor);
+    this->TimeToDraw = this->Seconds;
+  }
+
+private:
+  double Seconds = 0.0001;
+};
+vtkStandardNewMacro(FixedTimeMapper);
+
+/// A vtkLODActor whose full mapper (`full`) takes a second to draw and whose one added level
+/// (`coarse`) takes 10 microseconds.
+vtkSmartPointer<vtkLODActor> SlowLODActor(vtkAlgorithm* full, vtkAlgorithm* coarse)
+{
+  vtkNew<FixedTimeMapper> fullMapper;
+  fullMapper->SetInputConnection(full->GetOutputPort());
+  fullMapper->SetSeconds(1.0);
+  auto levels = LitActor<vtkLODActor>(fullMapper);
+  if (coarse)
+  {
+    vtkNew<FixedTimeMapper> coarseMapper;
+    coarseMapper->SetInputConnection(coarse->GetOutputPort());
+    coarseMapper->SetSeconds(1e-5);
+    levels->AddLODMapper(coarseMapper);
+  }
+  return levels;
+}
+
+void TestLODActorLevels()
+{
+  // A vtkLODActor whose full mapper is slower than the time allotted to it draws a level added
+  // with AddLODMapper (here a slab in place of a sphere): it casts the level VTK draws.
+  auto sphere = SphereSource(-0.9, 1.0, 0.0, 0.6, 32, 16);
+  auto slab = BoxSource(-0.9, 1.0, 0.0, 1.4, 0.3, 1.4);
+  auto box = BoxSource(1.0, 0.6, 0.3, 0.7, 1.2, 0.7);
+  for (bool hurried : { false, true })
+  {
+    // The renderer allots each prop 1/(rate * props) seconds.
+    const double rate = hurried ? 1000.0 : 0.0001;
+    CompareScenes(
+      std::string("vtkLODActor drawing its ") + (hurried ? "added level" : "mapper"),
+      [&](vtkRenderer* r)
+      {
+        r->GetRenderWindow()->SetDesiredUpdateRate(rate);
+        Ground(r);
+        r->AddActor(SlowLODActor(sphere, slab));
+        r->AddActor(MakeActor(box, 1, 1, 1));
+      },
+      [&](vtkRenderer* r)
+      {
+        Ground(r);
+        r->AddActor(MakeActor(hurried ? static_cast<vtkAlgorithm*>(slab) : sphere, 1, 1, 1));
+        r->AddActor(MakeActor(box, 1, 1, 1));
+      });
+  }
+
+  // Without added levels it draws a cloud of points of its own, made on its first draw: no
+  // shadow then, and one warning.
+  View hurried, plain;
+  const WarningLog warnings(hurried.Pass);
+  Ground(hurried.Renderer);
+  hurried.Renderer->AddActor(SlowLODActor(sphere, nullptr));
+  hurried.Renderer->AddActor(MakeActor(box, 1, 1, 1));
+  hurried.Render(); // at VTK's default rate: the full mapper, timed
+  const std::vector<float> full = hurried.Visibility();
+  hurried.Window->SetDesiredUpdateRate(1000.0);
+  hurried.Render();
+  hurried.Render();
+  Ground(plain.Renderer);
+  plain.Renderer->AddActor(MakeActor(box, 1, 1, 1));
+  plain.Render();
+  const int apart = PixelsApart(hurried.Visibility(), plain.Visibility());
+  const int sphereShadow = PixelsApart(full, plain.Visibility());
+  std::printf("vtkLODActor drawing its points: %d px off the scene without it (its full "
+              "shadow: %d px)\n",
+    apart, sphereShadow);
+  Check(sphereShadow > 500 && apart <= 0.002 * Width * Height,
+    "vtkLODActor drawing its points: no shadow, as the scene without it");
+  Check(PixelsApart(TruthOf(hurried), TruthOf(plain)) <= 0.002 * Width * Height,
+    "vtkLODActor drawing its points: the truth sees no shadow either");
+  Check(warnings.Count("point cloud or outline") == 1,
+    "vtkLODActor drawing its points: one warning (" + std::to_string(warnings.Messages.size()) +
+      " in all)");
+}
+
 void TestLODProp3D()
 {
   // A vtkLODProp3D with a fine and a coarse level, moved by its own matrix: it casts from the
@@ -1711,6 +1807,7 @@ int main()
   TestCubeAxes();
   TestUnlitPartsWarn();
   TestLODActor();
+  TestLODActorLevels();
   TestDataSetInput();
   TestLODProp3D();
   TestSkybox();
