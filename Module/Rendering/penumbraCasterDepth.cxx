@@ -9,11 +9,9 @@
 #include "penumbraCasterDepthVS.h"
 
 #include "vtkActor.h"
-#include "vtkCellArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLState.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"

@@ -5,7 +5,6 @@
 #include "penumbraShadowVolume.h"
 
 #include "vtkObject.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"

@@ -4,10 +4,11 @@
  *          cheaper): the centre's count plus each light sample's changes over the potential
  *          silhouette's wedges, in 8-bit counters (Documentation/wedges.md).
  *
- * Only opaque casters are counted. Translucent ones are drawn after, one light sample at a time
- * (ShadowFrame::DrawTranslucentVolumes), and where the counters say that opaque casters leave
- * the sample visible its share of the light is multiplied by their transmission: the averaged
- * method's image for the same samples, at the cost of averaging the translucent casters only.
+ * Only opaque casters are counted. Translucent ones are drawn after, four light samples at a
+ * time, one a channel (ShadowFrame::DrawTranslucentVolumes), and where the counters say that opaque
+ * casters leave the sample visible its share of the light is multiplied by their transmission: the
+ * averaged method's image for the same samples, at the cost of averaging the translucent casters
+ * only.
  */
 #ifndef penumbraCountingTechnique_h
 #define penumbraCountingTechnique_h

@@ -1,13 +1,15 @@
 /**
  * @file    penumbraDeepCounts.h
- * @brief   The deepest depth complexity that each counted light's resolve met, read back one
- *          frame later, so that soft shadow volumes' 8-bit counters do not overflow silently.
+ * @brief   The deepest depth complexity that each counted light's resolve met, read back so
+ *          that soft shadow volumes' 8-bit counters do not overflow silently.
  *
  * A sample behind more surfaces than the counters hold (penumbraCountingResolveFS.glsl) reads
  * as any count. The resolve reports, per light, the deepest count it decoded or the centre's
  * where either reaches ReportedCount: such a light's counts are near the limit, and a point a
  * little deeper overflows. The report is one texel per light, read at the next frame's choice,
- * when the GPU has long finished the frame that wrote it, so that no draw is waited for.
+ * when the GPU has long finished the frame that wrote it, so that no draw is waited for; only
+ * Automatic's first count of a light is read back in its own frame, once in the light's life
+ * (TechniqueChooser::AverageIfFirstCountWentDeep).
  */
 #ifndef penumbraDeepCounts_h
 #define penumbraDeepCounts_h

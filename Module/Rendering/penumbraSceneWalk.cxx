@@ -165,13 +165,6 @@ bool ShiftedToInfinity(vtkMapper* mapper, vtkDataObject* data)
   return polyData && InfiniteRange(polyData->GetPoints());
 }
 
-/// Class names of mappers that draw imposters (sprites ray-cast in the fragment shader) that
-/// have no stand-in caster: there are no triangles to cast from.
-bool DrawsImposters(vtkMapper* mapper)
-{
-  return mapper->IsA("vtkPointGaussianMapper");
-}
-
 /// Mappers that draw spheres or sticks as imposters, for which the walk casts tessellated
 /// stand-ins (SceneWalk::Spheres, Sticks, Molecule); VTK draws them whatever the representation.
 bool DrawsImposterInstances(vtkMapper* mapper)
@@ -704,12 +697,12 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   // A path's last matrix is the composed one; a plain actor's path carries none.
   const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
-  if (DrawsImposters(mapper))
+  if (auto splats = vtkPointGaussianMapper::SafeDownCast(mapper))
   {
-    // Lit splats are drawn in VTK's opaque pass, their squares' depth written corners and all;
-    // the light-intensity buffer holds one surface a pixel, theirs.
-    auto splats = vtkPointGaussianMapper::SafeDownCast(mapper);
-    const bool lit = splats && !splats->GetEmissive() && actor->HasOpaqueGeometry();
+    // Splats are sprites shaded in the fragment shader, with no triangles to cast from. Lit
+    // ones are drawn in VTK's opaque pass, their squares' depth written corners and all; the
+    // light-intensity buffer holds one surface a pixel, theirs.
+    const bool lit = !splats->GetEmissive() && actor->HasOpaqueGeometry();
     this->Warn(owner, leaf,
       std::string("is drawn by ") + mapper->GetClassName() +
         ", whose imposters have no triangles: it casts no shadow" +

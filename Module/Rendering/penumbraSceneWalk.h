@@ -45,7 +45,6 @@ class vtkOpenGLSphereMapper;
 class vtkOpenGLStickMapper;
 class vtkPolyData;
 class vtkMatrix4x4;
-class vtkObject;
 class vtkProp;
 class vtkRenderState;
 class vtkRenderer;

@@ -5,7 +5,6 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
 
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"

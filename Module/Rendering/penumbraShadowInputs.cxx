@@ -15,7 +15,6 @@
 #include "vtkDataObject.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
-#include "vtkDataSet.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"

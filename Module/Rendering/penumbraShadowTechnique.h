@@ -8,8 +8,9 @@
  * (UpdateCaster) and prepares what it draws from (PrepareLight), the ShadowVolumeRenderer draws
  * the opaque casters' shadow volumes of the light's samples, the technique writes each sample's
  * count into the layer (ResolveSample), and finally draws what is its own (Finish): wedges,
- * counting, plateaus. Translucent casters' volumes are drawn, one light sample at a
- * time, when a technique asks for them (ShadowFrame::DrawTranslucentVolumes). Everything a
+ * counting, plateaus. Translucent casters' volumes are drawn per light sample, one a channel
+ * of the target (hard and averaged shadows one sample at a time, counting four), when a
+ * technique asks for them (ShadowFrame::DrawTranslucentVolumes). Everything a
  * technique draws with lives in the ShadowFrame the pass fills.
  */
 #ifndef penumbraShadowTechnique_h
@@ -26,8 +27,6 @@
 #include <glm/glm.hpp>
 
 #include <array>
-#include <set>
-#include <string>
 #include <utility>
 #include <vector>
 

@@ -4,11 +4,12 @@
  *          silhouettes and counted into the LI buffer, z-pass where the volume cannot reach the
  *          near plane, z-fail with caps elsewhere, the far end at infinity.
  *
- * Opaque casters' volumes are counted in the stencil (one sample at a time, for the light's
- * technique to resolve) or, for a technique that counts the light's centre in colour, as -1 per
- * crossing into the light's layer. Translucent casters' volumes add log(1 - opacity) per
- * crossing into a float target, one sample per channel (ShadowFrame::DrawTranslucentVolumes).
- * Each volume is drawn only inside its scissor (penumbra::ShadowScissor): elsewhere it counts 0.
+ * Opaque casters' volumes are counted one sample at a time, for the light's technique to
+ * resolve: in the stencil, or, where the technique counts in colour
+ * (ShadowTechnique::CountsInColour), additively into the float target it bound. Translucent
+ * casters' volumes add log(1 - opacity) per crossing into a float target, one sample per channel
+ * (ShadowFrame::DrawTranslucentVolumes). Each volume is drawn only inside its scissor
+ * (penumbra::ShadowScissor): elsewhere it counts 0.
  */
 #ifndef penumbraShadowVolumeRenderer_h
 #define penumbraShadowVolumeRenderer_h
@@ -46,9 +47,10 @@ public:
   /// Readies the volume program for this frame and zeroes the counts; false (reported once) when
   /// it does not build: then no shadow is drawn.
   bool Begin(const ShadowFrame& frame);
-  /// Counts the opaque casters' volumes from light.Samples[k] into the bound layer's stencil
-  /// (cleared first), or, when the light's technique counts the centre in colour, additively
-  /// into the layer itself. The GL state is restored on return; the counts stay.
+  /// Counts the opaque casters' volumes from light.Samples[k] into the stencil (cleared first),
+  /// or, where the light's technique counts in colour (ShadowTechnique::CountsInColour),
+  /// additively into the float target bound. The GL state is restored on return; the counts
+  /// stay.
   void DrawOpaqueSample(const ShadowFrame& frame, const ShadowLight& light, std::size_t k);
   /// What ShadowFrame::DrawTranslucentVolumes does.
   PixelRect DrawTranslucent(const ShadowFrame& frame, const ShadowLight& light, std::size_t first,

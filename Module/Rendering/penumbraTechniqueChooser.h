@@ -33,9 +33,10 @@ namespace penumbra
  * (hard shadows without a radius; Automatic and soft shadow volumes count where the context allows,
  * and average the same samples where it does not; Automatic also averages more samples than
  * counting holds, and a light whose counts came near what the counters hold, penumbra::DeepCounts,
- * where the forced method warns instead). Reconsider, once the light's casters are up to date:
- * plateaus without a receiver plane draw hard shadows, and Automatic averages the counted samples
- * where its cost model (penumbra::CountingIsCheaper) expects averaging to be cheaper. And
+ * where the forced method warns instead). FindPlateauPlane, before the casters are updated:
+ * plateaus without a receiver plane draw hard shadows. Reconsider, once the light's casters are
+ * up to date: Automatic averages the counted samples where its cost model
+ * (penumbra::CountingIsCheaper) expects averaging to be cheaper. And
  * AverageIfFirstCountWentDeep, after Automatic's first count of a light is drawn: a light whose
  * counts already came near the limit is averaged in that same frame.
  */

@@ -58,7 +58,6 @@
 
 #include "penumbraCulling.h"
 #include "penumbraMatrices.h"
-#include "penumbraShadowVolume.h"
 
 #include "penumbraReceiverDec.h"
 
@@ -1463,9 +1462,9 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   {
     // Each light's volumes and technique leave the state as they found it.
     penumbra::ScopedDrawState savedForLight(ostate);
-    // The layer starts fully lit. Hard and averaged shadows: each light sample whose volume
-    // covers a pixel (stencil non-zero) takes 1/N away. Wedges: the centre's volume count itself
-    // is subtracted (see penumbraShadowVolumeFS.glsl). Float target, additive, no clamping.
+    // The layer starts fully lit; the technique takes away what each sample's volume count
+    // shadows (from the stencil, or from the colour count of CountsInColour), then adds what
+    // is its own. Float target, additive, no clamping.
     internals.LI.BindLayer(light.Layer);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);

@@ -17,8 +17,9 @@
  *    VTK 9.1's window lacks;
  * 3. for each light, draws the opaque casters' shadow volumes (swept to infinity in the vertex
  * shader, depth-clamped, z-pass where the volume cannot reach the near plane and z-fail with caps
- *    otherwise) into the stencil and resolves it into that light's layer of the light-intensity
- *    (LI) buffer, a float texture array (1 lit, 0 shadowed);
+ *    otherwise) into the stencil, or additively in colour (each side drawn once, weighted by its
+ *    multiplicity), and resolves it into that light's layer of the light-intensity (LI) buffer,
+ *    a float texture array (1 lit, 0 shadowed);
  *    For a light with a radius (SetLightRadius) the layer becomes soft: by default
  *    (METHOD_AUTOMATIC, which counts with METHOD_SOFT_SHADOW_VOLUMES where that is cheaper)
  *    the depth complexity of LightSamples points on the light is counted exactly from the
@@ -98,8 +99,8 @@ public:
     /// fitted to the benchmark expects to be faster (penumbra::CountingIsCheaper: counting for
     /// small lights and coarse casters, averaging for large lights over finely tessellated
     /// ones); averaging where the OpenGL context lacks image atomics, LightSamples is above
-    /// the 256 that counting holds, or, from the next frame on, the light's counts came near
-    /// what the counters hold (200 surfaces deep).
+    /// the 256 that counting holds, or the light's counts came near what the counters hold
+    /// (200 surfaces deep: found in the frame of its first count, else from the next frame on).
     METHOD_AUTOMATIC = 0,
     /// One shadow volume from the light's centre: hard shadows whatever the light's radius.
     METHOD_HARD_VOLUMES = 1,
@@ -266,9 +267,11 @@ public:
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
   /// and stencil, depth copy, one light-intensity layer per light, for soft shadow volumes the
-  /// centre count and one byte per pixel and light sample, the averaged samples' count target
-  /// once open casters were averaged, and the translucent casters' transmission targets once
-  /// one was drawn) and the casters' vertex, index and wedge buffers.
+  /// centre count, one byte per pixel and light sample, the count offsets, the half-resolution
+  /// targets once used and the deep-count report, the averaged samples' count target once open
+  /// casters were averaged, the plateaus' depth texture and buffer once drawn, and the
+  /// translucent casters' transmission targets once one was drawn) and the casters' vertex,
+  /// index and wedge buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
   /// The stages of a frame, for GetStageCPUMilliseconds and GetStageGPUMilliseconds.

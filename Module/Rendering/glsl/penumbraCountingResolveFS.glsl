@@ -24,7 +24,8 @@
 //
 // With PENUMBRA_COUNT_OFFSET defined it writes, instead of the visibility, the offset that
 // makes a sample's 8-bit field 0 (mod 256) exactly where that sample is visible: what the
-// translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads one sample at a time.
+// translucent casters' resolve (penumbraCountingTransmissionFS.glsl) reads for the samples it
+// resolves (four at a time).
 //
 // Counter texel t holds the counts of pixel counterStride * t (see the wedges' shader).
 uniform sampler2D centreCount; // minus the centre's shadow-volume count

@@ -1,7 +1,7 @@
-// The visible point of a pixel, from the scene depth, in the shader's local frame: wedge
-// coordinates (world space relative to the light, or to the caster for a directional light) for
-// the wedge, horizon and counting shaders, world space relative to the receiver plane's origin
-// for the plateau resolve. Shared through //PENUMBRA::DepthPoint::Dec.
+// The visible point of a pixel, from the scene depth, in the shader's local frame: world space
+// relative to the caster's origin for the wedge and counting shaders (WedgeBuffer::Origin),
+// relative to the light (world space for a directional light) for the horizon cap, relative to
+// the receiver plane's origin for the plateau resolve. Shared through //PENUMBRA::DepthPoint::Dec.
 uniform sampler2D depthTexture;
 uniform mat4 clipToLocal; // NDC of this viewport to the local frame
 uniform vec2 viewportSize;

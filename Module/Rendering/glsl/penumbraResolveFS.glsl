@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Writes the light intensity of pixels selected by the stencil test (non-zero count: inside a
-// shadow volume).
+// Writes one light intensity to every pixel it is drawn on: those the caller's stencil test
+// selects (non-zero count: inside a shadow volume), or all of them (a layer's lit background).
 uniform float lightIntensity;
 
 void main()

@@ -1,9 +1,10 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Counting shadow-volume crossings. In the stencil (hard and averaged shadows) colour writes are
-// masked off and only the stencil operations count. For penumbra wedges the count goes straight
-// into the float LI buffer with additive blending, so that a point behind two casters loses
-// twice the light, as the wedges' per-caster corrections assume.
+// Counting shadow-volume crossings, where the light's technique says
+// (ShadowTechnique::CountsInColour): in the stencil, with colour writes masked off, or as
+// +-frontFaceValue per crossing added (blending, no clamping) into the float target bound (the
+// light's layer, or a technique's count target), so that a point behind two casters loses twice
+// the light and a side of multiplicity m is drawn once with frontFaceValue m.
 uniform float frontFaceValue;
 
 void main()
