@@ -245,7 +245,7 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   {
     this->HalfResolutionTargets.ReleaseGraphicsResources(window); // the option was turned off
   }
-  ostate->PushFramebufferBindings();
+  ScopedFramebufferBindings bindings(ostate);
   // Translucent casters' transmission reads every pixel's counters: such lights count at full
   // resolution.
   const bool half = this->HalfResolution && !light.ShadowedByTranslucentCasters &&
@@ -256,7 +256,6 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   if (!this->AllocateCounters(
         window, glm::ivec2(frame.Size[0], frame.Size[1]), light.CountingSamples.size()))
   {
-    ostate->PopFramebufferBindings();
     return false;
   }
   this->ClearCounters();
@@ -282,7 +281,6 @@ bool CountingTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     drawn = this->CountWedges(frame, light, WedgePixels::All) &&
       this->Resolve(frame, light, ResolveInto::Layer);
   }
-  ostate->PopFramebufferBindings();
   return drawn;
 }
 

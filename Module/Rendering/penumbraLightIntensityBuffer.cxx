@@ -78,14 +78,13 @@ void LightIntensityBuffer::CopyDepth(vtkOpenGLState* ostate)
   // A blit obeys the scissor test: the whole buffer, whatever box the caller left.
   vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->PushFramebufferBindings();
+  ScopedFramebufferBindings bindings(ostate);
   this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
   this->DepthCopyFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
     this->DepthCopy->GetHandle(), 0);
   ostate->vtkglBlitFramebuffer(0, 0, this->Width, this->Height, 0, 0, this->Width, this->Height,
     GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  ostate->PopFramebufferBindings();
 }
 
 std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const

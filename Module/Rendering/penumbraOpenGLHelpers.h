@@ -142,6 +142,23 @@ private:
   double ClearDepth = 1.0;
 };
 
+/// Pushes the framebuffer bindings (draw and read) and pops them when it goes out of scope.
+class ScopedFramebufferBindings
+{
+public:
+  explicit ScopedFramebufferBindings(vtkOpenGLState* state)
+    : State(state)
+  {
+    state->PushFramebufferBindings();
+  }
+  ~ScopedFramebufferBindings() { this->State->PopFramebufferBindings(); }
+  ScopedFramebufferBindings(const ScopedFramebufferBindings&) = delete;
+  ScopedFramebufferBindings& operator=(const ScopedFramebufferBindings&) = delete;
+
+private:
+  vtkOpenGLState* State;
+};
+
 /// Sets the scissor box to `rect` (the scissor test is the caller's).
 void SetScissor(vtkOpenGLState* state, const PixelRect& rect);
 

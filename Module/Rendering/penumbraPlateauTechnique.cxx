@@ -122,7 +122,7 @@ bool PlateauTechnique::RenderTexture(
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
   // The plateau texture: seen down the normal, the smallest depth (darkest) wins.
-  ostate->PushFramebufferBindings();
+  ScopedFramebufferBindings bindings(ostate);
   this->Framebuffer->Bind();
   this->Framebuffer->AddDepthAttachment(this->Depth);
   ostate->vtkglDrawBuffer(GL_NONE);
@@ -146,7 +146,6 @@ bool PlateauTechnique::RenderTexture(
     this->VAO, program, this->VAOProgram, this->Vertices, { { "plateauVertex", 0, 3 } });
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(this->Triangles.size()));
   this->VAO->Release();
-  ostate->PopFramebufferBindings();
 
   this->TextureCurrent = true;
   return true;

@@ -353,6 +353,12 @@ void WedgeBuffer::Bind(vtkShaderProgram* program, const std::vector<VertexAttrib
   this->IndexBuffer->Bind();
 }
 
+void VolumeCache::ReleaseGraphicsResources()
+{
+  this->Indices->ReleaseGraphicsResources();
+  this->Uploaded = false;
+}
+
 void WedgeBuffer::ReleaseGraphicsResources()
 {
   this->Buffer->ReleaseGraphicsResources();
@@ -516,6 +522,38 @@ CasterCache* ShadowCaches::FindCaster(vtkActor* actor, std::size_t part)
   return caster.get();
 }
 
+namespace
+{
+/// Calls `visit` with each of a caster's per-light caches: its volumes, wedges and counting
+/// wedges (a CasterCache, const or not).
+template <typename Caster, typename Visit>
+void ForEachLightCache(Caster& caster, Visit&& visit)
+{
+  for (auto& entry : caster.Volumes)
+  {
+    visit(entry.second);
+  }
+  for (auto& entry : caster.Wedges)
+  {
+    visit(entry.second);
+  }
+  for (auto& entry : caster.CountingWedges)
+  {
+    visit(entry.second);
+  }
+}
+
+/// Erases the entries of `caches` not used this frame.
+template <typename Map>
+void EraseUnused(Map& caches)
+{
+  for (auto it = caches.begin(); it != caches.end();)
+  {
+    it = it->second.Used ? std::next(it) : caches.erase(it);
+  }
+}
+} // namespace
+
 void ShadowCaches::BeginFrame()
 {
   this->FoundThisFrame.clear();
@@ -526,18 +564,7 @@ void ShadowCaches::BeginFrame()
   for (auto& caster : this->Casters)
   {
     caster.second->Used = false;
-    for (auto& volume : caster.second->Volumes)
-    {
-      volume.second.Used = false;
-    }
-    for (auto& wedges : caster.second->Wedges)
-    {
-      wedges.second.Used = false;
-    }
-    for (auto& wedges : caster.second->CountingWedges)
-    {
-      wedges.second.Used = false;
-    }
+    ForEachLightCache(*caster.second, [](auto& cache) { cache.Used = false; });
   }
 }
 
@@ -550,21 +577,9 @@ void ShadowCaches::PurgeUnused()
       it = this->Casters.erase(it);
       continue;
     }
-    auto& volumes = it->second->Volumes;
-    for (auto v = volumes.begin(); v != volumes.end();)
-    {
-      v = v->second.Used ? std::next(v) : volumes.erase(v);
-    }
-    auto& wedges = it->second->Wedges;
-    for (auto w = wedges.begin(); w != wedges.end();)
-    {
-      w = w->second.Used ? std::next(w) : wedges.erase(w);
-    }
-    auto& counting = it->second->CountingWedges;
-    for (auto w = counting.begin(); w != counting.end();)
-    {
-      w = w->second.Used ? std::next(w) : counting.erase(w);
-    }
+    EraseUnused(it->second->Volumes);
+    EraseUnused(it->second->Wedges);
+    EraseUnused(it->second->CountingWedges);
     ++it;
   }
   for (auto it = this->Meshes.begin(); it != this->Meshes.end();)
@@ -581,19 +596,7 @@ void ShadowCaches::ReleaseGraphicsResources()
   }
   for (auto& caster : this->Casters)
   {
-    for (auto& volume : caster.second->Volumes)
-    {
-      volume.second.Indices->ReleaseGraphicsResources();
-      volume.second.Uploaded = false;
-    }
-    for (auto& wedges : caster.second->Wedges)
-    {
-      wedges.second.ReleaseGraphicsResources();
-    }
-    for (auto& wedges : caster.second->CountingWedges)
-    {
-      wedges.second.ReleaseGraphicsResources();
-    }
+    ForEachLightCache(*caster.second, [](auto& cache) { cache.ReleaseGraphicsResources(); });
   }
 }
 
@@ -611,20 +614,8 @@ std::size_t ShadowCaches::GraphicsBufferBytes() const
   }
   for (const auto& caster : this->Casters)
   {
-    for (const auto& volume : caster.second->Volumes)
-    {
-      const VolumeCache& v = volume.second;
-      bytes +=
-        v.Uploaded ? (v.SideCount() + v.CapCount() + v.DarkCapCount()) * sizeof(std::uint32_t) : 0;
-    }
-    for (const auto& wedges : caster.second->Wedges)
-    {
-      bytes += wedges.second.UploadedBytes();
-    }
-    for (const auto& wedges : caster.second->CountingWedges)
-    {
-      bytes += wedges.second.UploadedBytes();
-    }
+    const CasterCache& constCaster = *caster.second;
+    ForEachLightCache(constCaster, [&bytes](const auto& cache) { bytes += cache.UploadedBytes(); });
   }
   return bytes;
 }

@@ -100,6 +100,14 @@ struct VolumeCache
   /// Adds the light and dark caps (z-fail needs them), once per silhouette update.
   void EnsureCaps(const MeshCache& mesh);
   void Upload();
+  void ReleaseGraphicsResources();
+  /// Bytes of the uploaded index buffer.
+  std::size_t UploadedBytes() const
+  {
+    return this->Uploaded
+      ? (this->SideCount() + this->CapCount() + this->DarkCapCount()) * sizeof(std::uint32_t)
+      : 0;
+  }
   std::size_t SideCount() const { return this->Volume.Sides.size(); }
   std::size_t CapCount() const { return this->Volume.LightCap.size(); }
   std::size_t DarkCapCount() const { return this->Volume.DarkCap.size(); }

@@ -1237,17 +1237,7 @@ public:
   ScopedDepthDrawing& operator=(const ScopedDepthDrawing&) = delete;
 
 private:
-  struct PushedBindings
-  {
-    explicit PushedBindings(vtkOpenGLState* state)
-      : State(state)
-    {
-      state->PushFramebufferBindings();
-    }
-    ~PushedBindings() { this->State->PopFramebufferBindings(); }
-    vtkOpenGLState* State;
-  };
-  PushedBindings Bindings;
+  penumbra::ScopedFramebufferBindings Bindings;
   penumbra::ScopedDrawState Saved; // stencil write mask and clear depth included
 };
 } // namespace
@@ -1447,7 +1437,7 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
     return false;
   }
 
-  ostate->PushFramebufferBindings();
+  penumbra::ScopedFramebufferBindings bindings(ostate);
   penumbra::ScopedDrawState saved(ostate);
   ostate->vtkglViewport(0, 0, internals.Size[0], internals.Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -1505,7 +1495,6 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
   this->NumberOfFullViewportWedges = frame.Counts.FullViewportWedges;
   this->NumberOfPlateauTriangles = frame.Counts.PlateauTriangles;
   this->NumberOfCountedLights = frame.Counts.CountedLights;
-  ostate->PopFramebufferBindings();
   return true;
 }
 
