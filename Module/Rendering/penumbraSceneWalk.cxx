@@ -398,6 +398,21 @@ bool OutsideTheShadows(vtkProp* prop)
   return !vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop);
 }
 
+std::vector<vtkProp*> VisiblePropsInTheShadows(vtkRenderer* renderer)
+{
+  std::vector<vtkProp*> props;
+  vtkPropCollection* all = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  for (all->InitTraversal(it); vtkProp* prop = all->GetNextProp(it);)
+  {
+    if (prop->GetVisibility() && !OutsideTheShadows(prop))
+    {
+      props.push_back(prop);
+    }
+  }
+  return props;
+}
+
 namespace
 {
 /// The largest magnitude of component `component` of `array`, or `fallback` without an array.
@@ -561,12 +576,9 @@ std::vector<DrawnSurface> SceneWalk::Casters(
   vtkRenderer* renderer, const std::vector<vtkProp*>& culledInView, vtkObject* owner)
 {
   std::vector<DrawnSurface> surfaces;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  vtkProp* prop;
-  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  for (vtkProp* prop : VisiblePropsInTheShadows(renderer))
   {
-    if (!prop->GetVisibility() || !vtkSoftShadowPass::GetCastsShadows(prop) ||
+    if (!vtkSoftShadowPass::GetCastsShadows(prop) ||
       std::binary_search(culledInView.begin(), culledInView.end(), prop))
     {
       continue;

@@ -126,6 +126,9 @@ bool HasCustomShaders(vtkActor* actor);
 /// its pixels show it, not the LI buffer, and moving it changes no shadow.
 bool OutsideTheShadows(vtkProp* prop);
 
+/// The renderer's visible props that are not OutsideTheShadows, in the renderer's order.
+std::vector<vtkProp*> VisiblePropsInTheShadows(vtkRenderer* renderer);
+
 /// How far (world units) what VTK draws for `prop` may reach beyond prop->GetBounds(): VTK's
 /// imposter mappers (vtkOpenGLSphereMapper, vtkOpenGLStickMapper), alone or as parts of an
 /// assembly, report the bounds of their centres only, without the spheres' radii or the sticks'

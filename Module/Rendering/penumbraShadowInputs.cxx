@@ -497,15 +497,8 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
 
 void UpdateMapperInputs(vtkRenderer* renderer)
 {
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
+  for (vtkProp* prop : VisiblePropsInTheShadows(renderer))
   {
-    if (OutsideTheShadows(prop) || !prop->GetVisibility())
-    {
-      continue;
-    }
     for (vtkProp* part : PropsDrawnFor(prop))
     {
       part->InitPathTraversal();

@@ -773,14 +773,9 @@ void vtkSoftShadowPass::CollectShadowingLights(vtkRenderer* renderer)
   // takes them (UseBounds), or, with nothing visible, the light's focal point. Props outside
   // the shadows (widgets) are left out, so that dragging one does not turn the samples.
   penumbra::Box visible;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator propIt;
-  for (props->InitTraversal(propIt); vtkProp* prop = props->GetNextProp(propIt);)
+  for (vtkProp* prop : penumbra::VisiblePropsInTheShadows(renderer))
   {
-    const double* bounds =
-      prop->GetVisibility() && prop->GetUseBounds() && !penumbra::OutsideTheShadows(prop)
-      ? prop->GetBounds()
-      : nullptr;
+    const double* bounds = prop->GetUseBounds() ? prop->GetBounds() : nullptr;
     if (bounds && vtkMath::AreBoundsInitialized(bounds))
     {
       visible.Extend(
@@ -1046,17 +1041,15 @@ PropExtent AddPropBoxes(vtkProp* prop, std::vector<PropBox>& boxes)
 
 /// The distance from `point` to the nearest surface of a visible prop's box: to the box from
 /// outside it, to its nearest face from inside (a light inside a room is as far from the walls
-/// as from their box's faces). Infinite when no prop has finite bounds.
+/// as from their box's faces). Props outside the shadows (a widget's handles round a light)
+/// are left out. Infinite when no prop has finite bounds.
 double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
 {
   double nearest = std::numeric_limits<double>::infinity();
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  vtkProp* prop;
-  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  for (vtkProp* prop : penumbra::VisiblePropsInTheShadows(renderer))
   {
     penumbra::Box box;
-    if (!prop->GetVisibility() || ExtendByProp(box, prop) != PropExtent::Finite)
+    if (ExtendByProp(box, prop) != PropExtent::Finite)
     {
       continue;
     }
@@ -1119,15 +1112,8 @@ void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
   const glm::dvec3 eye = glm::make_vec3(renderer->GetActiveCamera()->GetPosition());
   std::map<vtkDataSet*, Occupancy> used;
   std::vector<PropBox> drawn;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  vtkProp* prop;
-  for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+  for (vtkProp* prop : penumbra::VisiblePropsInTheShadows(renderer))
   {
-    if (!prop->GetVisibility() || penumbra::OutsideTheShadows(prop))
-    {
-      continue;
-    }
     // Empty props add nothing in depth; one of unknown extent, no box at all.
     drawn.clear();
     if (AddPropBoxes(prop, drawn) == PropExtent::Unknown)

@@ -543,7 +543,8 @@ void TestTwoWindows()
 }
 
 /// A positional light whose sphere reaches a visible prop: one warning, naming the distance;
-/// none for a radius just below it, nor for the room it hangs in. A negative light index: an error.
+/// none for a radius just below it, nor for the room it hangs in or a widget round it. A negative
+/// light index: an error.
 void TestLightReachingScene()
 {
   std::vector<vtkSmartPointer<vtkObject>> keep;
@@ -558,6 +559,13 @@ void TestLightReachingScene()
   AddActor(view.Renderer, room, 0.8, 0.8, 0.8, keep);
   auto light = penumbra::scene::MakeLight(true, { 0.5, 6, 0.5 }, 4.3);
   view.Renderer->AddLight(light);
+  // A widget's handles round the light (what vtkSphereWidget2 adds): they cast and receive
+  // nothing, so they are not the scene the light reaches.
+  vtkNew<vtkSphereRepresentation> handles;
+  handles->SetRenderer(view.Renderer);
+  double aroundLight[6] = { 0.0, 1.0, 5.5, 6.5, 0.0, 1.0 };
+  handles->PlaceWidget(aroundLight);
+  view.Renderer->AddViewProp(handles);
   PlaceCamera(view.Renderer, 0, 5, 6, 0, 0, 0);
   const WarningLog log(view.Pass);
   view.Window->Render();
