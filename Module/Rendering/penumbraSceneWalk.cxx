@@ -30,6 +30,7 @@
 #include "vtkImageSlice.h"
 #include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
+#include "vtkLightActor.h"
 #include "vtkMapperCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -395,7 +396,8 @@ bool HasCustomShaders(vtkActor* actor)
 
 bool OutsideTheShadows(vtkProp* prop)
 {
-  return !vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop);
+  return (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop)) ||
+    vtkLightActor::SafeDownCast(prop);
 }
 
 std::vector<vtkProp*> VisiblePropsInTheShadows(vtkRenderer* renderer)

@@ -122,8 +122,9 @@ bool HasCustomShaders(vtkActor* actor);
 /// Whether `prop` lies outside everything the shadows depend on: a prop that is neither a 3D prop
 /// nor a prop assembly (a 2D actor, a widget's representation, a caption's 3D leader) draws
 /// through actors of its own that the pass never sees, so it casts nothing and VTK draws it
-/// unshadowed. The pass leaves it out of its depth, its scene box and its record of the scene:
-/// its pixels show it, not the LI buffer, and moving it changes no shadow.
+/// unshadowed; a vtkLightActor, a light's marker, draws unlit lines. The pass leaves it out of
+/// its depth, its scene box and its record of the scene: its pixels show it, not the LI buffer,
+/// and moving it changes no shadow.
 bool OutsideTheShadows(vtkProp* prop);
 
 /// The renderer's visible props that are not OutsideTheShadows, in the renderer's order.

@@ -30,6 +30,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
+#include "vtkLightActor.h"
 #include "vtkLightsPass.h"
 #include "vtkLookupTable.h"
 #include "vtkMapper.h"
@@ -543,7 +544,8 @@ void TestTwoWindows()
 }
 
 /// A positional light whose sphere reaches a visible prop: one warning, naming the distance;
-/// none for a radius just below it, nor for the room it hangs in or a widget round it. A negative
+/// none for a radius just below it, nor for the room it hangs in, a widget round it or its
+/// vtkLightActor. A negative
 /// light index: an error.
 void TestLightReachingScene()
 {
@@ -556,7 +558,7 @@ void TestLightReachingScene()
   room->SetXLength(30);
   room->SetYLength(30);
   room->SetZLength(30);
-  AddActor(view.Renderer, room, 0.8, 0.8, 0.8, keep);
+  vtkActor* walls = AddActor(view.Renderer, room, 0.8, 0.8, 0.8, keep);
   auto light = penumbra::scene::MakeLight(true, { 0.5, 6, 0.5 }, 4.3);
   view.Renderer->AddLight(light);
   // A widget's handles round the light (what vtkSphereWidget2 adds): they cast and receive
@@ -566,6 +568,11 @@ void TestLightReachingScene()
   double aroundLight[6] = { 0.0, 1.0, 5.5, 6.5, 0.0, 1.0 };
   handles->PlaceWidget(aroundLight);
   view.Renderer->AddViewProp(handles);
+  // And the light's own marker, which draws unlit lines from it: a spot light's cone.
+  light->SetConeAngle(70.0);
+  vtkNew<vtkLightActor> marker;
+  marker->SetLight(light);
+  view.Renderer->AddViewProp(marker);
   PlaceCamera(view.Renderer, 0, 5, 6, 0, 0, 0);
   const WarningLog log(view.Pass);
   view.Window->Render();
@@ -583,6 +590,24 @@ void TestLightReachingScene()
   Check(below == 0, "a light short of the scene: no warning");
   Check(log.Count("distance to the nearest visible prop's box (4.5") == 1,
     "a light reaching the scene: one warning, with the distance");
+
+  // Nor are the widget and the marker props the light's samples face: the soft shadows are
+  // those drawn without them (out of the room, whose box would hide a shift).
+  view.Renderer->RemoveActor(walls);
+  view.Window->Render();
+  const std::vector<float> withMarkers = ImageValues(view.Pass->GetVisibilityImage(0));
+  view.Renderer->RemoveViewProp(marker);
+  view.Renderer->RemoveViewProp(handles);
+  view.Window->Render();
+  const std::vector<float> without = ImageValues(view.Pass->GetVisibilityImage(0));
+  int changed = withMarkers.size() == without.size() ? 0 : -1;
+  for (std::size_t i = 0; changed >= 0 && i < without.size(); ++i)
+  {
+    changed += withMarkers[i] != without[i];
+  }
+  std::printf(
+    "     %d px of the soft shadows change with the light's widget and marker\n", changed);
+  Check(changed == 0, "a widget and a vtkLightActor at the light change no shadow");
 
   // A negative light index is a mistake, not a light without shadows: an error says so.
   const WarningLog errors(view.Pass, vtkCommand::ErrorEvent);
