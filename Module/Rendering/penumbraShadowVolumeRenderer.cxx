@@ -25,6 +25,11 @@ namespace
 /// NDC depth by which light caps are pushed back: well above float rounding of the two
 /// vertex transforms (VTK's mapper and ours), which differ by about 1e-6 relative.
 constexpr float CapDepthBias = 5e-5f;
+/// The same for a caster seen through (not in the depth pass), whose cap may lie on an opaque
+/// surface (a translucent label's boundary on an opaque one's): pushed back by a few times the
+/// rounding, a visible point on the cap's plane is not behind it, as the ray-traced truth
+/// starts its rays off the surface; a generous push would also hide a cap just in front.
+constexpr float SeenThroughCapDepthBias = 1e-5f;
 
 /// The pixels where the caster's volume from `sample` can count (penumbra::ShadowScissor).
 PixelRect VolumeScissor(
@@ -255,7 +260,9 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     if (plan.LightCap)
     {
       program->SetUniformf("frontFaceValue", -weight);
+      program->SetUniformf("capDepthBias", SeenThroughCapDepthBias);
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
+      program->SetUniformf("capDepthBias", 0.0f);
       this->Triangles += static_cast<vtkIdType>(lightCap / 3);
     }
   }
@@ -279,9 +286,10 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     // on it counts as outside its own triangle's volume, i.e. lit from the side it is seen from.
     // The cap only covers pixels where its opaque caster is the nearest surface, so a generous
     // push cannot move it behind any other visible point.
-    // A caster seen through is not in the depth pass: its cap needs no push, and one could move
-    // it behind an opaque point just behind it.
-    program->SetUniformf("capDepthBias", caster.SeenThrough ? 0.0f : CapDepthBias);
+    // A caster seen through is not in the depth pass: a generous push could move its cap behind
+    // an opaque point just behind it, so it is pushed by SeenThroughCapDepthBias only.
+    program->SetUniformf(
+      "capDepthBias", caster.SeenThrough ? SeenThroughCapDepthBias : CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
     program->SetUniformf("capDepthBias", 0.0f);
     this->Triangles += static_cast<vtkIdType>(lightCap / 3);
