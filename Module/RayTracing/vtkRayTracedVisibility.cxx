@@ -1241,11 +1241,11 @@ vtkMapper* LastDrawnMapper(vtkActor* actor)
 {
   auto lod = vtkLODActor::SafeDownCast(actor);
   vtkMapper* best = actor->GetMapper();
-  if (!lod || !best || best->GetTimeToDraw() <= lod->GetAllocatedRenderTime())
+  const double allotted = lod ? lod->GetAllocatedRenderTime() : 0.0;
+  if (!lod || !best || best->GetTimeToDraw() <= allotted)
   {
     return best;
   }
-  const double allotted = lod->GetAllocatedRenderTime();
   vtkMapperCollection* levels = lod->GetLODMappers();
   for (int i = 0; i < levels->GetNumberOfItems() && best->GetTimeToDraw() != 0.0; ++i)
   {
