@@ -10,19 +10,16 @@
 
 #include "penumbraPropWarnings.h"
 #include "penumbraReceiverShader.h"
+#include "penumbraSceneBounds.h"
 #include "penumbraSceneWalk.h"
 #include "penumbraShadowInputs.h"
 #include "penumbraStageTimes.h"
 #include "penumbraWindowReleaseCallback.h"
 
 #include "vtkActor.h"
-#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
-#include "vtkDataObjectTree.h"
-#include "vtkDataObjectTreeRange.h"
-#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkImageData.h"
@@ -47,7 +44,6 @@
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkProp.h"
-#include "vtkProp3D.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRendererSettingsPass.h"
@@ -69,7 +65,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -184,32 +179,8 @@ public:
   std::vector<vtkSmartPointer<vtkInformation>> ReceiverKeys;
   /// PropsCulledInView this frame: VTK does not draw them, so they cast nothing.
   std::vector<vtkProp*> CulledInView;
-  /// Every receiver's box (penumbra::StableReceiverBox) and its pieces around each receiver:
-  /// wedges are cut to them.
-  penumbra::ReceiverBounds ReceiverBounds;
-  void UpdateReceiverBox();
-  /// Holds every visible prop, UseBounds or not, so every pixel's visible point: the depth
-  /// range and the volumes' scissors are narrowed to it. Invalid when a prop has no finite bounds.
-  penumbra::Box SceneBox;               ///< holds every visible prop; invalid if one is unbounded
-  std::vector<penumbra::Box> PropBoxes; ///< each visible prop's (assembly part's), for the range
-  void UpdateSceneBox(vtkRenderer* renderer);
-
-  /// A dataset's occupied grid cells (penumbra::OccupancyGrid), in its own coordinates, kept
-  /// while the dataset is unchanged.
-  struct Occupancy
-  {
-    vtkMTimeType Time = 0;
-    std::vector<penumbra::Box> Boxes;
-  };
-  std::map<vtkDataSet*, Occupancy> Occupancies;
-  /// Where the eye lies inside the box of one dataset a prop draws the cells of (a room as one
-  /// mesh, a block of composite data, an assembly's part): instead of that box, the world boxes
-  /// of the grid cells those cells occupy (`dataToWorld` places them), so that the range keeps
-  /// the empty space around the eye out. False for data of more than a million cells, which is
-  /// not walked each time it changes. Entries of data not asked about in a frame are dropped
-  /// (`used`).
-  bool OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
-    std::vector<penumbra::Box>& boxes, std::map<vtkDataSet*, Occupancy>& used);
+  /// The scene's, props' and receivers' boxes the depth range, scissors and wedges are cut to.
+  penumbra::SceneBounds Bounds;
   penumbra::LightWarnings WarnedLights;
   bool WarnedWindowChange = false;
   bool WarnedNested = false;
@@ -273,7 +244,7 @@ public:
   {
     vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
     vtkMatrix3x3* normals;
-    this->Camera.Update(renderer, this->SceneBox, this->PropBoxes, tightDepthRange)
+    this->Camera.Update(renderer, this->Bounds.Scene(), this->Bounds.Props(), tightDepthRange)
       ->GetKeyMatrices(renderer, worldToView, normals, viewToClip, worldToClip);
     // VTK keeps its key matrices transposed for OpenGL.
     this->WorldToClip = glm::transpose(penumbra::ToGlm(worldToClip));
@@ -591,7 +562,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   this->AddReceiverKeys(s);
-  internals.UpdateSceneBox(renderer);
+  internals.Bounds.UpdateScene(renderer);
   internals.CulledInView = penumbra::PropsCulledInView(s);
   this->WarnOfLightsReachingTheScene(renderer);
   internals.UpdateCamera(renderer, this->UseTightDepthRange);
@@ -886,280 +857,6 @@ void vtkSoftShadowPass::AddReceiverKeys(const vtkRenderState* s)
   }
 }
 
-namespace
-{
-/// What a prop's bounds add to a box: nothing (no bounds: 2D props, empty data), their extent,
-/// or nothing because they are not finite (Unknown).
-enum class PropExtent
-{
-  None,
-  Finite,
-  Unknown
-};
-
-/// What VTK's `bounds` (xmin, xmax, ymin, ...; null where there are none) grown by `reach` on
-/// every side add to `box`.
-PropExtent ExtendByBounds(penumbra::Box& box, const double* bounds, double reach)
-{
-  if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
-  {
-    return PropExtent::None;
-  }
-  if (!std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }) ||
-    !std::isfinite(reach))
-  {
-    return PropExtent::Unknown;
-  }
-  box.Extend(glm::dvec3(bounds[0], bounds[2], bounds[4]) - reach,
-    glm::dvec3(bounds[1], bounds[3], bounds[5]) + reach);
-  return PropExtent::Finite;
-}
-
-PropExtent ExtendByProp(penumbra::Box& box, vtkProp* prop)
-{
-  // Imposter spheres and sticks reach beyond the bounds VTK gives for them.
-  return ExtendByBounds(box, prop->GetBounds(), penumbra::ImposterReach(prop));
-}
-
-/// A world box around part of what a prop draws and, where it is the box of one dataset whose
-/// cells VTK draws as they are, that dataset and its matrix to world (for OccupiedBoxes).
-struct PropBox
-{
-  penumbra::Box World;
-  vtkDataSet* Data = nullptr;
-  glm::dmat4 DataToWorld{ 1.0 };
-};
-
-/// The dataset whose cells `mapper` draws, as they are: a polydata or dataset mapper's input.
-/// Null for mappers that draw something else at their input's points (glyphs, imposters).
-vtkDataSet* DrawnCells(vtkMapper* mapper)
-{
-  const bool cells = penumbra::IsExactly(mapper, "vtkOpenGLPolyDataMapper") ||
-    penumbra::IsExactly(mapper, "vtkDataSetMapper");
-  return cells ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-}
-
-/// More blocks than this give a composite prop one box: the range's cost grows with the boxes.
-constexpr std::size_t MaxBlockBoxes = 4096;
-
-/// Adds the boxes of what `part` (a prop, or an assembly's part) draws at `toWorld` (its
-/// matrix, or its path's): one per block of a composite mapper's data, up to MaxBlockBoxes
-/// (hidden blocks too: they only widen the range), else, or where a block's bounds are not
-/// finite, its bounds in world space as VTK gives them (`worldBounds`), grown by `reach`.
-PropExtent AddDrawnBoxes(vtkProp3D* part, const glm::dmat4& toWorld, const double* worldBounds,
-  double reach, std::vector<PropBox>& boxes)
-{
-  auto* actor = vtkActor::SafeDownCast(part);
-  vtkMapper* mapper = actor && reach == 0.0 ? penumbra::MapperDrawn(actor) : nullptr;
-  auto* tree = penumbra::IsExactly(mapper, "vtkCompositePolyDataMapper2")
-    ? vtkDataObjectTree::SafeDownCast(mapper->GetInputDataObject(0, 0))
-    : nullptr;
-  if (tree)
-  {
-    std::vector<PropBox> blocks;
-    bool finite = true;
-    for (vtkDataObject* leaf : vtk::Range(tree, penumbra::EveryLeaf()))
-    {
-      auto* data = vtkDataSet::SafeDownCast(leaf);
-      penumbra::Box box;
-      const PropExtent extent =
-        data ? ExtendByBounds(box, data->GetBounds(), 0.0) : PropExtent::None;
-      if (extent == PropExtent::Unknown)
-      {
-        finite = false; // perhaps a hidden block's: VTK's bounds of the visible ones decide
-        break;
-      }
-      if (extent == PropExtent::Finite)
-      {
-        blocks.push_back({ penumbra::TransformedBox(box, toWorld), data, toWorld });
-      }
-      if (blocks.size() > MaxBlockBoxes)
-      {
-        break;
-      }
-    }
-    if (finite && blocks.size() <= MaxBlockBoxes)
-    {
-      boxes.insert(boxes.end(), blocks.begin(), blocks.end());
-      return blocks.empty() ? PropExtent::None : PropExtent::Finite;
-    }
-  }
-  penumbra::Box box;
-  const PropExtent extent = ExtendByBounds(box, worldBounds, reach);
-  if (extent == PropExtent::Finite)
-  {
-    boxes.push_back({ box, mapper ? DrawnCells(mapper) : nullptr, toWorld });
-  }
-  return extent;
-}
-
-/// Adds the world boxes of what `prop` draws to `boxes`: an assembly's, those of each visible
-/// part (VTK's own bounds of the assembly would hold the space between its parts, and the eye
-/// when a part lies behind it); any other prop's, AddDrawnBoxes'. Unknown where a box is not
-/// finite.
-PropExtent AddPropBoxes(vtkProp* prop, std::vector<PropBox>& boxes)
-{
-  const double reach = penumbra::ImposterReach(prop);
-  auto* assembly = vtkAssembly::SafeDownCast(prop);
-  if (!assembly)
-  {
-    auto* prop3D = vtkProp3D::SafeDownCast(prop);
-    if (!prop3D)
-    {
-      penumbra::Box box;
-      const PropExtent extent = ExtendByProp(box, prop);
-      if (extent == PropExtent::Finite)
-      {
-        boxes.push_back({ box });
-      }
-      return extent;
-    }
-    return AddDrawnBoxes(
-      prop3D, penumbra::ToGlm(prop3D->GetMatrix()), prop3D->GetBounds(), reach, boxes);
-  }
-  vtkAssemblyPath* path;
-  for (assembly->InitPathTraversal(); (path = assembly->GetNextPath());)
-  {
-    vtkAssemblyNode* node = path->GetLastNode();
-    auto* part = vtkProp3D::SafeDownCast(node->GetViewProp());
-    if (!part || !part->GetVisibility())
-    {
-      continue;
-    }
-    // As vtkAssembly::GetBounds takes them: the part at the path's matrix.
-    part->PokeMatrix(node->GetMatrix());
-    const PropExtent extent =
-      AddDrawnBoxes(part, penumbra::ToGlm(node->GetMatrix()), part->GetBounds(), reach, boxes);
-    part->PokeMatrix(nullptr);
-    if (extent == PropExtent::Unknown)
-    {
-      return extent;
-    }
-  }
-  return PropExtent::Finite;
-}
-
-/// The distance from `point` to the nearest surface of a visible prop's box: to the box from
-/// outside it, to its nearest face from inside (a light inside a room is as far from the walls
-/// as from their box's faces). Props outside the shadows (a widget's handles round a light)
-/// are left out. Infinite when no prop has finite bounds.
-double NearestPropBoxSurface(vtkRenderer* renderer, const glm::dvec3& point)
-{
-  double nearest = std::numeric_limits<double>::infinity();
-  for (vtkProp* prop : penumbra::VisiblePropsInTheShadows(renderer))
-  {
-    penumbra::Box box;
-    if (ExtendByProp(box, prop) != PropExtent::Finite)
-    {
-      continue;
-    }
-    const glm::dvec3 outside = point - glm::clamp(point, box.Min, box.Max);
-    const glm::dvec3 inside = glm::min(point - box.Min, box.Max - point);
-    nearest = std::min(nearest,
-      glm::dot(outside, outside) > 0.0 ? glm::length(outside)
-                                       : std::min({ inside.x, inside.y, inside.z }));
-  }
-  return nearest;
-}
-} // namespace
-
-bool vtkSoftShadowPass::vtkInternals::OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
-  std::vector<penumbra::Box>& boxes, std::map<vtkDataSet*, Occupancy>& used)
-{
-  if (data->GetNumberOfCells() > 1000000)
-  {
-    return false;
-  }
-  // A dataset that another prop drew this frame has its grid in `used` already.
-  auto taken = used.try_emplace(data);
-  Occupancy& occupancy = taken.first->second;
-  if (taken.second)
-  {
-    auto kept = this->Occupancies.find(data);
-    if (kept != this->Occupancies.end() && kept->second.Time == data->GetMTime())
-    {
-      occupancy = std::move(kept->second);
-    }
-    else
-    {
-      penumbra::Box bounds;
-      if (ExtendByBounds(bounds, data->GetBounds(), 0.0) != PropExtent::Finite)
-      {
-        used.erase(taken.first);
-        return false;
-      }
-      penumbra::OccupancyGrid grid(bounds);
-      double cell[6];
-      for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
-      {
-        data->GetCellBounds(i, cell);
-        grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
-      }
-      occupancy = Occupancy{ data->GetMTime(), grid.Boxes() };
-    }
-  }
-  for (const penumbra::Box& box : occupancy.Boxes)
-  {
-    boxes.push_back(penumbra::TransformedBox(box, dataToWorld));
-  }
-  return true;
-}
-
-void vtkSoftShadowPass::vtkInternals::UpdateSceneBox(vtkRenderer* renderer)
-{
-  this->SceneBox = penumbra::Box();
-  this->PropBoxes.clear();
-  const glm::dvec3 eye = glm::make_vec3(renderer->GetActiveCamera()->GetPosition());
-  std::map<vtkDataSet*, Occupancy> used;
-  std::vector<PropBox> drawn;
-  for (vtkProp* prop : penumbra::VisiblePropsInTheShadows(renderer))
-  {
-    // Empty props add nothing in depth; one of unknown extent, no box at all.
-    drawn.clear();
-    if (AddPropBoxes(prop, drawn) == PropExtent::Unknown)
-    {
-      this->SceneBox = penumbra::Box();
-      this->PropBoxes.clear();
-      this->Occupancies = std::move(used);
-      return;
-    }
-    for (const PropBox& box : drawn)
-    {
-      this->SceneBox.Extend(box.World.Min, box.World.Max);
-      const bool holdsEye = glm::all(glm::greaterThanEqual(eye, box.World.Min)) &&
-        glm::all(glm::lessThanEqual(eye, box.World.Max));
-      if (!holdsEye || !box.Data ||
-        !this->OccupiedBoxes(box.Data, box.DataToWorld, this->PropBoxes, used))
-      {
-        this->PropBoxes.push_back(box.World);
-      }
-    }
-  }
-  this->Occupancies = std::move(used);
-}
-
-void vtkSoftShadowPass::vtkInternals::UpdateReceiverBox()
-{
-  penumbra::Box current;
-  std::vector<penumbra::Box> each(this->Receivers.size());
-  for (std::size_t r = 0; r < this->Receivers.size(); ++r)
-  {
-    if (ExtendByProp(each[r], this->Receivers[r]) != PropExtent::Finite)
-    {
-      this->ReceiverBounds = {}; // a receiver of unknown extent: nothing to cut to
-      return;
-    }
-    current.Extend(each[r].Min, each[r].Max);
-  }
-  penumbra::ReceiverBounds& bounds = this->ReceiverBounds;
-  bounds.Whole = penumbra::StableReceiverBox(bounds.Whole, current);
-  for (penumbra::Box& box : each)
-  {
-    box = penumbra::ReceiverPieceBox(bounds.Whole, box);
-  }
-  bounds.Pieces = penumbra::DisjointPieces(each);
-}
-
 bool vtkSoftShadowPass::DrawsForReceiver(vtkActor* actor) const
 {
   const vtkInternals& internals = *this->Internals;
@@ -1290,7 +987,7 @@ void vtkSoftShadowPass::UpdateCasters(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   internals.Caches.BeginFrame();
   internals.Casters.clear();
-  internals.UpdateReceiverBox();
+  internals.Bounds.UpdateReceivers(internals.Receivers);
   for (const penumbra::DrawnSurface& surface :
     internals.SceneWalk.Casters(s->GetRenderer(), internals.CulledInView, this))
   {
@@ -1393,7 +1090,7 @@ vtkIdType vtkSoftShadowPass::vtkInternals::UpdateLightCasters(const ShadowLight&
       continue; // translucent casters: UpdateTranslucentVolumes
     }
     updates += penumbra::ShadowVolumeRenderer::UpdateOpaque(light, *caster);
-    updates += light.Technique->UpdateCaster(light, *caster, this->ReceiverBounds);
+    updates += light.Technique->UpdateCaster(light, *caster, this->Bounds.Receivers());
   }
   return updates;
 }
@@ -1498,7 +1195,7 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;
-  frame.SceneBox = this->SceneBox;
+  frame.SceneBox = this->Bounds.Scene();
   frame.Volumes = &this->Volumes;
   return frame;
 }
@@ -1780,7 +1477,8 @@ void vtkSoftShadowPass::WarnOfLightsReachingTheScene(vtkRenderer* renderer)
     {
       continue;
     }
-    const double distance = NearestPropBoxSurface(renderer, glm::dvec3(light.World));
+    const double distance =
+      penumbra::SceneBounds::NearestPropSurface(renderer, glm::dvec3(light.World));
     if (distance < light.SoftRadius)
     {
       internals.WarnedLights.First(light.Light, "reaching");
