@@ -42,7 +42,7 @@ double WorstDistance(
     source->GetPoint(i, p);
     expected->GetPoint(offset + i, q);
     const glm::dvec3 moved(matrix * glm::dvec4(p[0], p[1], p[2], 1.0));
-    worst = std::max(worst, glm::length(moved - glm::dvec3(q[0], q[1], q[2])));
+    worst = penumbra_test::Worse(worst, glm::length(moved - glm::dvec3(q[0], q[1], q[2])));
   }
   return worst;
 }
@@ -131,7 +131,8 @@ void TestAgainstGlyph3D(std::mt19937& rng)
       const glm::dvec3 scale = penumbra::GlyphScale(settings, v, 3);
       glm::dmat4 matrix;
       allFinite &= penumbra::GlyphMatrix(settings, glm::make_vec3(position), v, scale, matrix);
-      worst = std::max(worst, WorstDistance(cone, matrix, expected, i * cone->GetNumberOfPoints()));
+      worst = penumbra_test::Worse(
+        worst, WorstDistance(cone, matrix, expected, i * cone->GetNumberOfPoints()));
     }
     std::printf("     direction, scale by %s: worst distance %.2e\n", mode.Name, worst);
     Check(allFinite, "finite directions give matrices");
@@ -145,6 +146,7 @@ void TestAgainstTransform(std::mt19937& rng)
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   vtkSmartPointer<vtkPolyData> cone = Cone();
   double worstRotation = 0.0, worstQuaternion = 0.0;
+  bool allFinite = true;
   for (int i = 0; i < 50; ++i)
   {
     const glm::dvec3 position(u(rng), u(rng), u(rng));
@@ -154,7 +156,7 @@ void TestAgainstTransform(std::mt19937& rng)
     const double angles[3] = { 180.0 * u(rng), 180.0 * u(rng), 180.0 * u(rng) };
     settings.OrientationMode = GlyphSettings::Rotation;
     glm::dmat4 matrix;
-    penumbra::GlyphMatrix(settings, position, angles, scale, matrix);
+    allFinite &= penumbra::GlyphMatrix(settings, position, angles, scale, matrix);
     vtkNew<vtkTransform> rotation;
     rotation->Translate(position.x, position.y, position.z);
     rotation->RotateZ(angles[2]);
@@ -163,12 +165,12 @@ void TestAgainstTransform(std::mt19937& rng)
     rotation->Scale(scale.x, scale.y, scale.z);
     vtkNew<vtkPoints> rotated;
     rotation->TransformPoints(cone->GetPoints(), rotated);
-    worstRotation = std::max(worstRotation, WorstDistance(cone, matrix, rotated));
+    worstRotation = penumbra_test::Worse(worstRotation, WorstDistance(cone, matrix, rotated));
 
     // A quaternion that is not of unit length: VTK normalizes it.
     const double q[4] = { u(rng), u(rng), u(rng), u(rng) };
     settings.OrientationMode = GlyphSettings::Quaternion;
-    penumbra::GlyphMatrix(settings, position, q, scale, matrix);
+    allFinite &= penumbra::GlyphMatrix(settings, position, q, scale, matrix);
     const double axis = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     vtkNew<vtkTransform> turn;
     turn->Translate(position.x, position.y, position.z);
@@ -177,10 +179,11 @@ void TestAgainstTransform(std::mt19937& rng)
     turn->Scale(scale.x, scale.y, scale.z);
     vtkNew<vtkPoints> turned;
     turn->TransformPoints(cone->GetPoints(), turned);
-    worstQuaternion = std::max(worstQuaternion, WorstDistance(cone, matrix, turned));
+    worstQuaternion = penumbra_test::Worse(worstQuaternion, WorstDistance(cone, matrix, turned));
   }
   std::printf(
     "     rotation angles: worst %.2e; quaternions: worst %.2e\n", worstRotation, worstQuaternion);
+  Check(allFinite, "finite angles and quaternions give matrices");
   Check(worstRotation < 1e-6, "rotation angles as vtkTransform's RotateZ, RotateX, RotateY");
   Check(worstQuaternion < 1e-6, "quaternions as vtkTransform's RotateWXYZ");
 }

@@ -125,7 +125,7 @@ void CheckCapFormula()
     }
     const double monteCarlo = static_cast<double>(inside) / n;
     const double closed = CapIntersectionSolidAngle(a1, a2, theta) / CapSolidAngle(a1);
-    worst = std::max(worst, std::abs(monteCarlo - closed));
+    worst = penumbra_test::Worse(worst, std::abs(monteCarlo - closed));
     std::printf("    a1 %.2f a2 %.2f theta %.2f: closed %.5f, Monte Carlo %.5f\n", a1, a2, theta,
       closed, monteCarlo);
   }
@@ -504,7 +504,7 @@ HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
         continue;
       }
       double& worst = analytic.Class[p] == SphereClass ? sphereZ : groundZ;
-      worst = std::max(worst, static_cast<double>(std::abs(depth[p] - zbuffer[p])));
+      worst = penumbra_test::Worse(worst, static_cast<double>(std::abs(depth[p] - zbuffer[p])));
     }
   }
   std::printf("    depth vs rasterized z-buffer away from edges: ground max %.3g, sphere max "

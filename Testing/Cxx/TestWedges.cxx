@@ -119,7 +119,7 @@ void CompareWithMonteCarlo(const std::string& name, const CasterTopology& topo,
       }
       const double error = std::abs(wedge - reference);
       sum += error;
-      worst = std::max(worst, error);
+      worst = penumbra_test::Worse(worst, error);
       ++count;
     }
   }
@@ -178,7 +178,7 @@ void TestContinuityAndMonotonicity()
     const glm::dvec3 p(2.0 - 2.0 * i / 2000.0, -1.0, 0.1);
     const double v = WedgeVisibility(slab, volume, centre, radius, p);
     monotone = monotone && v <= previous + 1e-12;
-    largestStep = std::max(largestStep, std::abs(v - previous));
+    largestStep = penumbra_test::Worse(largestStep, std::abs(v - previous));
     previous = v;
   }
   std::printf("     largest step over 1 mm: %.5f, ends at %.3f\n", largestStep, previous);
@@ -199,7 +199,7 @@ void TestContinuityAndMonotonicity()
   {
     const glm::dvec3 p(coordinate(rng), -1.2, coordinate(rng));
     const glm::dvec3 q = p + glm::dvec3(tiny(rng), 0.0, tiny(rng));
-    worstJump = std::max(worstJump,
+    worstJump = penumbra_test::Worse(worstJump,
       std::abs(WedgeVisibility(corner, cornerVolume, light, 0.8, p) -
         WedgeVisibility(corner, cornerVolume, light, 0.8, q)));
   }

@@ -2,6 +2,7 @@
 #ifndef penumbraCheck_h
 #define penumbraCheck_h
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -24,6 +25,13 @@ inline void Check(bool condition, const std::string& what)
   {
     ++Failures();
   }
+}
+
+/// The larger of `worst` and `value`, NaN once either is: std::max drops a NaN in its second
+/// argument, and a NaN result would then pass the check on the worst.
+inline double Worse(double worst, double value)
+{
+  return std::isnan(value) || value > worst ? value : worst;
 }
 
 /// Prints the verdict and returns the process's exit code.

@@ -339,8 +339,8 @@ int TestTemporal()
         meanTruth += dt;
         ++compared;
       }
-      worstFilter = std::max(worstFilter, stepFilter);
-      worstTruth = std::max(worstTruth, stepTruth);
+      worstFilter = penumbra_test::Worse(worstFilter, stepFilter);
+      worstTruth = penumbra_test::Worse(worstTruth, stepTruth);
     }
     previousFilter = current;
     previousTruth = truth;
