@@ -1418,6 +1418,16 @@ void CollectProp(vtkProp* prop, bool casts, std::vector<Mesh>& meshes)
   }
 }
 
+/// Whether `light` shadows: it shines (switched on, with intensity) from somewhere else than the
+/// eye (a headlight's shadows lie behind what it lights) and VTK's shadow attenuation lets it
+/// darken. The twin of vtkSoftShadowPass::LightCastsShadows, kept apart so that the truth
+/// shares no decision with the pass.
+bool ShadowsInTheTruth(vtkLight* light)
+{
+  return light->GetSwitch() && light->GetLightType() != VTK_LIGHT_TYPE_HEADLIGHT &&
+    light->GetIntensity() > 0.0 && light->GetShadowAttenuation() > 0.0;
+}
+
 } // namespace
 
 void vtkRayTracedVisibility::vtkInternals::CollectMeshes(vtkRenderer* renderer)
@@ -1532,7 +1542,7 @@ std::vector<ShadowLight> vtkRayTracedVisibility::vtkInternals::CollectLights(
        light = lightCollection->GetNextLight(lightIt), ++lightIndex)
   {
     this->Visibility.emplace_back();
-    if (!vtkSoftShadowPass::LightCastsShadows(light))
+    if (!ShadowsInTheTruth(light))
     {
       continue;
     }

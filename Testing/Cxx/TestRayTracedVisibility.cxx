@@ -366,7 +366,8 @@ struct HardResult
 
 HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
 {
-  // Light 0 a headlight and light 2 switched off: neither gets an image.
+  // Light 0 a headlight, light 2 switched off, light 3 without intensity and light 4 with a
+  // shadow attenuation of 0: none gets an image.
   scene.Renderer->RemoveAllLights();
   vtkNew<vtkLight> headlight;
   headlight->SetLightTypeToHeadlight();
@@ -374,9 +375,15 @@ HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
   point->SetFocalPoint(scene.Offset.x, scene.Offset.y, scene.Offset.z);
   auto off = NewLight(PointLightPosition + scene.Offset, true, 0.0);
   off->SwitchOff();
+  auto dark = NewLight(PointLightPosition + scene.Offset, true, 0.0);
+  dark->SetIntensity(0.0);
+  auto unshadowing = NewLight(PointLightPosition + scene.Offset, true, 0.0);
+  unshadowing->SetShadowAttenuation(0.0);
   scene.Renderer->AddLight(headlight);
   scene.Renderer->AddLight(point);
   scene.Renderer->AddLight(off);
+  scene.Renderer->AddLight(dark);
+  scene.Renderer->AddLight(unshadowing);
   scene.Render();
 
   vtkNew<vtkRayTracedVisibility> tracer;
@@ -394,7 +401,10 @@ HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
     Check(updated, "Update() succeeds");
     Check(tracer->GetVisibilityImage(0) == nullptr, "headlight (light 0) has no image");
     Check(tracer->GetVisibilityImage(2) == nullptr, "switched-off light (light 2) has no image");
-    Check(tracer->GetVisibilityImage(3) == nullptr, "index past the lights has no image");
+    Check(tracer->GetVisibilityImage(3) == nullptr, "light of intensity 0 (light 3) has no image");
+    Check(tracer->GetVisibilityImage(4) == nullptr,
+      "light of shadow attenuation 0 (light 4) has no image");
+    Check(tracer->GetVisibilityImage(5) == nullptr, "index past the lights has no image");
     Check(tracer->GetNumberOfShadowingLights() == 1, "one shadowing light");
     std::printf("    triangles %lld (casters %lld)\n",
       static_cast<long long>(tracer->GetNumberOfTriangles()),

@@ -328,6 +328,11 @@ int main(int argc, char* argv[])
   std::vector<fs::path> files;
   for (const fs::path& p : inputs)
   {
+    if (!fs::exists(p))
+    {
+      std::fprintf(stderr, "no corpus at %s\n", p.string().c_str());
+      return 2;
+    }
     if (fs::is_directory(p))
     {
       for (const auto& entry : fs::directory_iterator(p))
@@ -344,6 +349,11 @@ int main(int argc, char* argv[])
     }
   }
   std::sort(files.begin(), files.end()); // directory order is not reproducible
+  if (!inputs.empty() && files.empty())
+  {
+    std::fprintf(stderr, "the corpus given holds no file\n");
+    return 2;
+  }
 
   std::vector<Bytes> corpus;
   for (const fs::path& f : files)

@@ -71,6 +71,9 @@ using penumbra_test::WindowDepth;
 constexpr double DefaultMAE[METHOD_COUNT] = { 0.05, 0.04, 0.04, 0.04, 0.04, 0.04 };
 constexpr double TemporalLimit = 0.005; ///< share of pixels popping in the worst step
 constexpr double ReferenceLimit = 0.01; ///< share of pixels off by > 0.1 from the reference
+/// Fewer compared pixels than this (either side shadowing) is no evidence of agreement: every
+/// case has at least 262 (light_in_face_plane, hard).
+constexpr std::size_t MinComparedPixels = 100;
 constexpr double ImageThreshold = 10.0; ///< vtkTesting's usual image-difference threshold
 /// vtkImageDifference averages and forgives shifted pixels: a baseline up to 140 levels off on
 /// 7% of a panel's pixels passed it (2.6 against its limit of 10). Besides it, at most this share
@@ -560,12 +563,12 @@ CaseResult RunCase(const HardCase& c, const Options& options, std::map<std::stri
         Accumulate(row, judged, mask, visibility[r], m == HARD ? truthView.Hard : truthView.Soft);
         if (reference)
         {
-          row.Reference = std::max(
+          row.Reference = penumbra_test::Worse(
             row.Reference, ReferenceShare(mask, visibility[r], reference->Visibility[m][r]));
         }
         if (c.Temporal && frame > 0)
         {
-          row.WorstStep = std::max(row.WorstStep,
+          row.WorstStep = penumbra_test::Worse(row.WorstStep,
             PoppingShare(views[r], CompareMask(views[r]), visibility[r], previous[m][r],
               m == HARD ? views[r].Hard : views[r].Soft,
               m == HARD ? previousViews[r].Hard : previousViews[r].Soft));
@@ -727,9 +730,21 @@ bool Judge(const HardCase& c, int method, const Row& row, std::string& verdict)
   {
     failures.push_back("popping above " + std::to_string(poppingLimit));
   }
-  if ((!c.Reference.empty() || c.LargeImageTiles) && row.Reference > ReferenceLimit)
+  if (row.Pixels < MinComparedPixels)
+  {
+    failures.push_back("no shadow in view (" + std::to_string(row.Pixels) + " px compared)");
+  }
+  if ((!c.Reference.empty() || c.LargeImageTiles) && !(row.Reference >= 0.0))
+  {
+    failures.push_back("not compared with its reference");
+  }
+  else if ((!c.Reference.empty() || c.LargeImageTiles) && row.Reference > ReferenceLimit)
   {
     failures.push_back("differs from its reference");
+  }
+  if (c.Temporal && !(row.WorstStep >= 0.0))
+  {
+    failures.push_back("no step between frames compared");
   }
   std::ostringstream text;
   for (const std::string& f : failures)
