@@ -112,14 +112,18 @@ def same_surface(window, truth):
     return (depth < 1) & (np.abs(depth - zbuffer) < 1e-3)
 
 
-def compare_hard_shadows(window, ours, truth):
+def compare_hard_shadows(window, ours, truth, left_out=None):
     """(compared, shadowed, wrong) pixels of the visibility `ours` against an updated
-    vtkRayTracedVisibility: compared on the same surface, inside a one-pixel border; wrong where
-    no truth pixel of the 3x3 neighbourhood is within 0.5."""
+    vtkRayTracedVisibility: compared on the same surface, inside a one-pixel border, except where
+    the boolean image `left_out` is set; wrong where no truth pixel of the 3x3 neighbourhood is
+    within 0.5."""
     width, height = window.GetSize()
     true = image(truth.GetVisibilityImage(0), width, height)
     inner = (slice(1, -1), slice(1, -1))
-    compared = same_surface(window, truth)[inner]
+    compared = same_surface(window, truth)
+    if left_out is not None:
+        compared = compared & ~left_out
+    compared = compared[inner]
     neighbourhood = [np.roll(np.roll(true, dy, 0), dx, 1) for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
     explained = np.any([np.abs(n - ours) <= 0.5 for n in neighbourhood], axis=0)[inner]
     shadowed = (compared & (true[inner] < 0.5)).sum()
