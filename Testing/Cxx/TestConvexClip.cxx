@@ -1,4 +1,4 @@
-// Unit tests of penumbra::ClipBox (penumbraConvexClip.h), without a window.
+// Unit tests of penumbra::ClipBox and the boxes of penumbraConvexClip.h, without a window.
 //
 // Random boxes cut by random half-spaces must give closed, outward, convex meshes whose points
 // satisfy every half-space and whose volume matches a Monte Carlo estimate of the intersection;
@@ -266,6 +266,58 @@ void TestDisjointPieces(std::mt19937& rng)
   Check(!ReceiverPieceBox(Box{}, ground).Valid, "no receivers' box: no piece");
 }
 
+/// TransformedBox against Arvo's closed form for an affine matrix (the centre moved, the half
+/// size through the absolute linear part), for random rotations, scales (mirrors among them)
+/// and translations; random points of the box must land inside the result.
+void TestTransformedBox(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  double worstFace = 0.0;
+  int outside = 0;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    Box box;
+    const glm::dvec3 corner(5.0 * u(rng), 5.0 * u(rng), 5.0 * u(rng));
+    box.Extend(corner, corner + glm::dvec3(unit(rng), unit(rng), trial % 10 ? unit(rng) : 0.0));
+    glm::dmat4 matrix(1.0);
+    for (int column = 0; column < 4; ++column)
+    {
+      for (int row = 0; row < 3; ++row)
+      {
+        matrix[column][row] = 3.0 * u(rng);
+      }
+    }
+    const Box moved = TransformedBox(box, matrix);
+    const glm::dvec3 centre(matrix * glm::dvec4(0.5 * (box.Min + box.Max), 1.0));
+    const glm::dvec3 half = 0.5 * (box.Max - box.Min);
+    glm::dvec3 reach(0.0);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        reach[axis] += std::abs(matrix[k][axis]) * half[k];
+      }
+    }
+    const glm::dvec3 faceError =
+      glm::max(glm::abs(moved.Min - (centre - reach)), glm::abs(moved.Max - (centre + reach)));
+    worstFace =
+      penumbra_test::Worse(worstFace, std::max({ faceError.x, faceError.y, faceError.z }));
+    for (int k = 0; k < 20; ++k)
+    {
+      const glm::dvec3 t(unit(rng), unit(rng), unit(rng));
+      const glm::dvec3 p(matrix * glm::dvec4(box.Min + t * (box.Max - box.Min), 1.0));
+      outside += glm::any(glm::lessThan(p, moved.Min - 1e-9)) ||
+        glm::any(glm::greaterThan(p, moved.Max + 1e-9));
+    }
+  }
+  std::printf("     transformed boxes: faces off the closed form by %.2e at most, %d points "
+              "outside\n",
+    worstFace, outside);
+  Check(worstFace < 1e-9, "a transformed box is the tight box of the moved box (Arvo)");
+  Check(outside == 0, "points of a box land inside its transformed box");
+  Check(!TransformedBox(Box{}, glm::dmat4(1.0)).Valid, "an invalid box stays invalid");
+}
+
 } // namespace
 
 int main()
@@ -275,5 +327,6 @@ int main()
   TestStableReceiverBox();
   TestRandomCuts(rng);
   TestDisjointPieces(rng);
+  TestTransformedBox(rng);
   return penumbra_test::Finish();
 }
