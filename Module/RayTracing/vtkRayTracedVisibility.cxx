@@ -26,10 +26,12 @@
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDataSetMapper.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkExecutive.h"
 #include "vtkGlyph3D.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationExecutivePortVectorKey.h"
 #include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
 #include "vtkLight.h"
@@ -55,7 +57,10 @@
 #include "vtkPolygon.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkQuadricClustering.h"
+#include "vtkQuadricLODActor.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSkybox.h"
@@ -1237,8 +1242,48 @@ bool ShiftedOutOfSight(vtkMapper* mapper)
 /// (VTK 9.1): its mapper when its last draw time fits the time the renderer allotted the
 /// actor; else, over its levels in order and until one never drawn (time 0) is met, a faster
 /// one while none fits and a slower one that still fits.
+/// The mapper of a vtkQuadricLODActor's decimated level, where its Render drew that level:
+/// an interactive frame, the actor's allotted time (as a float) at most 1.1 over the interactor's
+/// desired update rate held to 1..75. The level's mapper is the one its LOD filter's output
+/// feeds. Null where the full mapper was drawn.
+vtkMapper* QuadricLevel(vtkQuadricLODActor* actor)
+{
+  vtkRenderWindowInteractor* interactor = nullptr;
+  for (int i = 0; i < actor->GetNumberOfConsumers() && !interactor; ++i)
+  {
+    if (auto* renderer = vtkRenderer::SafeDownCast(actor->GetConsumer(i)))
+    {
+      interactor =
+        renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetInteractor() : nullptr;
+    }
+  }
+  vtkAlgorithm* filter = actor->GetLODFilter();
+  if (!interactor || !filter ||
+    static_cast<float>(actor->GetAllocatedRenderTime()) >
+      1.1 / vtkMath::ClampValue(interactor->GetDesiredUpdateRate(), 1.0, 75.0))
+  {
+    return nullptr;
+  }
+  vtkInformation* info = filter->GetOutputInformation(0);
+  const int count = vtkExecutive::CONSUMERS()->Length(info);
+  vtkExecutive** executives = vtkExecutive::CONSUMERS()->GetExecutives(info);
+  for (int i = 0; i < count; ++i)
+  {
+    if (auto* mapper = vtkMapper::SafeDownCast(executives[i]->GetAlgorithm()))
+    {
+      return mapper;
+    }
+  }
+  return nullptr;
+}
+
 vtkMapper* LastDrawnMapper(vtkActor* actor)
 {
+  if (auto* quadric = vtkQuadricLODActor::SafeDownCast(actor))
+  {
+    vtkMapper* level = actor->GetMapper() ? QuadricLevel(quadric) : nullptr;
+    return level ? level : actor->GetMapper();
+  }
   auto lod = vtkLODActor::SafeDownCast(actor);
   vtkMapper* best = actor->GetMapper();
   const double allotted = lod ? lod->GetAllocatedRenderTime() : 0.0;

@@ -24,10 +24,13 @@
 #include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetMapper.h"
+#include "vtkExecutive.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
+#include "vtkInformation.h"
+#include "vtkInformationExecutivePortVectorKey.h"
 #include "vtkLODActor.h"
 #include "vtkLODProp3D.h"
 #include "vtkLightActor.h"
@@ -49,7 +52,11 @@
 #include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkQuadricClustering.h"
+#include "vtkQuadricLODActor.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProperty.h"
@@ -500,9 +507,53 @@ bool DrawsPointsOrOutline(vtkLODActor* levels, vtkMapper* mapper)
 }
 } // namespace
 
+namespace
+{
+/// The mapper a vtkQuadricLODActor draws its decimated level with where its Render counts the
+/// frame as interactive (the time the renderer allotted it at most 1.1 over its window's
+/// interactor's desired update rate, clamped to 1 to 75), found as the mapper its LOD filter
+/// feeds. Null otherwise, and before the actor has built that level.
+vtkMapper* QuadricLevelDrawn(vtkQuadricLODActor* actor)
+{
+  vtkRenderWindowInteractor* interactor = nullptr;
+  for (int i = 0; !interactor && i < actor->GetNumberOfConsumers(); ++i)
+  {
+    auto* renderer = vtkRenderer::SafeDownCast(actor->GetConsumer(i));
+    vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
+    interactor = window ? window->GetInteractor() : nullptr;
+  }
+  if (!interactor || !actor->GetLODFilter())
+  {
+    return nullptr;
+  }
+  // As VTK compares them: the allotted time as a float.
+  const double rate = std::min(std::max(interactor->GetDesiredUpdateRate(), 1.0), 75.0);
+  const float allotted = static_cast<float>(actor->GetAllocatedRenderTime());
+  if (allotted > 1.1 / rate)
+  {
+    return nullptr;
+  }
+  vtkInformation* output = actor->GetLODFilter()->GetOutputInformation(0);
+  vtkInformationExecutivePortVectorKey* consumers = vtkExecutive::CONSUMERS();
+  for (int i = 0; i < consumers->Length(output); ++i)
+  {
+    if (auto* level = vtkMapper::SafeDownCast(consumers->GetExecutives(output)[i]->GetAlgorithm()))
+    {
+      return level;
+    }
+  }
+  return nullptr;
+}
+} // namespace
+
 vtkMapper* MapperDrawn(vtkActor* actor)
 {
   vtkMapper* drawn = actor->GetMapper();
+  if (auto* quadric = vtkQuadricLODActor::SafeDownCast(actor))
+  {
+    vtkMapper* level = drawn ? QuadricLevelDrawn(quadric) : nullptr;
+    return level ? level : drawn;
+  }
   auto levels = vtkLODActor::SafeDownCast(actor);
   if (!levels || !drawn)
   {

@@ -81,8 +81,10 @@ std::vector<vtkProp*> PropsDrawnFor(vtkProp* prop);
 
 /// The mapper VTK draws `actor` with this frame: its own, but for a vtkLODActor the level
 /// vtkLODActor::Render picks from the time the renderer allotted it and its mappers' last draw
-/// times (a level never drawn, of time 0, is tried first). The renderer allots the times
-/// before the pass runs, and mappers time themselves when VTK draws them.
+/// times (a level never drawn, of time 0, is tried first), and for a vtkQuadricLODActor in an
+/// interactive frame the mapper of its decimated level (once the actor has built it in a
+/// draw). The renderer allots the times before the pass runs, and mappers time
+/// themselves when VTK draws them.
 vtkMapper* MapperDrawn(vtkActor* actor);
 
 /// What to visit of composite data for its datasets: every leaf at any depth, none empty

@@ -61,7 +61,10 @@
 #include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkQuadricClustering.h"
+#include "vtkQuadricLODActor.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkShaderProperty.h"
 #include "vtkSkybox.h"
 #include "vtkSmartVolumeMapper.h"
@@ -119,7 +122,6 @@ vtkSmartPointer<vtkActor> Ground(vtkRenderer* renderer)
   return ground;
 }
 
-/// Renders `kind` and `plain` alike and checks that they agree, and `kind` with the truth.
 /// Light 0's hard visibility (one ray a pixel) as the ray tracer sees the view's scene; empty
 /// when it could not trace.
 std::vector<float> TruthOf(View& view)
@@ -130,6 +132,7 @@ std::vector<float> TruthOf(View& view)
   return truth->Update() ? ImageValues(truth->GetVisibilityImage(0)) : std::vector<float>();
 }
 
+/// Renders `kind` and `plain` alike and checks that they agree, and `kind` with the truth.
 void CompareScenes(const std::string& name, const std::function<void(vtkRenderer*)>& kind,
   const std::function<void(vtkRenderer*)>& plain, double visibilityTolerance = 0.002,
   double colourTolerance = 0.005)
@@ -1196,6 +1199,97 @@ void TestLODActorLevels()
       " in all)");
 }
 
+/// A sphere of radius 0.6 at (0, 0.9, 0) with bumps whose self-shadows a decimated level
+/// does not have; no normals, so that both levels are shaded by their facets.
+vtkSmartPointer<vtkPolyData> BumpySphere()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.6);
+  sphere->SetThetaResolution(120);
+  sphere->SetPhiResolution(80);
+  sphere->Update();
+  auto bumpy = vtkSmartPointer<vtkPolyData>::New();
+  bumpy->DeepCopy(sphere->GetOutput());
+  bumpy->GetPointData()->SetNormals(nullptr);
+  vtkPoints* points = bumpy->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const glm::dvec3 n = glm::normalize(glm::dvec3(p[0], p[1], p[2]));
+    const double wave = std::sin(9.0 * std::atan2(n.z, n.x)) * std::sin(7.0 * std::acos(n.y));
+    const glm::dvec3 moved = glm::dvec3(0.0, 0.9, 0.0) + n * (0.6 + 0.08 * wave * wave);
+    points->SetPoint(i, moved.x, moved.y, moved.z);
+  }
+  return bumpy;
+}
+
+void TestQuadricLODActorLevel()
+{
+  // A vtkQuadricLODActor draws a decimated level, built in its Render, in frames its
+  // interactor's desired update rate makes interactive: it casts that level then, and its full
+  // mesh in still frames.
+  vtkSmartPointer<vtkPolyData> bumpy = BumpySphere();
+  auto box = BoxSource(1.2, 0.6, 0.3, 0.7, 1.2, 0.7);
+  View levels;
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(levels.Window);
+  interactor->SetDesiredUpdateRate(100.0);
+  const WarningLog warnings(levels.Pass);
+  Ground(levels.Renderer);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(bumpy);
+  vtkNew<vtkQuadricLODActor> quadric;
+  quadric->SetMapper(mapper);
+  quadric->GetProperty()->SetColor(1, 1, 1);
+  levels.Renderer->AddActor(quadric);
+  levels.Renderer->AddActor(MakeActor(box, 1, 1, 1));
+  levels.Window->SetDesiredUpdateRate(0.0001);
+  levels.Render();
+  const std::vector<float> still = levels.Visibility();
+  levels.Window->SetDesiredUpdateRate(100.0);
+  levels.Render();
+  const std::vector<float> interactive = levels.Visibility();
+  const std::vector<float> interactiveTruth = TruthOf(levels);
+
+  auto coarse = vtkSmartPointer<vtkPolyData>::New();
+  coarse->DeepCopy(quadric->GetLODFilter()->GetOutput());
+  std::vector<float> plain[2], plainTruth;
+  for (vtkPolyData* data : { bumpy.GetPointer(), coarse.GetPointer() })
+  {
+    View view;
+    Ground(view.Renderer);
+    vtkNew<vtkPolyDataMapper> plainMapper;
+    plainMapper->SetInputData(data);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(plainMapper);
+    view.Renderer->AddActor(actor);
+    view.Renderer->AddActor(MakeActor(box, 1, 1, 1));
+    view.Render();
+    plain[data == coarse ? 1 : 0] = view.Visibility();
+    if (data == coarse)
+    {
+      plainTruth = TruthOf(view);
+    }
+  }
+  const int levelsApart = PixelsApart(plain[0], plain[1]);
+  const int stillOff = PixelsApart(still, plain[0]);
+  const int interactiveOff = PixelsApart(interactive, plain[1]);
+  std::printf("vtkQuadricLODActor (%lld of %lld cells): the levels' shadows %d px apart; still "
+              "frame %d px off the full mesh's, interactive %d off the level's\n",
+    static_cast<long long>(coarse->GetNumberOfCells()),
+    static_cast<long long>(bumpy->GetNumberOfCells()), levelsApart, stillOff, interactiveOff);
+  const double pixels = double(Width) * Height;
+  Check(coarse->GetNumberOfCells() > 0 && levelsApart > 0.002 * pixels,
+    "vtkQuadricLODActor: its level shadows otherwise than its full mesh");
+  Check(stillOff <= 0.0005 * pixels, "vtkQuadricLODActor: a still frame casts the full mesh");
+  Check(interactiveOff <= 0.0005 * pixels,
+    "vtkQuadricLODActor: an interactive frame casts the decimated level VTK draws");
+  Check(!interactiveTruth.empty() && PixelsApart(interactiveTruth, plainTruth) <= 0.0005 * pixels,
+    "vtkQuadricLODActor: the truth traces the level VTK draws");
+  Check(warnings.Messages.empty(), "vtkQuadricLODActor: no warning");
+}
+
 void TestLODProp3D()
 {
   // A vtkLODProp3D with a fine and a coarse level, moved by its own matrix: it casts from the
@@ -1808,6 +1902,7 @@ int main()
   TestUnlitPartsWarn();
   TestLODActor();
   TestLODActorLevels();
+  TestQuadricLODActorLevel();
   TestDataSetInput();
   TestLODProp3D();
   TestSkybox();
