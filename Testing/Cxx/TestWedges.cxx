@@ -357,6 +357,88 @@ void TestWedgeBound()
     "an edge reaching into the light (no wedge, no pyramid): the full-viewport triangle");
 }
 
+void TestWedgeBoundInPieces()
+{
+  // Cut to disjoint pieces (a slab round a ground, a box round a block on it), the bound is one
+  // polyhedron per piece it meets; each point an edge shades inside a piece lies inside that
+  // piece's polyhedron, whose vertices carry the piece's corners after the edge's attributes.
+  std::mt19937 rng(5);
+  Box ground, block;
+  ground.Extend({ -3.0, -3.2, -3.0 }, { 3.0, -3.0, 3.0 });
+  block.Extend({ -1.0, -3.0, -1.0 }, { 1.0, -1.5, 1.0 });
+  Box receivers;
+  receivers.Extend(ground.Min, ground.Max);
+  receivers.Extend(block.Min, block.Max);
+  const std::vector<Box> pieces =
+    DisjointPieces({ ReceiverPieceBox(receivers, ground), ReceiverPieceBox(receivers, block) });
+  const float attributes[2] = { 7.0f, -2.0f };
+  constexpr int Stride = 4 + 2 + 6;
+  int checked = 0, outside = 0, badVertices = 0, cut = 0;
+  ForEachBallEdge(
+    [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light, double radius)
+    {
+      std::vector<float> vertices;
+      std::vector<std::uint32_t> indices;
+      if (AppendWedgeBoundInPieces(a, b, light, radius, receivers, pieces, nullptr, false,
+            attributes, 2, vertices, indices) == WedgeShape::Nothing)
+      {
+        return;
+      }
+      ++cut;
+      // Each piece's triangles, by the corners their first vertex carries.
+      std::vector<std::vector<std::uint32_t>> byPiece(pieces.size());
+      for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+      {
+        const float* v = &vertices[static_cast<std::size_t>(indices[t]) * Stride];
+        const glm::dvec3 min(v[6], v[7], v[8]), max(v[9], v[10], v[11]);
+        std::size_t piece = 0;
+        while (piece < pieces.size() &&
+          !(glm::all(glm::lessThan(glm::abs(min - pieces[piece].Min), glm::dvec3(1e-5))) &&
+            glm::all(glm::lessThan(glm::abs(max - pieces[piece].Max), glm::dvec3(1e-5)))))
+        {
+          ++piece;
+        }
+        badVertices += piece == pieces.size() || v[3] != 1.0f || v[4] != 7.0f || v[5] != -2.0f;
+        if (piece < pieces.size())
+        {
+          byPiece[piece].insert(byPiece[piece].end(), &indices[t], &indices[t] + 3);
+        }
+      }
+      // The pieces are thin: five batches of random points for enough inside them.
+      for (int batch = 0; batch < 5; ++batch)
+      {
+        ForEachSupportPoint(rng, a, b, light, radius,
+          [&](const glm::dvec3& p)
+          {
+            for (std::size_t piece = 0; piece < pieces.size(); ++piece)
+            {
+              if (glm::all(glm::greaterThanEqual(p, pieces[piece].Min)) &&
+                glm::all(glm::lessThan(p, pieces[piece].Max)))
+              {
+                ++checked;
+                outside += InsideBound(p, vertices, Stride, byPiece[piece], 1e-5) ? 0 : 1;
+              }
+            }
+          });
+      }
+    });
+  std::printf("     %zu pieces; %d edges' bounds cut to them, %d points with a correction in a "
+              "piece, %d outside its polyhedron\n",
+    pieces.size(), cut, checked, outside);
+  Check(pieces.size() >= 2 && cut > 20 && checked > 100 && outside == 0,
+    "each piece's bound holds every point in it the edge shades");
+  Check(badVertices == 0, "every vertex carries w = 1, the edge's attributes and its piece");
+
+  std::vector<float> vertices;
+  std::vector<std::uint32_t> indices;
+  Box far;
+  far.Extend({ 50.0, 50.0, 50.0 }, { 51.0, 51.0, 51.0 });
+  Check(AppendWedgeBoundInPieces({ -1, 0, 0 }, { 1, 0, 0 }, { 0, 5, 0, 1 }, 0.2, receivers, { far },
+          nullptr, false, nullptr, 0, vertices, indices) == WedgeShape::Nothing &&
+      indices.empty(),
+    "pieces the wedge misses: nothing drawn");
+}
+
 void TestDegenerateEdges()
 {
   const glm::dvec4 light(0, 2, 0, 1), sun(0, 1, 0, 0);
@@ -558,6 +640,7 @@ int main()
   TestContinuityAndMonotonicity();
   TestWedgeContainsItsSupport();
   TestWedgeBound();
+  TestWedgeBoundInPieces();
   TestDegenerateEdges();
   TestLightSamples();
   TestLightPyramid();
