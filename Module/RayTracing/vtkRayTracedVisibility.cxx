@@ -1238,25 +1238,33 @@ bool ShiftedOutOfSight(vtkMapper* mapper)
   }
 }
 
-/// The mapper VTK drew `actor` with last: a vtkLODActor's level as vtkLODActor::Render picks it
-/// (VTK 9.1): its mapper when its last draw time fits the time the renderer allotted the
-/// actor; else, over its levels in order and until one never drawn (time 0) is met, a faster
-/// one while none fits and a slower one that still fits.
+/// The interactor of a window that draws `prop`, found through the renderers and assemblies
+/// that hold it (no deeper than `levels`).
+vtkRenderWindowInteractor* WindowInteractor(vtkProp* prop, int levels = 16)
+{
+  vtkRenderWindowInteractor* found = nullptr;
+  for (int i = 0; i < prop->GetNumberOfConsumers() && !found && levels > 0; ++i)
+  {
+    vtkObject* holder = prop->GetConsumer(i);
+    if (auto* renderer = vtkRenderer::SafeDownCast(holder))
+    {
+      found = renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetInteractor() : nullptr;
+    }
+    else if (auto* whole = vtkProp::SafeDownCast(holder))
+    {
+      found = WindowInteractor(whole, levels - 1);
+    }
+  }
+  return found;
+}
+
 /// The mapper of a vtkQuadricLODActor's decimated level, where its Render drew that level:
 /// an interactive frame, the actor's allotted time (as a float) at most 1.1 over the interactor's
 /// desired update rate held to 1..75. The level's mapper is the one its LOD filter's output
 /// feeds. Null where the full mapper was drawn.
 vtkMapper* QuadricLevel(vtkQuadricLODActor* actor)
 {
-  vtkRenderWindowInteractor* interactor = nullptr;
-  for (int i = 0; i < actor->GetNumberOfConsumers() && !interactor; ++i)
-  {
-    if (auto* renderer = vtkRenderer::SafeDownCast(actor->GetConsumer(i)))
-    {
-      interactor =
-        renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetInteractor() : nullptr;
-    }
-  }
+  vtkRenderWindowInteractor* interactor = WindowInteractor(actor);
   vtkAlgorithm* filter = actor->GetLODFilter();
   if (!interactor || !filter ||
     static_cast<float>(actor->GetAllocatedRenderTime()) >
@@ -1277,6 +1285,11 @@ vtkMapper* QuadricLevel(vtkQuadricLODActor* actor)
   return nullptr;
 }
 
+/// The mapper VTK drew `actor` with last: a vtkQuadricLODActor's decimated level where it drew
+/// that (QuadricLevel); a vtkLODActor's level as vtkLODActor::Render picks it (VTK 9.1): its
+/// mapper when its last draw time fits the time the renderer allotted the actor; else, over its
+/// levels in order and until one never drawn (time 0) is met, a faster one while none fits and
+/// a slower one that still fits.
 vtkMapper* LastDrawnMapper(vtkActor* actor)
 {
   if (auto* quadric = vtkQuadricLODActor::SafeDownCast(actor))

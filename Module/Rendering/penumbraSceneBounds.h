@@ -32,6 +32,8 @@ class vtkRenderer;
 namespace penumbra
 {
 
+/// The scene's, the visible props' and the receivers' world boxes, rebuilt each frame (the
+/// occupancy grids kept while their data is unchanged). See the file's description.
 class SceneBounds
 {
 public:
@@ -46,6 +48,7 @@ public:
   /// Rebuilds the receivers' bounds (penumbra::StableReceiverBox, so that small moves keep the
   /// wedges cut as they were); empty when a receiver's extent is unknown.
   void UpdateReceivers(const std::vector<vtkProp*>& receivers);
+  /// Every receiver's box and the disjoint pieces round each receiver, from UpdateReceivers.
   const ReceiverBounds& Receivers() const { return this->ReceiverBoxes; }
 
   /// The distance from `point` to the nearest surface of a visible prop's box: to the box from

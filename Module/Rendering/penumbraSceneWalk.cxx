@@ -505,23 +505,35 @@ bool DrawsPointsOrOutline(vtkLODActor* levels, vtkMapper* mapper)
   return levels && input &&
     (input == levels->GetLowResFilter() || input == levels->GetMediumResFilter());
 }
-} // namespace
 
-namespace
+/// The interactor of the window `prop` is drawn in: through the renderers it was added to, or
+/// the assemblies it is a part of (`depth` guards against a cycle). Null when none has one.
+vtkRenderWindowInteractor* InteractorOf(vtkProp* prop, int depth = 0)
 {
+  for (int i = 0; depth < 16 && i < prop->GetNumberOfConsumers(); ++i)
+  {
+    vtkObject* consumer = prop->GetConsumer(i);
+    auto* renderer = vtkRenderer::SafeDownCast(consumer);
+    vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
+    auto* assembly = vtkProp::SafeDownCast(consumer);
+    vtkRenderWindowInteractor* interactor = window ? window->GetInteractor()
+      : assembly                                   ? InteractorOf(assembly, depth + 1)
+                                                   : nullptr;
+    if (interactor)
+    {
+      return interactor;
+    }
+  }
+  return nullptr;
+}
+
 /// The mapper a vtkQuadricLODActor draws its decimated level with where its Render counts the
 /// frame as interactive (the time the renderer allotted it at most 1.1 over its window's
 /// interactor's desired update rate, clamped to 1 to 75), found as the mapper its LOD filter
 /// feeds. Null otherwise, and before the actor has built that level.
 vtkMapper* QuadricLevelDrawn(vtkQuadricLODActor* actor)
 {
-  vtkRenderWindowInteractor* interactor = nullptr;
-  for (int i = 0; !interactor && i < actor->GetNumberOfConsumers(); ++i)
-  {
-    auto* renderer = vtkRenderer::SafeDownCast(actor->GetConsumer(i));
-    vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
-    interactor = window ? window->GetInteractor() : nullptr;
-  }
+  vtkRenderWindowInteractor* interactor = InteractorOf(actor);
   if (!interactor || !actor->GetLODFilter())
   {
     return nullptr;
@@ -535,9 +547,10 @@ vtkMapper* QuadricLevelDrawn(vtkQuadricLODActor* actor)
   }
   vtkInformation* output = actor->GetLODFilter()->GetOutputInformation(0);
   vtkInformationExecutivePortVectorKey* consumers = vtkExecutive::CONSUMERS();
+  vtkExecutive** executives = consumers->GetExecutives(output);
   for (int i = 0; i < consumers->Length(output); ++i)
   {
-    if (auto* level = vtkMapper::SafeDownCast(consumers->GetExecutives(output)[i]->GetAlgorithm()))
+    if (auto* level = vtkMapper::SafeDownCast(executives[i]->GetAlgorithm()))
     {
       return level;
     }

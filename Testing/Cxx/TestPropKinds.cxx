@@ -82,6 +82,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <utility>
 
 using namespace penumbra_test;
 
@@ -1224,11 +1225,28 @@ vtkSmartPointer<vtkPolyData> BumpySphere()
   return bumpy;
 }
 
-void TestQuadricLODActorLevel()
+/// Light 0's visibility and the truth's, hard, of a ground, a box and `data` in a plain actor.
+std::pair<std::vector<float>, std::vector<float>> PlainShadows(vtkPolyData* data, vtkAlgorithm* box)
+{
+  View view;
+  Ground(view.Renderer);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  view.Renderer->AddActor(actor);
+  view.Renderer->AddActor(MakeActor(box, 1, 1, 1));
+  view.Render();
+  return { view.Visibility(), TruthOf(view) };
+}
+
+void TestQuadricLODActorLevel(bool inAssembly)
 {
   // A vtkQuadricLODActor draws a decimated level, built in its Render, in frames its
   // interactor's desired update rate makes interactive: it casts that level then, and its full
-  // mesh in still frames.
+  // mesh in still frames; as an assembly's part too (VTK allots the part the assembly's time).
+  const std::string name =
+    std::string("vtkQuadricLODActor") + (inAssembly ? " in an assembly" : "");
   vtkSmartPointer<vtkPolyData> bumpy = BumpySphere();
   auto box = BoxSource(1.2, 0.6, 0.3, 0.7, 1.2, 0.7);
   View levels;
@@ -1242,52 +1260,37 @@ void TestQuadricLODActorLevel()
   vtkNew<vtkQuadricLODActor> quadric;
   quadric->SetMapper(mapper);
   quadric->GetProperty()->SetColor(1, 1, 1);
-  levels.Renderer->AddActor(quadric);
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(quadric);
+  levels.Renderer->AddActor(inAssembly ? static_cast<vtkProp3D*>(assembly) : quadric);
   levels.Renderer->AddActor(MakeActor(box, 1, 1, 1));
   levels.Window->SetDesiredUpdateRate(0.0001);
   levels.Render();
-  const std::vector<float> still = levels.Visibility();
+  const std::vector<float> still = levels.Visibility(), stillTruth = TruthOf(levels);
   levels.Window->SetDesiredUpdateRate(100.0);
   levels.Render();
-  const std::vector<float> interactive = levels.Visibility();
-  const std::vector<float> interactiveTruth = TruthOf(levels);
+  const std::vector<float> interactive = levels.Visibility(), interactiveTruth = TruthOf(levels);
 
   auto coarse = vtkSmartPointer<vtkPolyData>::New();
   coarse->DeepCopy(quadric->GetLODFilter()->GetOutput());
-  std::vector<float> plain[2], plainTruth;
-  for (vtkPolyData* data : { bumpy.GetPointer(), coarse.GetPointer() })
-  {
-    View view;
-    Ground(view.Renderer);
-    vtkNew<vtkPolyDataMapper> plainMapper;
-    plainMapper->SetInputData(data);
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(plainMapper);
-    view.Renderer->AddActor(actor);
-    view.Renderer->AddActor(MakeActor(box, 1, 1, 1));
-    view.Render();
-    plain[data == coarse ? 1 : 0] = view.Visibility();
-    if (data == coarse)
-    {
-      plainTruth = TruthOf(view);
-    }
-  }
-  const int levelsApart = PixelsApart(plain[0], plain[1]);
-  const int stillOff = PixelsApart(still, plain[0]);
-  const int interactiveOff = PixelsApart(interactive, plain[1]);
-  std::printf("vtkQuadricLODActor (%lld of %lld cells): the levels' shadows %d px apart; still "
-              "frame %d px off the full mesh's, interactive %d off the level's\n",
-    static_cast<long long>(coarse->GetNumberOfCells()),
+  const auto full = PlainShadows(bumpy, box), level = PlainShadows(coarse, box);
+  const int levelsApart = PixelsApart(full.first, level.first);
+  const int stillOff = PixelsApart(still, full.first);
+  const int interactiveOff = PixelsApart(interactive, level.first);
+  std::printf("%s (%lld of %lld cells): the levels' shadows %d px apart; still frame %d px off "
+              "the full mesh's, interactive %d off the level's\n",
+    name.c_str(), static_cast<long long>(coarse->GetNumberOfCells()),
     static_cast<long long>(bumpy->GetNumberOfCells()), levelsApart, stillOff, interactiveOff);
   const double pixels = double(Width) * Height;
   Check(coarse->GetNumberOfCells() > 0 && levelsApart > 0.002 * pixels,
-    "vtkQuadricLODActor: its level shadows otherwise than its full mesh");
-  Check(stillOff <= 0.0005 * pixels, "vtkQuadricLODActor: a still frame casts the full mesh");
+    name + ": its level shadows otherwise than its full mesh");
+  Check(stillOff <= 0.0005 * pixels, name + ": a still frame casts the full mesh");
   Check(interactiveOff <= 0.0005 * pixels,
-    "vtkQuadricLODActor: an interactive frame casts the decimated level VTK draws");
-  Check(!interactiveTruth.empty() && PixelsApart(interactiveTruth, plainTruth) <= 0.0005 * pixels,
-    "vtkQuadricLODActor: the truth traces the level VTK draws");
-  Check(warnings.Messages.empty(), "vtkQuadricLODActor: no warning");
+    name + ": an interactive frame casts the decimated level VTK draws");
+  Check(!stillTruth.empty() && PixelsApart(stillTruth, full.second) <= 0.0005 * pixels &&
+      !interactiveTruth.empty() && PixelsApart(interactiveTruth, level.second) <= 0.0005 * pixels,
+    name + ": the truth traces the mesh VTK draws in either frame");
+  Check(warnings.Messages.empty(), name + ": no warning");
 }
 
 void TestLODProp3D()
@@ -1902,7 +1905,8 @@ int main()
   TestUnlitPartsWarn();
   TestLODActor();
   TestLODActorLevels();
-  TestQuadricLODActorLevel();
+  TestQuadricLODActorLevel(false);
+  TestQuadricLODActorLevel(true);
   TestDataSetInput();
   TestLODProp3D();
   TestSkybox();

@@ -473,7 +473,8 @@ HardResult TestHardShadow(AnalyticScene& scene, bool verbose)
       {
         ++compared;
         mismatched += (visibility[p] < 0.5f) != (c == GroundShadowed);
-        depthError = std::max(depthError, std::abs(depth[p] - scene.Depth(analytic.Ground[p])));
+        depthError =
+          penumbra_test::Worse(depthError, std::abs(depth[p] - scene.Depth(analytic.Ground[p])));
       }
     }
   }
@@ -572,7 +573,7 @@ PenumbraStats MeasurePenumbra(const Analytic& analytic, vtkImageData* image, Exp
       }
       const double e = std::abs(visibility[p] - v);
       sum += e;
-      stats.MaxError = std::max(stats.MaxError, e);
+      stats.MaxError = penumbra_test::Worse(stats.MaxError, e);
       ++stats.Pixels;
     }
   }
@@ -802,7 +803,8 @@ int TestRayTracedVisibility(int, char*[])
     for (std::size_t p = 0; p < near.Visibility.size(); ++p)
     {
       differ += near.Visibility[p] != far.Visibility[p];
-      depthDiff = std::max(depthDiff, static_cast<double>(std::abs(near.Depth[p] - far.Depth[p])));
+      depthDiff = penumbra_test::Worse(
+        depthDiff, static_cast<double>(std::abs(near.Depth[p] - far.Depth[p])));
     }
   }
   std::printf("    shadowed pixels %ld (at origin %ld); %ld pixels differ (tolerance 0.5%% of "

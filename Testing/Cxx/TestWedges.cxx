@@ -385,11 +385,10 @@ void TestWedgeBoundInPieces()
         return;
       }
       ++cut;
-      // Each piece's triangles, by the corners their first vertex carries.
-      std::vector<std::vector<std::uint32_t>> byPiece(pieces.size());
-      for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+      // Each piece's triangles, by the corners their vertices carry (all three the same).
+      auto pieceOf = [&](std::uint32_t index)
       {
-        const float* v = &vertices[static_cast<std::size_t>(indices[t]) * Stride];
+        const float* v = &vertices[static_cast<std::size_t>(index) * Stride];
         const glm::dvec3 min(v[6], v[7], v[8]), max(v[9], v[10], v[11]);
         std::size_t piece = 0;
         while (piece < pieces.size() &&
@@ -398,7 +397,15 @@ void TestWedgeBoundInPieces()
         {
           ++piece;
         }
-        badVertices += piece == pieces.size() || v[3] != 1.0f || v[4] != 7.0f || v[5] != -2.0f;
+        const bool carries = v[3] == 1.0f && v[4] == 7.0f && v[5] == -2.0f;
+        return carries ? piece : pieces.size();
+      };
+      std::vector<std::vector<std::uint32_t>> byPiece(pieces.size());
+      for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+      {
+        const std::size_t piece = pieceOf(indices[t]);
+        const bool same = pieceOf(indices[t + 1]) == piece && pieceOf(indices[t + 2]) == piece;
+        badVertices += piece == pieces.size() || !same;
         if (piece < pieces.size())
         {
           byPiece[piece].insert(byPiece[piece].end(), &indices[t], &indices[t] + 3);

@@ -333,8 +333,8 @@ int TestTemporal()
         }
         const double df = std::abs(current[i] - previousFilter[i]);
         const double dt = std::abs(truth[i] - previousTruth[i]);
-        stepFilter = std::max(stepFilter, df);
-        stepTruth = std::max(stepTruth, dt);
+        stepFilter = penumbra_test::Worse(stepFilter, df);
+        stepTruth = penumbra_test::Worse(stepTruth, dt);
         meanFilter += df;
         meanTruth += dt;
         ++compared;

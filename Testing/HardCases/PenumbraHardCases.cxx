@@ -736,7 +736,8 @@ bool Judge(const HardCase& c, int method, const Row& row, std::string& verdict)
   }
   if ((!c.Reference.empty() || c.LargeImageTiles) && !(row.Reference >= 0.0))
   {
-    failures.push_back("not compared with its reference");
+    failures.push_back(
+      std::isnan(row.Reference) ? "NaN against its reference" : "not compared with its reference");
   }
   else if ((!c.Reference.empty() || c.LargeImageTiles) && row.Reference > ReferenceLimit)
   {
@@ -744,7 +745,8 @@ bool Judge(const HardCase& c, int method, const Row& row, std::string& verdict)
   }
   if (c.Temporal && !(row.WorstStep >= 0.0))
   {
-    failures.push_back("no step between frames compared");
+    failures.push_back(
+      std::isnan(row.WorstStep) ? "NaN between frames" : "no step between frames compared");
   }
   std::ostringstream text;
   for (const std::string& f : failures)
