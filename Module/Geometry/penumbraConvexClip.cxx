@@ -144,6 +144,25 @@ ConvexPolyhedron Triangulate(const std::vector<Polygon>& polygons, double tolera
   }
   return shape;
 }
+
+/// Whether every directed edge of the triangles comes back once the other way: the surface is
+/// closed, without cracks or T-junctions that could let a view ray through.
+bool Closed(const ConvexPolyhedron& shape)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> forward, backward;
+  for (std::size_t t = 0; t + 2 < shape.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = shape.Triangles[t + k], b = shape.Triangles[t + (k + 1) % 3];
+      forward.emplace_back(a, b);
+      backward.emplace_back(b, a);
+    }
+  }
+  std::sort(forward.begin(), forward.end());
+  std::sort(backward.begin(), backward.end());
+  return forward == backward;
+}
 } // namespace
 
 double ConvexPolyhedron::Volume() const
@@ -208,7 +227,8 @@ Box StableReceiverBox(const Box& kept, const Box& current)
 Box ReceiverPieceBox(const Box& receivers, const Box& receiver)
 {
   const double size = receivers.Diagonal();
-  if (!receivers.Valid || !receiver.Valid || !(size > 0.0) || !std::isfinite(size))
+  if (!receivers.Valid || !receiver.Valid || !(size > 0.0) || !std::isfinite(size) ||
+    !std::isfinite(receiver.Diagonal()))
   {
     return {};
   }
@@ -228,7 +248,8 @@ std::vector<Box> DisjointPieces(const std::vector<Box>& boxes, std::size_t maxBo
   Box bounds;
   for (const Box& box : boxes)
   {
-    if (box.Valid)
+    // Sorting faces with a NaN among them would be undefined.
+    if (box.Valid && std::isfinite(box.Diagonal()))
     {
       valid.push_back(box);
       bounds.Extend(box.Min, box.Max);
@@ -254,13 +275,17 @@ std::vector<Box> DisjointPieces(const std::vector<Box>& boxes, std::size_t maxBo
     std::sort(cuts[axis].begin(), cuts[axis].end());
     cuts[axis].erase(std::unique(cuts[axis].begin(), cuts[axis].end()), cuts[axis].end());
   }
+  // By the cell's faces, not its centre: the centre of a cell one rounding step wide is one of
+  // its faces.
   auto inside = [&](std::size_t i, std::size_t j, std::size_t k)
   {
-    const glm::dvec3 centre(0.5 * (cuts[0][i] + cuts[0][i + 1]),
-      0.5 * (cuts[1][j] + cuts[1][j + 1]), 0.5 * (cuts[2][k] + cuts[2][k + 1]));
+    const glm::dvec3 low(cuts[0][i], cuts[1][j], cuts[2][k]);
+    const glm::dvec3 high(cuts[0][i + 1], cuts[1][j + 1], cuts[2][k + 1]);
     return std::any_of(valid.begin(), valid.end(),
-      [&centre](const Box& box) {
-        return glm::all(glm::lessThan(box.Min, centre)) && glm::all(glm::lessThan(centre, box.Max));
+      [&](const Box& box)
+      {
+        return glm::all(glm::lessThanEqual(box.Min, low)) &&
+          glm::all(glm::lessThanEqual(high, box.Max));
       });
   };
   // Cells as index ranges [x0, x1) x [y0, y1) x [z0, z1): runs along x, then merged along y
@@ -338,22 +363,57 @@ ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpace
   {
     return {};
   }
-  const double tolerance = 1e-12 * size;
-  std::vector<Polygon> polygons = BoxFaces(box);
+  // Points closer than this are one, and a point this near a plane lies in it. Far from the
+  // origin the coordinates' own rounding sets it (a box 8 wide at 1e6 rounds by 1e-10).
+  const glm::dvec3 magnitude = glm::max(glm::abs(box.Min), glm::abs(box.Max));
+  const double tolerance = 1e-12 * (size + std::max({ magnitude.x, magnitude.y, magnitude.z }));
+  std::vector<HalfSpace> units;
   for (const HalfSpace& half : halfSpaces)
   {
     const double length = glm::length(half.Normal);
-    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(half.Offset))
+    if (length > 0.0 && std::isfinite(length) && std::isfinite(half.Offset))
     {
-      continue;
+      units.push_back({ half.Normal / length, half.Offset / length });
     }
-    const HalfSpace unit{ half.Normal / length, half.Offset / length };
+  }
+  const std::vector<Polygon> faces = BoxFaces(box);
+  std::vector<Polygon> polygons = faces;
+  for (const HalfSpace& unit : units)
+  {
     if (!Cut(polygons, unit, tolerance))
     {
       return {};
     }
   }
-  return Triangulate(polygons, tolerance);
+  ConvexPolyhedron shape = Triangulate(polygons, tolerance);
+  if (Closed(shape))
+  {
+    return shape;
+  }
+  // Cuts by nearly parallel planes place their crossings with errors beyond the tolerance, and
+  // faces then disagree on their shared corners. Cut again, leaving out each cut that opens the
+  // surface: a larger bound only costs fragments, a crack would lose them.
+  polygons = faces;
+  std::size_t leftOut = 0;
+  for (const HalfSpace& unit : units)
+  {
+    std::vector<Polygon> cut = polygons;
+    if (!Cut(cut, unit, tolerance))
+    {
+      return {};
+    }
+    if (Closed(Triangulate(cut, tolerance)))
+    {
+      polygons = std::move(cut);
+    }
+    else
+    {
+      ++leftOut;
+    }
+  }
+  shape = Triangulate(polygons, tolerance);
+  shape.CutsLeftOut = leftOut;
+  return shape;
 }
 
 } // namespace penumbra

@@ -33,6 +33,7 @@ struct ConvexPolyhedron
 {
   std::vector<glm::dvec3> Points;
   std::vector<std::uint32_t> Triangles; ///< three indices into Points per triangle
+  std::size_t CutsLeftOut = 0;          ///< half-spaces ClipBox left out to keep it closed
   bool Empty() const { return this->Triangles.empty(); }
   /// The enclosed volume (positive for outward triangles), by the divergence theorem.
   VTKPENUMBRAGEOMETRY_EXPORT double Volume() const;
@@ -91,13 +92,14 @@ struct ReceiverBounds
  * stable box that holds every receiver, StableReceiverBox) on every side, so that no receiver
  * point lies on a piece's face, then out to a grid of 2% of that size from its min corner, so
  * that a receiver moving a little keeps its box (and every caster its wedges); clamped to
- * `receivers`. Invalid when either is.
+ * `receivers`. Invalid when either is invalid or not finite (its diagonal included), or
+ * `receivers` has no size.
  */
 VTKPENUMBRAGEOMETRY_EXPORT Box ReceiverPieceBox(const Box& receivers, const Box& receiver);
 
 /**
- * Disjoint boxes whose union is the union of the valid `boxes`: the cells of the grid of the
- * boxes' faces that lie in some box, merged into runs along x, then along y and z where their
+ * Disjoint boxes whose union is the union of the valid, finite `boxes`: the cells of the grid of
+ * the boxes' faces that lie in some box, merged into runs along x, then along y and z where their
  * extents agree. Pieces are half-open ([min, max)), so a point on a face two pieces share belongs
  * to one; a box of no volume holds no point of them. More than `maxBoxes` valid boxes give one
  * piece, their bounds; none gives none.
@@ -106,8 +108,11 @@ VTKPENUMBRAGEOMETRY_EXPORT std::vector<Box> DisjointPieces(
   const std::vector<Box>& boxes, std::size_t maxBoxes = 8);
 
 /**
- * The box cut by every half-space. Empty when nothing of the box is left (or less than a sliver
- * of 1e-12 of its size). Half-spaces with a zero or non-finite normal are ignored.
+ * The box cut by every half-space: a closed surface. Empty when nothing of the box is left (or
+ * less than a sliver of 1e-12 of its size plus its distance from the origin). Half-spaces with a
+ * zero or non-finite normal are ignored, and so is a cut whose rounding would leave the surface
+ * open (nearly parallel planes, whose crossings faces place differently; counted in
+ * CutsLeftOut): the result then holds the exact cut, a larger bound.
  */
 VTKPENUMBRAGEOMETRY_EXPORT ConvexPolyhedron ClipBox(
   const Box& box, const std::vector<HalfSpace>& halfSpaces);

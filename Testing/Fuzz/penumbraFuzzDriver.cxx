@@ -9,6 +9,7 @@
 #include "penumbraOptions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -149,10 +150,12 @@ Bytes Mutate(
 }
 
 // Hand-made seeds: ordinary scenes the mutations start from, and the regressions.
+/// The header of a raw-caster scene under a positional light: flags 0 (a caller may change
+/// Bytes[0]), light kind 1.
 ByteWriter PositionalLight(double x, double y, double z, double radius)
 {
   ByteWriter w;
-  w.U8(1);
+  w.U8(0).U8(1);
   w.Scalar(x).Scalar(y).Scalar(z).Scalar(radius);
   return w;
 }
@@ -278,6 +281,36 @@ std::vector<std::pair<std::string, Bytes>> Seeds()
   extreme.U16(4).U8(0).U8(1).U8(2).U8(3).U8(4).U8(0).U8(0).U8(1).U8(5).U8(2).U8(1).U8(0);
   Receivers(extreme);
   seeds.emplace_back("extreme-values", extreme.Bytes);
+
+  // The receivers' boxes and the cuts of the cube's wedges to them: a ground, a box on it, an
+  // invalid box, and a box one rounding step thick (its cell's centre rounds onto its face;
+  // DisjointPieces lost it when it tested centres); the box kept from a frame before; two
+  // half-spaces, nearly parallel (ClipBox's faces placed their crossings apart).
+  ByteWriter cuts = raw;
+  cuts.U8(4);
+  cuts.U8(0).Point(-3.0, -3.0, -3.0).Point(3.0, -2.5, 3.0);
+  cuts.U8(0).Point(-1.0, -2.5, -1.0).Point(1.0, -1.0, 1.0);
+  cuts.U8(1).Point(0.0, 0.0, 0.0).Point(1.0, 1.0, 1.0);
+  cuts.U8(0).RawPoint(2.0, 2.0, 2.0).RawPoint(3.0, std::nextafter(2.0, 3.0), 3.0);
+  cuts.U8(0).Point(-3.5, -3.5, -3.5).Point(3.5, 3.5, 3.5);
+  cuts.U8(2);
+  cuts.Lattice(-1, -1, 1).Scalar(0.5);
+  cuts.U8(254).Scalar(-1.0).Scalar(-1.0).Scalar(1.015625).Scalar(0.53125);
+  seeds.emplace_back("receiver-boxes-and-cuts", cuts.Bytes);
+
+  // Regression: a receivers' box 8 wide at 1e6 (kept from a frame before), cut by four planes of
+  // a hard case's wedge. ClipBox's tolerance, 1e-12 of the box's size, was below the rounding of
+  // its coordinates, and the cut came out open.
+  ByteWriter far = raw;
+  far.U8(1);
+  far.U8(0).RawPoint(999996.2, 1000000.2, 999996.2).RawPoint(1000003.8, 1000001.396, 1000003.8);
+  far.U8(0).RawPoint(999996, 1000000, 999996).RawPoint(1000004, 1000001.5961653268, 1000004);
+  far.U8(4);
+  far.RawPoint(-0.93509320259466078, 0.35440189398655975, 0).RawScalar(-580687.56823529059);
+  far.RawPoint(0.72437288656730936, 0.6894083849259045, 0).RawScalar(1413784.1689847601);
+  far.RawPoint(0, 0.76608032350236277, -0.64274484668685983).RawScalar(123338.0477948897);
+  far.RawPoint(0, 0.13752506403373049, 0.99049828710731169).RawScalar(1128027.3131341906);
+  seeds.emplace_back("regression-clip-far-from-origin", far.Bytes);
   return seeds;
 }
 

@@ -18,6 +18,11 @@
  *   u8 receiverCount (mod 5), per receiver: u8 mode (bit 0: free Point, else on the far side
  *                       of each silhouette edge: u8 t along the edge, Scalar distance)
  *   u8 sampleCount (mod 17), Point target: SpreadLightSamples
+ *   u8 boxCount (mod 11), Box x boxCount: the receivers' boxes; Box kept: the box kept from
+ *                       the frame before (StableReceiverBox)
+ *   u8 halfSpaceCount (mod 5), per half-space: Point normal, Scalar offset (ClipBox)
+ *
+ * Box: u8 mode (bit 0: invalid), Point, Point (the corners: their min and max).
  *
  * Scalar: u8 tag; tag % 16 in 0..9: int16 / 64; 10: 1e30; 11: 1e-30; 12: 0; 13: NaN; 14: Inf;
  * 15: 8 raw bytes. Bit 4 of the tag negates 10, 11, 12 and 14.
@@ -95,6 +100,18 @@ class ByteWriter
 public:
   std::vector<std::uint8_t> Bytes;
 
+  /// A double's 8 bytes, as ByteReader::RawDouble reads them.
+  ByteWriter& Raw(double value)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int byte = 0; byte < 8; ++byte)
+    {
+      this->U8(static_cast<unsigned>((bits >> (8 * byte)) & 0xff));
+    }
+    return *this;
+  }
+
   ByteWriter& U8(unsigned value)
   {
     this->Bytes.push_back(static_cast<std::uint8_t>(value));
@@ -113,6 +130,10 @@ public:
   {
     return this->U8(static_cast<unsigned>((x + 1) + 3 * (y + 1) + 9 * (z + 1)));
   }
+  /// A scalar of 8 raw bytes.
+  ByteWriter& RawScalar(double value) { return this->U8(TagRaw).Raw(value); }
+  /// A point of three raw doubles.
+  ByteWriter& RawPoint(double x, double y, double z) { return this->U8(255).Raw(x).Raw(y).Raw(z); }
   /// An ordinary point, each coordinate a multiple of 1/32 in [-4, 4).
   ByteWriter& Point(double x, double y, double z)
   {

@@ -3,12 +3,14 @@
 // penumbraFuzzInput.h; the invariants are listed in Documentation/fuzzing.md. A violated
 // invariant prints what broke and aborts, so libFuzzer (or the smoke driver) reports the input.
 #include "penumbraCasterTopology.h"
+#include "penumbraConvexClip.h"
 #include "penumbraCulling.h"
 #include "penumbraFuzzInput.h"
 #include "penumbraLightSamples.h"
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
+#include "penumbraWedgeBound.h"
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
@@ -22,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -396,6 +399,20 @@ void CheckWedgeAndOcclusion(const glm::dvec3& a, const glm::dvec3& b, const glm:
   }
 }
 
+/// The faces around an edge, as the counting passes them: each triangle's normal and walk.
+std::vector<EdgeFace> FacesOf(const CasterTopology& topo, const Edge& edge)
+{
+  std::vector<EdgeFace> faces;
+  for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
+  {
+    const glm::uvec3& tri = topo.Triangles[topo.Uses[u].Triangle];
+    faces.push_back({ glm::cross(topo.Points[tri.y] - topo.Points[tri.x],
+                        topo.Points[tri.z] - topo.Points[tri.x]),
+      topo.Uses[u].Sign });
+  }
+  return faces;
+}
+
 /// Per-light-sample counting on the same mesh, light and receivers: indices in range, the centre
 /// silhouette among the potential one, crossings in {-1, 0, 1}, multiplicities bounded by the
 /// faces, pyramids finite; no NaN and no crash whatever the input.
@@ -423,14 +440,7 @@ void CheckCounting(const CasterTopology& topo, const glm::dvec4& light, double r
     }
     const Edge& edge = topo.Edges[e];
     const glm::dvec3 a = topo.Points[edge.A], b = topo.Points[edge.B];
-    std::vector<EdgeFace> faces;
-    for (std::uint32_t u = edge.FirstUse; u < edge.FirstUse + edge.UseCount; ++u)
-    {
-      const glm::uvec3& tri = topo.Triangles[topo.Uses[u].Triangle];
-      faces.push_back({ glm::cross(topo.Points[tri.y] - topo.Points[tri.x],
-                          topo.Points[tri.z] - topo.Points[tri.x]),
-        topo.Uses[u].Sign });
-    }
+    const std::vector<EdgeFace> faces = FacesOf(topo, edge);
     const LightPyramid pyramid = LightPyramid::Build(a, b, light, radius);
     if (pyramid.Valid)
     {
@@ -451,6 +461,361 @@ void CheckCounting(const CasterTopology& topo, const glm::dvec4& light, double r
     }
   }
   (void)CountingIsCheaper({ { potential.size(), centre.Silhouette.size(), radius } }, 16);
+}
+
+// ---- Receiver boxes, their disjoint pieces and the convex cuts of wedges to them ----
+
+/// The largest magnitude among the box's coordinates, for tolerances that follow rounding.
+double Magnitude(const Box& box)
+{
+  const glm::dvec3 m = glm::max(glm::abs(box.Min), glm::abs(box.Max));
+  return std::max({ m.x, m.y, m.z });
+}
+
+bool IsFinite(const Box& box)
+{
+  return box.Valid && IsFinite(box.Min) && IsFinite(box.Max) && std::isfinite(box.Diagonal());
+}
+
+/// A box from two points (ordered as Box::Extend orders them), or an invalid one.
+Box DecodeBox(ByteReader& in)
+{
+  const bool invalid = (in.U8() & 1) != 0;
+  const glm::dvec3 a = DecodePoint(in), b = DecodePoint(in);
+  Box box;
+  if (!invalid)
+  {
+    box.Extend(glm::min(a, b), glm::max(a, b));
+  }
+  return box;
+}
+
+/// Half-open containment, as the counting shader tests a pixel's point against a piece.
+bool HoldsHalfOpen(const Box& box, const glm::dvec3& p)
+{
+  return glm::all(glm::lessThanEqual(box.Min, p)) && glm::all(glm::lessThan(p, box.Max));
+}
+
+/// Up to `most` values of each axis where pieces can disagree: the boxes' faces, the middles
+/// between them and a value beyond each end.
+std::array<std::vector<double>, 3> ProbeCoordinates(const std::vector<Box>& boxes, std::size_t most)
+{
+  std::array<std::vector<double>, 3> probes;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    std::vector<double> faces;
+    for (const Box& box : boxes)
+    {
+      faces.push_back(box.Min[axis]);
+      faces.push_back(box.Max[axis]);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<double> all = { faces.front() - 1.0, faces.back() + 1.0 };
+    for (std::size_t i = 0; i < faces.size(); ++i)
+    {
+      all.push_back(faces[i]);
+      if (i + 1 < faces.size())
+      {
+        all.push_back(0.5 * faces[i] + 0.5 * faces[i + 1]);
+      }
+    }
+    const std::size_t stride = (all.size() + most - 1) / most;
+    for (std::size_t i = 0; i < all.size(); i += stride)
+    {
+      probes[axis].push_back(all[i]);
+    }
+  }
+  return probes;
+}
+
+/// DisjointPieces of finite boxes: no two pieces overlap, and a point lies in exactly one piece
+/// where it lies in a box (half-open, as the pieces), in none elsewhere; past `maxBoxes` boxes,
+/// one piece holding them all.
+void CheckDisjointPieces(const std::vector<Box>& boxes, std::size_t maxBoxes)
+{
+  const std::vector<Box> pieces = DisjointPieces(boxes, maxBoxes);
+  std::vector<Box> valid;
+  std::copy_if(boxes.begin(), boxes.end(), std::back_inserter(valid),
+    [](const Box& b) { return IsFinite(b); });
+  if (valid.empty())
+  {
+    Require(pieces.empty(), "no pieces without finite boxes");
+    return;
+  }
+  if (valid.size() > maxBoxes)
+  {
+    Require(pieces.size() == 1, "past maxBoxes, one piece");
+    for (const Box& box : valid)
+    {
+      Require(pieces[0].Contains(box), "the one piece holds every box");
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+  {
+    Require(pieces[i].Valid && glm::all(glm::lessThan(pieces[i].Min, pieces[i].Max)),
+      "pieces have a volume");
+    for (std::size_t j = i + 1; j < pieces.size(); ++j)
+    {
+      const glm::dvec3 lo = glm::max(pieces[i].Min, pieces[j].Min);
+      const glm::dvec3 hi = glm::min(pieces[i].Max, pieces[j].Max);
+      Require(!glm::all(glm::lessThan(lo, hi)), "pieces do not overlap");
+    }
+  }
+  auto check = [&](const glm::dvec3& p)
+  {
+    const bool inBox =
+      std::any_of(valid.begin(), valid.end(), [&p](const Box& b) { return HoldsHalfOpen(b, p); });
+    const auto holding = std::count_if(
+      pieces.begin(), pieces.end(), [&p](const Box& b) { return HoldsHalfOpen(b, p); });
+    Require(holding == (inBox ? 1 : 0), "a point in a box lies in exactly one piece");
+  };
+  // Every box's corners, then a grid of faces and the middles between them.
+  for (const Box& box : valid)
+  {
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      check(BoxCorner(box.Min, box.Max, corner));
+    }
+  }
+  const std::array<std::vector<double>, 3> probes = ProbeCoordinates(valid, 9);
+  for (double x : probes[0])
+  {
+    for (double y : probes[1])
+    {
+      for (double z : probes[2])
+      {
+        check({ x, y, z });
+      }
+    }
+  }
+}
+
+/// StableReceiverBox and ReceiverPieceBox: the stable box holds the receivers, and each piece
+/// lies in it and holds its receiver (where coordinates resolve the 1% margins).
+Box CheckReceiverBoxes(const std::vector<Box>& receivers, const Box& kept, std::vector<Box>& pieces)
+{
+  Box current; // as the pass gathers it: a receiver of unknown extent leaves none
+  for (const Box& box : receivers)
+  {
+    if (IsFinite(box))
+    {
+      current.Extend(box.Min, box.Max);
+    }
+    else if (box.Valid)
+    {
+      current = Box();
+      break;
+    }
+  }
+  const Box stable = StableReceiverBox(kept, current);
+  if (!IsFinite(current))
+  {
+    return stable;
+  }
+  Require(stable.Contains(current), "the stable box holds the receivers");
+  const bool resolved = current.Diagonal() > 1e-9 * Magnitude(current);
+  for (const Box& box : receivers)
+  {
+    const Box piece = ReceiverPieceBox(stable, box);
+    Require(piece.Valid == (IsFinite(box) && IsFinite(stable) && stable.Diagonal() > 0.0),
+      "a piece for each finite receiver");
+    if (piece.Valid)
+    {
+      Require(stable.Contains(piece), "pieces lie in the stable box");
+      Require(!resolved || piece.Contains(box), "a piece holds its receiver");
+      pieces.push_back(piece);
+    }
+  }
+  return stable;
+}
+
+/// A closed surface: every directed edge of its triangles comes back once the other way.
+bool IsClosed(const ConvexPolyhedron& shape)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> forward, backward;
+  for (std::size_t t = 0; t + 2 < shape.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = shape.Triangles[t + k], b = shape.Triangles[t + (k + 1) % 3];
+      forward.emplace_back(a, b);
+      backward.emplace_back(b, a);
+    }
+  }
+  std::sort(forward.begin(), forward.end());
+  std::sort(backward.begin(), backward.end());
+  return forward == backward;
+}
+
+/// ClipBox: indices in range, points finite, in the box and, unless it left cuts out, in every
+/// half-space, a closed surface of non-negative volume no larger than the box's; the box itself
+/// without half-spaces.
+void CheckClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)
+{
+  const ConvexPolyhedron shape = ClipBox(box, halfSpaces);
+  if (!IsFinite(box) || !(box.Diagonal() > 0.0))
+  {
+    Require(shape.Empty(), "no cut of a box that is not finite");
+    return;
+  }
+  Require(shape.Triangles.size() % 3 == 0, "cut: whole triangles");
+  Require(shape.CutsLeftOut <= halfSpaces.size(), "cut: left out no more cuts than given");
+  for (std::uint32_t i : shape.Triangles)
+  {
+    Require(i < shape.Points.size(), "cut: indices in range");
+  }
+  const double size = box.Diagonal();
+  const double rounding = 1e-9 * (size + Magnitude(box));
+  for (const glm::dvec3& p : shape.Points)
+  {
+    Require(IsFinite(p), "cut: finite points");
+    Require(glm::all(glm::lessThanEqual(box.Min - rounding, p)) &&
+        glm::all(glm::lessThanEqual(p, box.Max + rounding)),
+      "cut: points in the box");
+    for (const HalfSpace& half : halfSpaces)
+    {
+      const double length = glm::length(half.Normal);
+      if (length > 0.0 && std::isfinite(length) && std::isfinite(half.Offset) &&
+        shape.CutsLeftOut == 0)
+      {
+        const double side = glm::dot(half.Normal / length, p) - half.Offset / length;
+        Require(side <= rounding + 1e-9 * std::abs(half.Offset / length),
+          "cut: points in every half-space");
+      }
+    }
+  }
+  const glm::dvec3 extent = box.Max - box.Min;
+  if (shape.Empty())
+  {
+    // A box thinner than its coordinates' rounding is a sliver, cut or not.
+    Require(!halfSpaces.empty() || std::min({ extent.x, extent.y, extent.z }) <= rounding,
+      "the box itself without half-spaces");
+    return;
+  }
+  Require(IsClosed(shape), "cut: a closed surface");
+  if (size > 1e-6 * Magnitude(box))
+  {
+    // About the box's centre and in units of its diagonal, where the volume's products keep
+    // their digits and do not overflow.
+    const glm::dvec3 centre = 0.5 * box.Min + 0.5 * box.Max;
+    auto scaled = [&](std::uint32_t i) { return (shape.Points[i] - centre) / size; };
+    double volume = 0.0;
+    for (std::size_t t = 0; t + 2 < shape.Triangles.size(); t += 3)
+    {
+      volume += glm::dot(scaled(shape.Triangles[t]),
+                  glm::cross(scaled(shape.Triangles[t + 1]), scaled(shape.Triangles[t + 2]))) /
+        6.0;
+    }
+    const double boxVolume = extent.x / size * extent.y / size * extent.z / size;
+    const double slack = 1e-6;
+    Require(volume >= -slack && volume <= boxVolume + slack, "cut: volume within the box's");
+    Require(!halfSpaces.empty() || std::abs(volume - boxVolume) <= slack,
+      "cut: the box itself without half-spaces");
+  }
+}
+
+/// AppendWedgeBound (cut to the box, and whole) and AppendWedgeBoundInPieces: whole vertices,
+/// indices in range, finite floats for finite inputs; cuts inside their box.
+void CheckWedgeBounds(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light,
+  double radius, const Box& receivers, const std::vector<Box>& pieces, const EdgeFace* faces,
+  bool frontOnly)
+{
+  const float attributes[3] = { 1.0f, 2.0f, 3.0f };
+  const bool finite = IsFinite(a) && IsFinite(b) && IsFinite(light) && std::isfinite(radius) &&
+    std::max({ glm::length(a), glm::length(b), glm::length(glm::dvec3(light)) }) < 1e30;
+  auto check = [&](const std::vector<float>& vertices, const std::vector<std::uint32_t>& indices,
+                 int floatsPerVertex, const Box* inside)
+  {
+    Require(vertices.size() % floatsPerVertex == 0 && indices.size() % 3 == 0,
+      "wedge bound: whole vertices and triangles");
+    for (std::uint32_t i : indices)
+    {
+      Require(i < vertices.size() / floatsPerVertex, "wedge bound: indices in range");
+    }
+    const bool smallBox = !inside || (IsFinite(*inside) && Magnitude(*inside) < 1e30);
+    for (std::size_t v = 0; finite && smallBox && v < vertices.size(); v += floatsPerVertex)
+    {
+      const glm::dvec3 p(vertices[v], vertices[v + 1], vertices[v + 2]);
+      Require(IsFinite(p) && std::isfinite(vertices[v + 3]), "wedge bound: finite vertices");
+      if (inside)
+      {
+        const double rounding = 1e-6 * (inside->Diagonal() + Magnitude(*inside));
+        Require(glm::all(glm::lessThanEqual(inside->Min - rounding, p)) &&
+            glm::all(glm::lessThanEqual(p, inside->Max + rounding)),
+          "wedge bound: cut inside the receivers' box");
+      }
+    }
+  };
+  for (const Box& box : { receivers, Box() })
+  {
+    std::vector<float> vertices;
+    std::vector<std::uint32_t> indices;
+    const WedgeShape shape = AppendWedgeBound(
+      a, b, light, radius, box, faces, frontOnly, attributes, 3, vertices, indices);
+    Require((shape == WedgeShape::Nothing) == vertices.empty(), "wedge bound: nothing or a shape");
+    check(vertices, indices, 7, box.Valid ? &box : nullptr);
+  }
+  if (receivers.Valid)
+  {
+    std::vector<float> vertices;
+    std::vector<std::uint32_t> indices;
+    const WedgeShape shape = AppendWedgeBoundInPieces(
+      a, b, light, radius, receivers, pieces, faces, frontOnly, attributes, 3, vertices, indices);
+    Require((shape == WedgeShape::Nothing) == vertices.empty(), "pieces: nothing or a shape");
+    check(vertices, indices, 13, &receivers);
+  }
+}
+
+/// The receivers' boxes, their pieces and the cuts of the silhouette edges' wedges to them, as
+/// counting builds them; then DisjointPieces and ClipBox on the decoded boxes and half-spaces.
+void CheckReceiverCuts(ByteReader& in, const CasterTopology& topo, const ShadowVolume& centre,
+  const glm::dvec4& light, double radius, bool frontOnly)
+{
+  std::vector<Box> receivers(in.U8() % 11);
+  for (Box& box : receivers)
+  {
+    box = DecodeBox(in);
+  }
+  const Box kept = DecodeBox(in);
+  std::vector<HalfSpace> halfSpaces(in.U8() % 5);
+  for (HalfSpace& half : halfSpaces)
+  {
+    half.Normal = DecodePoint(in);
+    half.Offset = DecodeScalar(in);
+  }
+  CheckDisjointPieces(receivers, 8);
+  CheckDisjointPieces(receivers, 2);
+  std::vector<Box> pieceBoxes;
+  const Box stable = CheckReceiverBoxes(receivers, kept, pieceBoxes);
+  const std::vector<Box> pieces = DisjointPieces(pieceBoxes);
+  CheckDisjointPieces(pieceBoxes, 8);
+  CheckClipBox(stable, halfSpaces);
+  CheckClipBox(stable, {});
+  std::size_t checked = 0;
+  for (const SilhouetteEdge& e : centre.Silhouette)
+  {
+    if (++checked > 16)
+    {
+      break; // bounded work per input
+    }
+    const glm::dvec3 a = topo.Points[e.From], b = topo.Points[e.To];
+    const auto edge = std::find_if(topo.Edges.begin(), topo.Edges.end(),
+      [&e](const Edge& x)
+      { return x.A == std::min(e.From, e.To) && x.B == std::max(e.From, e.To); });
+    Require(edge != topo.Edges.end(), "silhouette edges are edges of the mesh");
+    const std::vector<EdgeFace> faces = FacesOf(topo, *edge);
+    const Wedge wedge = Wedge::Build(a, b, light, radius);
+    if (wedge.Valid)
+    {
+      std::vector<HalfSpace> cut = wedge.HalfSpaces();
+      cut.insert(cut.end(), halfSpaces.begin(), halfSpaces.end());
+      CheckClipBox(stable, cut);
+    }
+    CheckWedgeBounds(
+      a, b, light, radius, stable, pieces, faces.size() == 2 ? faces.data() : nullptr, frontOnly);
+  }
 }
 
 } // namespace
@@ -626,5 +991,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sample.w != 0.0 ? glm::dvec4(glm::dvec3(sample) - topo.Origin, 1.0) : sample);
   }
   CheckCounting(topo, local, radius, frontOnly, sides, localSamples, points);
+  CheckReceiverCuts(in, topo, sides, local, radius, frontOnly);
   return 0;
 }
