@@ -117,10 +117,9 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
   // lacks.
   if (actor->GetForceOpaque() || TexturesMayOpenHoles(actor) || !actor->HasOpaqueGeometry() ||
     actor->HasTranslucentPolygonalGeometry() || property->GetRepresentation() != VTK_SURFACE ||
-    property->GetEdgeVisibility() || property->GetVertexVisibility() ||
-    property->GetBackfaceCulling() || property->GetFrontfaceCulling() ||
-    mapper->GetNumberOfClippingPlanes() > 0 || !DrawsTrianglesWithoutOffset(mapper, property) ||
-    HasCustomShaders(actor))
+    property->GetVertexVisibility() || property->GetBackfaceCulling() ||
+    property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
+    !DrawsTrianglesWithoutOffset(mapper, property) || HasCustomShaders(actor))
   {
     return false;
   }

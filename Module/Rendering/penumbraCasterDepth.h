@@ -45,8 +45,10 @@ public:
   /// its composite data's polydata blocks, and nothing else: a vtkOpenGLActor (not a subclass:
   /// LOD actors and followers draw otherwise) with a vtkOpenGLPolyDataMapper or a
   /// vtkCompositePolyDataMapper2, opaque (every drawn block), neither forced so nor textured with
-  /// alpha (VTK drops fragments of alpha 0 then too), a surface without edges, vertices
-  /// or culled faces, no clipping plane, no polygon offset or z-shift, no custom shader code, and
+  /// alpha (VTK drops fragments of alpha 0 then too), a surface (edges drawn on it included:
+  /// VTK widens its triangles for them, a band the pass's depth leaves out,
+  /// KeepEdgesOutOfDepthPass) without vertices or culled faces, no clipping plane, no polygon
+  /// offset or z-shift, no custom shader code, and
   /// data with no vertex or line cells and no ghost cells. Read before VTK draws the frame's
   /// other props.
   static bool DrawnAsItsTriangles(vtkProp* prop);

@@ -108,4 +108,19 @@ std::vector<int> ScaleLightColours(
   return missing;
 }
 
+bool KeepEdgesOutOfDepthPass(std::string& geometryShader)
+{
+  static const std::string widen = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
+  const std::size_t at = geometryShader.find(widen);
+  const std::size_t main = geometryShader.find("void main()");
+  if (at == std::string::npos || main == std::string::npos || main > at ||
+    geometryShader.find("penumbraDepthPass") != std::string::npos)
+  {
+    return false; // not VTK 9.1's edges, or edited already
+  }
+  geometryShader.replace(at, widen.size(), "if (penumbraDepthPass == 0) { " + widen + " }");
+  geometryShader.insert(main, "uniform int penumbraDepthPass; // 1 while the pass draws depth\n");
+  return true;
+}
+
 } // namespace penumbra

@@ -46,6 +46,14 @@ bool IsUnlit(const std::string& fragmentShader);
 std::vector<int> ScaleLightColours(
   std::string& fragmentShader, const std::vector<ReceiverLight>& lights);
 
+/// Makes VTK 9.1's geometry shader for surfaces drawn with their edges (vtkPolyDataEdgesGS)
+/// widen each triangle by half the line width in screen space only while `penumbraDepthPass` is
+/// 0. Widened, a triangle keeps its corners' depths at moved corners: its depth is no longer its
+/// plane's, and the pass's depth, from which counting takes each pixel's point, put the points
+/// of a face nearly edge-on to the light on the wrong side of it. Returns whether the shader
+/// widens triangles.
+bool KeepEdgesOutOfDepthPass(std::string& geometryShader);
+
 } // namespace penumbra
 
 #endif

@@ -203,6 +203,9 @@ public:
   std::string ShaderConfiguration;
   vtkTimeStamp ShaderStageTime;
   bool ApplyShadows = false;
+  /// While VTK draws props into the pass's depth: surfaces drawn with their edges are then not
+  /// widened (SetShaderParameters).
+  bool DrawingDepth = false;
 
   penumbra::LightIntensityBuffer LI;
   /// Bytes of GPU memory held: framebuffer textures (4 bytes per texel each), the techniques'
@@ -978,7 +981,9 @@ void vtkSoftShadowPass::RenderDepthWithVTK(const vtkRenderState* s, std::vector<
   depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(internals.LI.GetFramebuffer());
   penumbra::ScopedActiveCamera shadowCamera(s->GetRenderer(), internals.Camera.Get());
+  internals.DrawingDepth = true;
   internals.DepthPass->Render(&depthState);
+  internals.DrawingDepth = false;
 }
 
 //------------------------------------------------------------------------------
@@ -1287,14 +1292,15 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(
   return true;
 }
 
-bool vtkSoftShadowPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+bool vtkSoftShadowPass::PostReplaceShaderValues(std::string&, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   const auto& lights = this->Internals->Lights;
   if (lights.empty() || fragmentShader.find("penumbraLightFactor") == std::string::npos)
   {
     return true; // nothing inserted, already reported
   }
+  penumbra::KeepEdgesOutOfDepthPass(geometryShader);
   auto actor = vtkActor::SafeDownCast(prop);
   // Actors that a prop such as vtkCubeAxesActor draws through, unseen by the renderer, are its
   // annotation: VTK draws their lines unlit by design, so they say nothing.
@@ -1363,6 +1369,10 @@ bool vtkSoftShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   vtkInternals& internals = *this->Internals;
+  if (program->IsUniformUsed("penumbraDepthPass"))
+  {
+    program->SetUniformi("penumbraDepthPass", internals.DrawingDepth ? 1 : 0);
+  }
   if (internals.Lights.empty() || !program->IsUniformUsed("penumbraApply"))
   {
     return true;

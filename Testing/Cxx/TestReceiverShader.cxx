@@ -140,5 +140,24 @@ int main()
   std::string unusedOne = "uniform vec3 lightColor1;\n  diffuse += (df * lightColor10);\n";
   Check(penumbra::ScaleLightColours(unusedOne, { { 1, 0 } }).size() == 1,
     "light 10's colour is not a use of light 1's");
+
+  // VTK 9.1's geometry shader for surfaces drawn with their edges (vtkPolyDataEdgesGS): the
+  // widening of each triangle is kept out of the pass's depth.
+  const std::string widen = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
+  const std::string edgesBefore = "#version 150\nuniform float lineWidth;\nvoid main()\n{\n"
+                                  "  for (int i = 0; i < 3; i++)\n  {\n    gl_Position = "
+                                  "gl_in[i].gl_Position;\n    " +
+    widen + "\n    EmitVertex();\n  }\n}\n";
+  std::string edges = edgesBefore;
+  Check(penumbra::KeepEdgesOutOfDepthPass(edges), "the edges' widening is found");
+  Check(edges.find("uniform int penumbraDepthPass;") < edges.find("void main()") &&
+      edges.find("if (penumbraDepthPass == 0) { " + widen + " }") != std::string::npos,
+    "the widening happens outside the pass's depth only, its uniform declared before main");
+  const std::string edited = edges;
+  Check(!penumbra::KeepEdgesOutOfDepthPass(edges) && edges == edited, "edited once only");
+  std::string wideLines = "void main()\n{\n  gl_Position = gl_in[0].gl_Position;\n}\n";
+  const std::string wideLinesBefore = wideLines;
+  Check(!penumbra::KeepEdgesOutOfDepthPass(wideLines) && wideLines == wideLinesBefore,
+    "other geometry shaders are left alone");
   return penumbra_test::Finish();
 }
