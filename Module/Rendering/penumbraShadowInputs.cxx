@@ -227,6 +227,139 @@ void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
   inputs.Add(static_cast<double>(vtkSoftShadowPass::GetReceivesShadows(prop)));
   inputs.Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(prop)));
 }
+
+/// The times of `leaf` that AddLeaf records: a prop's own (for an actor whose look is recorded
+/// by value, without its property's), or for an assembly's part, whose own time moves every
+/// frame, its properties' where its look is not recorded by value.
+void AddLeafTimes(ShadowInputs& inputs, vtkProp* leaf, vtkActor* actor, bool part, bool lookByValue)
+{
+  if (!part)
+  {
+    inputs.AddTime(lookByValue ? actor->vtkProp3D::GetMTime() : leaf->GetMTime());
+  }
+  else if (actor && !lookByValue)
+  {
+    inputs.AddTime(actor->GetProperty()->GetMTime());
+    inputs.AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
+  }
+}
+
+/// Each of `actor`'s textures with the times of it and its image.
+void AddTextures(ShadowInputs& inputs, vtkActor* actor)
+{
+  // A texture's alpha makes the actor translucent or opens holes in it (VTK drops fragments
+  // of alpha 0), and its image can change (edited in place) without the texture's time or
+  // the actor's moving.
+  for (vtkTexture* texture : TexturesOf(actor))
+  {
+    vtkImageData* image = texture->GetInput();
+    inputs.Add(texture);
+    inputs.AddTime(texture->GetMTime());
+    inputs.AddTime(image ? image->GetMTime() : 0);
+  }
+}
+
+/// The times of `actor`'s shader property and of its custom uniforms, which the property's
+/// does not follow.
+void AddShaderTimes(ShadowInputs& inputs, vtkActor* actor)
+{
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  inputs.AddTime(shaders->GetMTime());
+  inputs.AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
+  inputs.AddTime(shaders->GetGeometryCustomUniforms()->GetMTime());
+  inputs.AddTime(shaders->GetFragmentCustomUniforms()->GetMTime());
+}
+
+/// What of `actor` itself changes what VTK draws: its look by value where `withLook`
+/// (AddDrawnLook), its textures and its shaders.
+void AddActorDrawing(ShadowInputs& inputs, vtkActor* actor, bool withLook)
+{
+  if (withLook)
+  {
+    AddDrawnLook(inputs, actor);
+  }
+  AddTextures(inputs, actor);
+  AddShaderTimes(inputs, actor);
+}
+
+/// The time of each of `mapper`'s clipping planes: the collection's time does not follow its
+/// planes'.
+void AddClippingPlaneTimes(ShadowInputs& inputs, vtkAbstractMapper* mapper)
+{
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    vtkCollectionSimpleIterator planeIt;
+    planes->InitTraversal(planeIt);
+    while (vtkPlane* plane = planes->GetNextPlane(planeIt))
+    {
+      inputs.AddTime(plane->GetMTime());
+    }
+  }
+}
+
+/// The block attributes of the mappers that read them (AddBlockShapes).
+void AddMapperBlocks(ShadowInputs& inputs, vtkAbstractMapper* mapper)
+{
+  if (auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
+  {
+    AddBlockShapes(inputs, composite->GetCompositeDataDisplayAttributes(),
+      composite->GetInputDataObject(0, 0), composite);
+  }
+  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    AddBlockShapes(inputs, glyphs->GetBlockAttributes(), glyphs->GetInputDataObject(0, 0));
+  }
+}
+
+/// `data` (null too) with its time, and each leaf of composite data with its own.
+void AddInputData(ShadowInputs& inputs, vtkDataObject* data)
+{
+  inputs.Add(data);
+  if (!data)
+  {
+    return;
+  }
+  inputs.AddTime(data->GetMTime());
+  if (auto composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> block;
+    block.TakeReference(composite->NewIterator());
+    for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+    {
+      vtkDataObject* leafData = block->GetCurrentDataObject();
+      inputs.Add(leafData);
+      inputs.AddTime(leafData ? leafData->GetMTime() : 0);
+    }
+  }
+}
+
+/// `mapper` with its settings (by value where `lookByValue` and AddDrawnShape knows them, else
+/// its time), clipping planes, block attributes and input data. False where an UpdateShaderEvent
+/// observer may change what it draws without any of that changing.
+bool AddMapper(ShadowInputs& inputs, vtkAbstractMapper* mapper, bool lookByValue)
+{
+  if (mapper->HasObserver(vtkCommand::UpdateShaderEvent))
+  {
+    return false; // its observer may move vertices through uniforms, frame by frame
+  }
+  inputs.Add(mapper);
+  if (!lookByValue || !AddDrawnShape(inputs, vtkMapper::SafeDownCast(mapper)))
+  {
+    inputs.AddTime(mapper->GetMTime());
+  }
+  AddClippingPlaneTimes(inputs, mapper);
+  AddMapperBlocks(inputs, mapper);
+  // The inputs are up to date (UpdateMapperInputs).
+  for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+  {
+    for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port); ++connection)
+    {
+      AddInputData(inputs, mapper->GetInputDataObject(port, connection));
+    }
+  }
+  return true;
+}
+
 /// Whether every entry of `a` and `b` differs by at most 1e-7 of the largest magnitude in its
 /// row of either (false for NaN): a clip-space row scaled by that much moves a point in view by
 /// about 1e-7 of the viewport, and a depth by about one 24-bit step.
@@ -393,15 +526,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   auto actor = vtkActor::SafeDownCast(leaf);
   const bool lookByValue =
     actor && (part || IsExactly(actor, "vtkOpenGLActor")) && !ColoursShapeIt(actor);
-  if (!part)
-  {
-    this->AddTime(lookByValue ? actor->vtkProp3D::GetMTime() : leaf->GetMTime());
-  }
-  else if (actor && !lookByValue)
-  {
-    this->AddTime(actor->GetProperty()->GetMTime());
-    this->AddTime(actor->GetBackfaceProperty() ? actor->GetBackfaceProperty()->GetMTime() : 0);
-  }
+  AddLeafTimes(*this, leaf, actor, part, lookByValue);
   if (auto prop3D = vtkProp3D::SafeDownCast(leaf))
   {
     // Values: a user transform or matrix may change without the prop's time moving.
@@ -409,25 +534,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
   }
   if (actor)
   {
-    if (lookByValue || part)
-    {
-      AddDrawnLook(*this, actor);
-    }
-    // A texture's alpha makes the actor translucent or opens holes in it (VTK drops fragments
-    // of alpha 0), and its image can change (edited in place) without the texture's time or
-    // the actor's moving.
-    for (vtkTexture* texture : TexturesOf(actor))
-    {
-      vtkImageData* image = texture->GetInput();
-      this->Add(texture);
-      this->AddTime(texture->GetMTime());
-      this->AddTime(image ? image->GetMTime() : 0);
-    }
-    vtkShaderProperty* shaders = actor->GetShaderProperty();
-    this->AddTime(shaders->GetMTime());
-    this->AddTime(shaders->GetVertexCustomUniforms()->GetMTime());
-    this->AddTime(shaders->GetGeometryCustomUniforms()->GetMTime());
-    this->AddTime(shaders->GetFragmentCustomUniforms()->GetMTime());
+    AddActorDrawing(*this, actor, lookByValue || part);
   }
   auto slice = vtkImageSlice::SafeDownCast(leaf);
   if (part && slice)
@@ -435,64 +542,7 @@ bool ShadowInputs::AddLeaf(vtkProp* leaf, const double* pathMatrix, bool part)
     this->AddTime(slice->GetProperty()->GetMTime());
   }
   vtkAbstractMapper* mapper = MapperOf(leaf);
-  if (!mapper)
-  {
-    return true;
-  }
-  if (mapper->HasObserver(vtkCommand::UpdateShaderEvent))
-  {
-    return false; // its observer may move vertices through uniforms, frame by frame
-  }
-  this->Add(mapper);
-  if (!lookByValue || !AddDrawnShape(*this, vtkMapper::SafeDownCast(mapper)))
-  {
-    this->AddTime(mapper->GetMTime());
-  }
-  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
-  {
-    // The collection's time does not follow its planes'.
-    vtkCollectionSimpleIterator planeIt;
-    planes->InitTraversal(planeIt);
-    while (vtkPlane* plane = planes->GetNextPlane(planeIt))
-    {
-      this->AddTime(plane->GetMTime());
-    }
-  }
-  if (auto composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
-  {
-    AddBlockShapes(*this, composite->GetCompositeDataDisplayAttributes(),
-      composite->GetInputDataObject(0, 0), composite);
-  }
-  if (auto glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
-  {
-    AddBlockShapes(*this, glyphs->GetBlockAttributes(), glyphs->GetInputDataObject(0, 0));
-  }
-  // The inputs are up to date (UpdateMapperInputs).
-  for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
-  {
-    for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port); ++connection)
-    {
-      vtkDataObject* data = mapper->GetInputDataObject(port, connection);
-      this->Add(data);
-      if (!data)
-      {
-        continue;
-      }
-      this->AddTime(data->GetMTime());
-      if (auto composite = vtkCompositeDataSet::SafeDownCast(data))
-      {
-        vtkSmartPointer<vtkCompositeDataIterator> block;
-        block.TakeReference(composite->NewIterator());
-        for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
-        {
-          vtkDataObject* leafData = block->GetCurrentDataObject();
-          this->Add(leafData);
-          this->AddTime(leafData ? leafData->GetMTime() : 0);
-        }
-      }
-    }
-  }
-  return true;
+  return !mapper || AddMapper(*this, mapper, lookByValue);
 }
 
 void UpdateMapperInputs(vtkRenderer* renderer)
