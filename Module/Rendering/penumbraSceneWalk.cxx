@@ -728,21 +728,7 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   if (!actor)
   {
-    auto volume = vtkVolume::SafeDownCast(leaf);
-    auto slice = vtkImageSlice::SafeDownCast(leaf);
-    if (volume && volume->GetMapper())
-    {
-      this->Warn(owner, leaf,
-        "is drawn but neither casts nor receives shadows: the pass does not edit volume "
-        "rendering");
-    }
-    else if (slice && slice->GetMapper())
-    {
-      // Drawn by the slice mapper's own internal actor, which the pass never sees, and unlit
-      // by default; a shadow on it would be the visibility image's only.
-      this->Warn(owner, leaf,
-        "is drawn but neither casts nor receives shadows: the pass does not edit image slices");
-    }
+    this->WarnVolumeOrSlice(leaf, owner);
     return; // 2D props and the like: overlays, nothing to cast
   }
   vtkMapper* mapper = MapperDrawn(actor);
@@ -757,10 +743,44 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
       "than the time the renderer allots it: it casts no shadow while it does");
     return;
   }
+  this->WarnShadowUnlikeDrawing(actor, mapper, owner);
+  // A path's last matrix is the composed one; a plain actor's path carries none.
+  const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
+  if (!this->DrawsTriangles(actor, mapper, owner))
+  {
+    return;
+  }
+  if (!this->Instances(actor, mapper, matrix, owner, surfaces))
+  {
+    this->InputSurfaces(actor, mapper, matrix, owner, surfaces);
+  }
+}
+
+void SceneWalk::WarnVolumeOrSlice(vtkProp* leaf, vtkObject* owner)
+{
+  auto volume = vtkVolume::SafeDownCast(leaf);
+  auto slice = vtkImageSlice::SafeDownCast(leaf);
+  if (volume && volume->GetMapper())
+  {
+    this->Warn(owner, leaf,
+      "is drawn but neither casts nor receives shadows: the pass does not edit volume "
+      "rendering");
+  }
+  else if (slice && slice->GetMapper())
+  {
+    // Drawn by the slice mapper's own internal actor, which the pass never sees, and unlit
+    // by default; a shadow on it would be the visibility image's only.
+    this->Warn(owner, leaf,
+      "is drawn but neither casts nor receives shadows: the pass does not edit image slices");
+  }
+}
+
+void SceneWalk::WarnShadowUnlikeDrawing(vtkActor* actor, vtkMapper* mapper, vtkObject* owner)
+{
   if (!actor->HasOpaqueGeometry() && actor->GetProperty()->GetOpacity() >= 1.0 &&
     !vtkCompositePolyDataMapper2::SafeDownCast(mapper))
   {
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       "is drawn translucent with an opacity of 1 (colours with alpha, a texture or "
       "ForceTranslucent): its shadow takes the opacity, 1, and is opaque");
   }
@@ -769,45 +789,49 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     // VTK 9.1 draws a texture whose alpha is only 0 or 1 (cut-outs: leaves, holes) in the
     // opaque pass (ForceOpaque any texture) and discards its texels of alpha 0; the casters are
     // meshes.
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       "has a texture with transparent texels, which VTK leaves out of the surface it draws: "
       "its shadow is that of the whole surface (cut the holes into the mesh to cast them)");
   }
-  // A path's last matrix is the composed one; a plain actor's path carries none.
-  const glm::dmat4 matrix = ToGlm(pathMatrix ? pathMatrix : actor->GetMatrix());
+}
+
+bool SceneWalk::DrawsTriangles(vtkActor* actor, vtkMapper* mapper, vtkObject* owner)
+{
   if (auto splats = vtkPointGaussianMapper::SafeDownCast(mapper))
   {
     // Splats are sprites shaded in the fragment shader, with no triangles to cast from. Lit
     // ones are drawn in VTK's opaque pass, their squares' depth written corners and all; the
     // light-intensity buffer holds one surface a pixel, theirs.
     const bool lit = !splats->GetEmissive() && actor->HasOpaqueGeometry();
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       std::string("is drawn by ") + mapper->GetClassName() +
         ", whose imposters have no triangles: it casts no shadow" +
         (lit ? "; its splats are lit (EmissiveOff) and write their squares' depth, so the "
                "surfaces seen through their squares' corners take the splats' shadows, not "
                "their own"
              : ""));
-    return;
+    return false;
   }
   if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE && !DrawsImposterInstances(mapper))
   {
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       "is drawn as a wireframe or as points (vtkProperty::SetRepresentation): lines and points "
       "cast no shadow");
-    return;
+    return false;
   }
   if (mapper->GetNumberOfClippingPlanes() > 0 && DrawsImposterInstances(mapper))
   {
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       std::string("has clipping planes, which shadows do not follow for the imposters of its ") +
         mapper->GetClassName() + ": it casts no shadow");
-    return;
+    return false;
   }
-  if (this->Instances(actor, mapper, matrix, owner, surfaces))
-  {
-    return;
-  }
+  return true;
+}
+
+void SceneWalk::InputSurfaces(vtkActor* actor, vtkMapper* mapper, const glm::dmat4& matrix,
+  vtkObject* owner, std::vector<DrawnSurface>& surfaces)
+{
   vtkDataObject* data = mapper->GetInputDataObject(0, 0);
   if (!data)
   {
@@ -815,7 +839,7 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
   }
   if (ShiftedToInfinity(mapper, data))
   {
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       "has points at infinite coordinates: VTK 9.1 shifts its vertex buffer by the points' "
       "range, which they make infinite, and draws none of it; it casts nothing");
     return;
@@ -828,7 +852,7 @@ void SceneWalk::Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* o
     actor->GetProperty()->GetOpacity(), part, opaqueAtFull, surfaces);
   if (opaqueAtFull)
   {
-    this->Warn(owner, leaf,
+    this->Warn(owner, actor,
       "has blocks drawn translucent with an opacity of 1 (colours with alpha, a texture or "
       "ForceTranslucent): their shadows take the opacity, 1, and are opaque");
   }

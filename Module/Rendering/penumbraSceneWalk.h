@@ -163,6 +163,18 @@ public:
 private:
   void Leaf(vtkProp* leaf, const vtkMatrix4x4* pathMatrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
+  /// A leaf that is no actor: warns where VTK draws it as a volume or an image slice, which
+  /// neither cast nor receive.
+  void WarnVolumeOrSlice(vtkProp* leaf, vtkObject* owner);
+  /// Warns where `actor` casts otherwise than VTK draws it: seen through at an opacity of 1,
+  /// or with texels VTK discards.
+  void WarnShadowUnlikeDrawing(vtkActor* actor, vtkMapper* mapper, vtkObject* owner);
+  /// Whether VTK draws `actor` with triangles a shadow can be cast from; warns where not
+  /// (splats, wireframes and points, imposters under clipping planes).
+  bool DrawsTriangles(vtkActor* actor, vtkMapper* mapper, vtkObject* owner);
+  /// The surfaces of `mapper`'s input: the dataset, or the blocks of composite data.
+  void InputSurfaces(vtkActor* actor, vtkMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
+    std::vector<DrawnSurface>& surfaces);
   /// A vtkLODProp3D: the level it is picked by, at its matrix.
   void LODLevel(vtkLODProp3D* levels, vtkObject* owner, std::vector<DrawnSurface>& surfaces);
   /// `composite`: the vtkCompositePolyDataMapper2 drawing them, which decides per block, or
