@@ -72,6 +72,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace penumbra
 {
@@ -282,6 +283,163 @@ bool AddInstances(vtkActor* actor, const DrawnOpacity& drawn, vtkPolyData* shape
       { actor, shape, matrix, static_cast<std::size_t>(id), drawn.Opacity, drawn.SeenThrough });
   }
   return placedAll;
+}
+
+/// The glyph sources of a vtkGlyph3DMapper, in the order its source indices pick them: its
+/// source table's blocks, or the sources on its input port 1.
+std::vector<vtkDataObject*> GlyphSources(vtkGlyph3DMapper* mapper)
+{
+  std::vector<vtkDataObject*> sources;
+  if (mapper->GetUseSourceTableTree())
+  {
+    if (vtkDataObjectTree* table = mapper->GetSourceTableTree())
+    {
+      for (vtkDataObject* source : vtk::Range(table, vtk::DataObjectTreeOptions::None))
+      {
+        sources.push_back(vtkPolyData::SafeDownCast(source));
+      }
+    }
+  }
+  else
+  {
+    for (int i = 0; i < mapper->GetNumberOfInputConnections(1); ++i)
+    {
+      sources.push_back(mapper->GetSource(i));
+    }
+  }
+  // Without a source VTK draws its default glyph, a line: like any glyph without surface
+  // cells it casts nothing, and says so once here rather than once per glyph.
+  if (sources.empty())
+  {
+    sources.push_back(nullptr);
+  }
+  return sources;
+}
+
+/// How a vtkGlyph3DMapper scales and orients its glyphs.
+GlyphSettings GlyphSettingsOf(vtkGlyph3DMapper* mapper)
+{
+  GlyphSettings settings;
+  settings.Scaling = mapper->GetScaling();
+  settings.ScaleMode = mapper->GetScaleMode();
+  settings.ScaleFactor = mapper->GetScaleFactor();
+  settings.Clamping = mapper->GetClamping();
+  mapper->GetRange(settings.Range);
+  settings.OrientationMode = mapper->GetOrientationMode();
+  return settings;
+}
+
+/// The datasets whose points a vtkGlyph3DMapper places glyphs at (null for a leaf that is no
+/// dataset).
+std::vector<vtkDataSet*> GlyphInputs(vtkGlyph3DMapper* mapper)
+{
+  std::vector<vtkDataSet*> inputs;
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    // As vtkOpenGLGlyph3DMapper draws composite input: each leaf unless its own block
+    // visibility hides it (VTK 9.1's glyph mapper reads no inherited visibility, no opacity).
+    vtkCompositeDataDisplayAttributes* blocks = mapper->GetBlockAttributes();
+    auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      vtkDataObject* leaf = it->GetCurrentDataObject();
+      if (!blocks || !blocks->HasBlockVisibility(leaf) || blocks->GetBlockVisibility(leaf))
+      {
+        inputs.push_back(vtkDataSet::SafeDownCast(leaf));
+      }
+    }
+  }
+  else
+  {
+    inputs.push_back(vtkDataSet::SafeDownCast(input));
+  }
+  return inputs;
+}
+
+/// What every glyph of one vtkGlyph3DMapper shares: the actor and matrix it is drawn with, its
+/// opacity, how it is placed and the sources it is picked from (null: casts nothing).
+struct GlyphSet
+{
+  vtkActor* Actor;
+  glm::dmat4 Matrix;
+  DrawnOpacity Drawn;
+  GlyphSettings Settings;
+  std::vector<vtkDataObject*> Sources;
+};
+
+/// The arrays a vtkGlyph3DMapper reads at one input's points (GlyphArrays), each null where
+/// it reads none.
+struct GlyphPointArrays
+{
+  vtkDataArray* Scale;
+  vtkDataArray* Orientation;
+  vtkDataArray* SourceIndex;
+  vtkBitArray* Mask;
+};
+
+GlyphPointArrays GlyphPointArraysOf(vtkGlyph3DMapper* mapper, vtkDataSet* points)
+{
+  return { (mapper->*GlyphArrays::Scale)(points), (mapper->*GlyphArrays::Orientation)(points),
+    (mapper->*GlyphArrays::SourceIndex)(points),
+    vtkBitArray::SafeDownCast((mapper->*GlyphArrays::Mask)(points)) };
+}
+
+/// Which of `count` sources glyph `id` is drawn from: as VTK, the norm of its index tuple,
+/// clamped to the table; the first without an index array.
+std::size_t SourceEntry(vtkDataArray* sourceIndex, vtkIdType id, std::size_t count)
+{
+  if (!sourceIndex)
+  {
+    return 0;
+  }
+  const double value =
+    vtkMath::Norm(sourceIndex->GetTuple(id), sourceIndex->GetNumberOfComponents());
+  return static_cast<std::size_t>(
+    std::min(std::max(static_cast<int>(value), 0), static_cast<int>(count) - 1));
+}
+
+/// The glyphs of one input's points, numbered on from `part` (masked and unplaced points keep
+/// their numbers); `nonFinite` is set where one has no finite matrix. False where VTK draws
+/// none of the mapper's glyphs: an orientation array of the wrong size, which VTK reports.
+bool AddGlyphsAt(const GlyphSet& glyphs, vtkGlyph3DMapper* mapper, vtkDataSet* points,
+  std::size_t& part, bool& nonFinite, std::vector<DrawnSurface>& surfaces)
+{
+  const GlyphPointArrays arrays = GlyphPointArraysOf(mapper, points);
+  const int orientationComponents =
+    glyphs.Settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
+  if (arrays.Orientation && arrays.Orientation->GetNumberOfComponents() != orientationComponents)
+  {
+    return false;
+  }
+  for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id, ++part)
+  {
+    if (arrays.Mask && arrays.Mask->GetValue(id) == 0)
+    {
+      continue;
+    }
+    vtkDataObject* source =
+      glyphs.Sources[SourceEntry(arrays.SourceIndex, id, glyphs.Sources.size())];
+    if (!source)
+    {
+      continue;
+    }
+    double position[3];
+    points->GetPoint(id, position);
+    const glm::dvec3 size =
+      GlyphScale(glyphs.Settings, arrays.Scale ? arrays.Scale->GetTuple(id) : nullptr,
+        arrays.Scale ? arrays.Scale->GetNumberOfComponents() : 0);
+    glm::dmat4 glyph;
+    if (!GlyphMatrix(glyphs.Settings, glm::dvec3(position[0], position[1], position[2]),
+          arrays.Orientation ? arrays.Orientation->GetTuple(id) : nullptr, size, glyph))
+    {
+      nonFinite = true;
+      continue;
+    }
+    surfaces.push_back({ glyphs.Actor, source, glyphs.Matrix * glyph, part, glyphs.Drawn.Opacity,
+      glyphs.Drawn.SeenThrough });
+  }
+  return true;
 }
 } // namespace
 
@@ -919,30 +1077,34 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
   {
     return;
   }
-  std::vector<vtkDataObject*> sources;
-  if (mapper->GetUseSourceTableTree())
+  std::vector<vtkDataObject*> sources = this->CastingGlyphSources(actor, mapper, owner);
+  if (std::none_of(sources.begin(), sources.end(), [](vtkDataObject* s) { return s; }))
   {
-    if (vtkDataObjectTree* table = mapper->GetSourceTableTree())
+    return;
+  }
+  const GlyphSet glyphs{ actor, matrix, drawn, GlyphSettingsOf(mapper), std::move(sources) };
+  std::size_t part = 0;
+  bool nonFinite = false;
+  const std::size_t firstGlyph = surfaces.size();
+  for (vtkDataSet* points : GlyphInputs(mapper))
+  {
+    if (points && !AddGlyphsAt(glyphs, mapper, points, part, nonFinite, surfaces))
     {
-      for (vtkDataObject* source : vtk::Range(table, vtk::DataObjectTreeOptions::None))
-      {
-        sources.push_back(vtkPolyData::SafeDownCast(source));
-      }
+      return; // VTK reports it and draws nothing
     }
   }
-  else
+  if (nonFinite)
   {
-    for (int i = 0; i < mapper->GetNumberOfInputConnections(1); ++i)
-    {
-      sources.push_back(mapper->GetSource(i));
-    }
+    this->Warn(
+      owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
   }
-  // Without a source VTK draws its default glyph, a line: like any glyph without surface
-  // cells it casts nothing, and says so once here rather than once per glyph.
-  if (sources.empty())
-  {
-    sources.push_back(nullptr);
-  }
+  this->ClipGlyphs(actor, firstGlyph, surfaces);
+}
+
+std::vector<vtkDataObject*> SceneWalk::CastingGlyphSources(
+  vtkActor* actor, vtkGlyph3DMapper* mapper, vtkObject* owner)
+{
+  std::vector<vtkDataObject*> sources = GlyphSources(mapper);
   for (vtkDataObject*& source : sources)
   {
     auto poly = vtkPolyData::SafeDownCast(source);
@@ -954,99 +1116,7 @@ void SceneWalk::Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dma
       source = nullptr;
     }
   }
-  if (std::none_of(sources.begin(), sources.end(), [](vtkDataObject* s) { return s; }))
-  {
-    return;
-  }
-
-  GlyphSettings settings;
-  settings.Scaling = mapper->GetScaling();
-  settings.ScaleMode = mapper->GetScaleMode();
-  settings.ScaleFactor = mapper->GetScaleFactor();
-  settings.Clamping = mapper->GetClamping();
-  mapper->GetRange(settings.Range);
-  settings.OrientationMode = mapper->GetOrientationMode();
-
-  std::vector<vtkDataSet*> inputs;
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-  if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    // As vtkOpenGLGlyph3DMapper draws composite input: each leaf unless its own block
-    // visibility hides it (VTK 9.1's glyph mapper reads no inherited visibility, no opacity).
-    vtkCompositeDataDisplayAttributes* blocks = mapper->GetBlockAttributes();
-    auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      vtkDataObject* leaf = it->GetCurrentDataObject();
-      if (!blocks || !blocks->HasBlockVisibility(leaf) || blocks->GetBlockVisibility(leaf))
-      {
-        inputs.push_back(vtkDataSet::SafeDownCast(leaf));
-      }
-    }
-  }
-  else
-  {
-    inputs.push_back(vtkDataSet::SafeDownCast(input));
-  }
-
-  std::size_t part = 0;
-  bool nonFinite = false;
-  const std::size_t firstGlyph = surfaces.size();
-  for (vtkDataSet* points : inputs)
-  {
-    if (!points)
-    {
-      continue;
-    }
-    vtkDataArray* scale = (mapper->*GlyphArrays::Scale)(points);
-    vtkDataArray* orientation = (mapper->*GlyphArrays::Orientation)(points);
-    vtkDataArray* sourceIndex = (mapper->*GlyphArrays::SourceIndex)(points);
-    auto mask = vtkBitArray::SafeDownCast((mapper->*GlyphArrays::Mask)(points));
-    const int orientationComponents = settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
-    if (orientation && orientation->GetNumberOfComponents() != orientationComponents)
-    {
-      return; // VTK reports it and draws nothing
-    }
-    for (vtkIdType id = 0; id < points->GetNumberOfPoints(); ++id, ++part)
-    {
-      if (mask && mask->GetValue(id) == 0)
-      {
-        continue;
-      }
-      std::size_t entry = 0;
-      if (sourceIndex)
-      {
-        // As VTK: the norm of the index tuple, clamped to the table.
-        const double value =
-          vtkMath::Norm(sourceIndex->GetTuple(id), sourceIndex->GetNumberOfComponents());
-        entry = static_cast<std::size_t>(
-          std::min(std::max(static_cast<int>(value), 0), static_cast<int>(sources.size()) - 1));
-      }
-      if (!sources[entry])
-      {
-        continue;
-      }
-      double position[3];
-      points->GetPoint(id, position);
-      const glm::dvec3 size = GlyphScale(settings, scale ? scale->GetTuple(id) : nullptr,
-        scale ? scale->GetNumberOfComponents() : 0);
-      glm::dmat4 glyph;
-      if (!GlyphMatrix(settings, glm::dvec3(position[0], position[1], position[2]),
-            orientation ? orientation->GetTuple(id) : nullptr, size, glyph))
-      {
-        nonFinite = true;
-        continue;
-      }
-      surfaces.push_back(
-        { actor, sources[entry], matrix * glyph, part, drawn.Opacity, drawn.SeenThrough });
-    }
-  }
-  if (nonFinite)
-  {
-    this->Warn(
-      owner, actor, "has glyphs whose orientation is not finite: those glyphs cast no shadow");
-  }
-  this->ClipGlyphs(actor, firstGlyph, surfaces);
+  return sources;
 }
 
 void SceneWalk::ClipGlyphs(

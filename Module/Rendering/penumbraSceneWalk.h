@@ -190,6 +190,10 @@ private:
     std::vector<DrawnSurface>& surfaces);
   void Glyphs(vtkActor* actor, vtkGlyph3DMapper* mapper, const glm::dmat4& matrix, vtkObject* owner,
     std::vector<DrawnSurface>& surfaces);
+  /// The glyph sources `mapper` picks from, in its order, null for those that cast nothing
+  /// (missing, or without surface cells), of which it warns.
+  std::vector<vtkDataObject*> CastingGlyphSources(
+    vtkActor* actor, vtkGlyph3DMapper* mapper, vtkObject* owner);
   /// The glyphs from `firstGlyph` on, under their mapper's clipping planes: dropped where wholly
   /// clipped away, cut where a plane runs through them.
   void ClipGlyphs(vtkActor* actor, std::size_t firstGlyph, std::vector<DrawnSurface>& surfaces);
