@@ -28,14 +28,15 @@ std::array<glm::dvec4, 6> FrustumPlanes(const glm::dmat4& worldToClip)
 }
 
 /**
- * The (nearest, farthest) view depths of the part of `box` inside the half-spaces of `frustum`:
- * (inf, -inf) where none is, NaN where the box is not finite. Where the whole box lies in front
+ * The (nearest, farthest) view depths of the part of `box` inside the half-spaces of `frustum`
+ * (whose corners `frustumBox` holds): (inf, -inf) where none is, NaN where the box is not
+ * finite. Where the whole box lies in front
  * of the eye the nearest is its own nearest corner's: a near plane moved up to the nearest point
  * in view would cut shadow volumes that the box's nearest depth leaves whole, and those would
  * need z-fail.
  */
-glm::dvec2 DepthsInView(
-  const Box& box, const std::vector<HalfSpace>& frustum, const glm::dmat4& worldToView)
+glm::dvec2 DepthsInView(const Box& box, const std::vector<HalfSpace>& frustum,
+  const Box& frustumBox, const glm::dmat4& worldToView)
 {
   const double none = std::numeric_limits<double>::infinity();
   const auto finite = [](const glm::dvec3& p)
@@ -75,11 +76,18 @@ glm::dvec2 DepthsInView(
   {
     return glm::dvec2(cornerNearest, cornerFarthest);
   }
-  // Grown a little, so that a flat box (a single plane) still leaves a solid to cut.
+  // Grown a little, so that a flat box (a single plane) still leaves a solid to cut, and cut to
+  // the frustum's box: ClipBox works to 1e-12 of the box it cuts, and a box reaching 1e30 away
+  // (a stray point) would lose the view's few units to that.
   Box grown = box;
   const glm::dvec3 margin(1e-6 * box.Diagonal());
-  grown.Min -= margin;
-  grown.Max += margin;
+  const glm::dvec3 frustumMargin(1e-6 * frustumBox.Diagonal());
+  grown.Min = glm::max(grown.Min - margin, frustumBox.Min - frustumMargin);
+  grown.Max = glm::min(grown.Max + margin, frustumBox.Max + frustumMargin);
+  if (!glm::all(glm::lessThan(grown.Min, grown.Max)))
+  {
+    return glm::dvec2(none, -none);
+  }
   glm::dvec2 depths(none, -none);
   for (const glm::dvec3& point : ClipBox(grown, frustum).Points)
   {
@@ -104,7 +112,12 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   const glm::dvec3 apex = light.w != 0.0 ? glm::dvec3(light) / light.w : glm::dvec3(0.0);
   const glm::dvec3 towardsLight =
     light.w != 0.0 ? apex - centre : UnitDirection(glm::dvec3(light)) * size;
-  const glm::dvec3 inside = centre + 0.5 * towardsLight;
+  // A point inside the hull, to orient its planes: near the rectangle, where its distances to
+  // them are about the rectangle's size. Halfway to a light 1e30 away, the distances (half the
+  // rectangle's centre's) drowned in the rounding of coordinates of 5e29, and a plane could
+  // face the wrong way (found by the fuzzer).
+  const double reach = glm::length(towardsLight);
+  const glm::dvec3 inside = centre + std::min(0.5, size / reach) * towardsLight;
 
   std::array<Plane, 5> planes;
   auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane)
@@ -229,18 +242,32 @@ double OccupancyGrid::Face(int index, int axis) const
 
 void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
 {
-  if (!this->Bounds.Valid)
+  // A cell with a NaN point draws nothing; its box would make its grid cells' boxes NaN.
+  const glm::dvec3 both = min - max;
+  if (!this->Bounds.Valid || !std::isfinite(both.x) || !std::isfinite(both.y) ||
+    !std::isfinite(both.z))
   {
     return;
   }
   const glm::dvec3 size = this->Bounds.Max - this->Bounds.Min;
-  // The grid cell of a coordinate, clamped to the grid; a flat axis is one cell.
+  // The grid cell [Face(c), Face(c + 1)) of a coordinate, clamped to the grid; a flat axis is
+  // one cell. The quotient can round a coordinate next to a face into the cell beside, whose
+  // cut would then leave out the sliver between: the faces, as cut, decide.
   auto cell = [&](const glm::dvec3& p, int axis)
   {
     const double t = size[axis] > 0.0 ? (p[axis] - this->Bounds.Min[axis]) / size[axis] : 0.0;
     const double scaled = std::floor(t * Resolution);
-    return static_cast<int>(
-      std::clamp(std::isfinite(scaled) ? scaled : 0.0, 0.0, Resolution - 1.0));
+    int c =
+      static_cast<int>(std::clamp(std::isfinite(scaled) ? scaled : 0.0, 0.0, Resolution - 1.0));
+    while (c > 0 && p[axis] < this->Face(c, axis))
+    {
+      --c;
+    }
+    while (c < Resolution - 1 && p[axis] >= this->Face(c + 1, axis))
+    {
+      ++c;
+    }
+    return c;
   };
   glm::ivec3 from, to;
   for (int axis = 0; axis < 3; ++axis)
@@ -293,7 +320,20 @@ glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& w
   {
     return current;
   }
-  // The frustum as half-spaces of world points.
+  // The frustum as half-spaces of world points, and the box of its corners.
+  const glm::dmat4 clipToWorld = glm::inverse(worldToClip);
+  Box frustumBox;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec4 p =
+      clipToWorld * glm::dvec4(BoxCorner(glm::dvec3(-1.0), glm::dvec3(1.0), corner), 1.0);
+    const glm::dvec3 point = glm::dvec3(p) / p.w;
+    frustumBox.Extend(point, point);
+  }
+  if (!std::isfinite(frustumBox.Diagonal()))
+  {
+    return current;
+  }
   std::vector<HalfSpace> frustum;
   for (const glm::dvec4& plane : FrustumPlanes(worldToClip))
   {
@@ -308,7 +348,7 @@ glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& w
   for (const Box& box : props)
   {
     const glm::dvec2 inView =
-      box.Valid ? DepthsInView(box, frustum, worldToView) : glm::dvec2(std::nan(""));
+      box.Valid ? DepthsInView(box, frustum, frustumBox, worldToView) : glm::dvec2(std::nan(""));
     if (std::isnan(inView.x))
     {
       return current;

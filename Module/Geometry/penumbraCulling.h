@@ -179,7 +179,8 @@ public:
 
   /// A grid over `bounds`; every box added later is clamped to them.
   explicit OccupancyGrid(const Box& bounds);
-  /// Adds the box min..max to the grid cells it overlaps (its faces included), cut to each.
+  /// Adds the box min..max to the grid cells it overlaps (its faces included), cut to each. A
+  /// box that is not finite (a cell with a NaN point, which VTK does not draw) adds nothing.
   void Add(const glm::dvec3& min, const glm::dvec3& max);
   /// The filled cells' boxes: together they hold every box added. Invalid bounds give one
   /// invalid box: nothing is known.

@@ -364,6 +364,27 @@ void TestOccupancyGrid(std::mt19937& rng)
   Check(InAnyBox(boxes, glm::dvec3(4 - wall, 4 - wall, 4 - wall)) &&
       !InAnyBox(boxes, glm::dvec3(4 - 3 * wall, 4 - 3 * wall, 4 - 3 * wall)),
     "a corner of the room is left out up to the walls' thickness");
+  // A cell with a NaN point (VTK draws nothing of it): its box went into the grid's cells and
+  // made their boxes NaN, and TightClippingRange then kept the camera's range for the whole
+  // prop (found by the fuzzer).
+  penumbra::OccupancyGrid withNaN(room);
+  for (const auto& w : walls)
+  {
+    withNaN.Add(w.first, w.second);
+  }
+  withNaN.Add({ std::nan(""), 0.0, -4.0 }, { 4.0, std::nan(""), 4.0 });
+  const std::vector<penumbra::Box> withNaNBoxes = withNaN.Boxes();
+  Check(std::all_of(withNaNBoxes.begin(), withNaNBoxes.end(),
+          [](const penumbra::Box& b)
+          { return std::isfinite(b.Min.x + b.Min.y + b.Min.z + b.Max.x + b.Max.y + b.Max.z); }) &&
+      withNaNBoxes.size() == boxes.size(),
+    "a box with NaN corners adds nothing to the grid");
+  // A box starting a rounding step below a grid face, 0 in the grid's z: the quotient rounded it
+  // into the cell above, whose cut left out the sliver below the face (found by the fuzzer).
+  penumbra::OccupancyGrid sliver(penumbra::Box{ true, { -3, -3, -3 }, { 3, 3, 3 } });
+  sliver.Add({ 1.0, 1.0, -1e-300 }, { 2.0, 2.0, 1.0 });
+  Check(InAnyBox(sliver.Boxes(), glm::dvec3(1.5, 1.5, -1e-300)),
+    "a box just below a grid face keeps its sliver below it");
   Check(penumbra::OccupancyGrid(penumbra::Box()).Boxes().size() == 1 &&
       !penumbra::OccupancyGrid(penumbra::Box()).Boxes().front().Valid,
     "invalid bounds give one invalid box");
@@ -481,6 +502,29 @@ void TestClipBoxByPlanes(std::mt19937& rng)
 }
 } // namespace
 
+/// A positional light 1e30 away, the caster's box straddling the near rectangle: its volume
+/// reaches the near plane. The hull's planes were oriented by a point halfway to the light, whose
+/// distances to them (about the rectangle's size) drowned in the rounding of its coordinates, and
+/// a plane turned the wrong way said no (found by the fuzzer).
+void TestFarPositionalLight()
+{
+  // The fuzzer's input, to the digit: rounded corners happened to give the right answer.
+  const std::array<glm::dvec3, 4> nearCorners = { glm::dvec3(-0.84741850155874099,
+                                                    -1.1190339738393478, 4.6702397190156404),
+    glm::dvec3(2.8277410761418489, -1.1190339738393478, -2.6800784330670711),
+    glm::dvec3(2.8277411038938909, 1.1190339741443474, -2.6800784191910481),
+    glm::dvec3(-0.84741847380669899, 1.1190339741443474, 4.6702397328916634) };
+  const glm::dvec3 lo(-2.359365829657333, -1.2812407731573328, -2.1406158281573329);
+  bool always = true;
+  for (const double far : { 1e3, 1e9, 1e15, 1e20, 1e25, 1e30 })
+  {
+    always = always &&
+      penumbra::VolumeMayReachNearPlane(
+        lo, -lo, glm::dvec4(far, -far, -390.95312494500001, 1.0), nearCorners);
+  }
+  Check(always, "a caster across the near plane reaches it, whatever the light's distance");
+}
+
 int main()
 {
   std::mt19937 rng(11);
@@ -589,6 +633,7 @@ int main()
   Check(badPlans == 0,
     "z-fail draws both caps, z-pass only a seen-through caster's light cap, a wedge fallback "
     "draws back faces");
+  TestFarPositionalLight();
   TestTightClippingRange(rng);
   TestOccupancyGrid(rng);
   TestShadowScissor(rng);

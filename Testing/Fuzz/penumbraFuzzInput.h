@@ -21,6 +21,11 @@
  *   u8 boxCount (mod 11), Box x boxCount: the receivers' boxes; Box kept: the box kept from
  *                       the frame before (StableReceiverBox)
  *   u8 halfSpaceCount (mod 5), per half-space: Point normal, Scalar offset (ClipBox)
+ *   camera:             Point eye, Point focal, u8 flags (mod 3: up y, z or x; bit 2:
+ *                       parallel; bit 3: near 1000 times nearer), u8 near (1e-3 x (1 + near)),
+ *                       u16 far (near x (1.5 + far)), u8 aspect (0.5 + aspect / 64), u8 view
+ *                       angle (5 + angle % 160 degrees): culling, the tight depth range and the
+ *                       occupancy grid (the first box its bounds, the others added)
  *
  * Box: u8 mode (bit 0: invalid), Point, Point (the corners: their min and max).
  *

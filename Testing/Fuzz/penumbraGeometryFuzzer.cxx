@@ -18,6 +18,7 @@
 #include "vtkPolyData.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <array>
@@ -649,6 +650,44 @@ bool IsClosed(const ConvexPolyhedron& shape)
   return forward == backward;
 }
 
+/// The cut holds what it must: every point of a 5^3 lattice in the box that lies inside every
+/// half-space by a margin lies on the inner side of each of the cut's faces (those with an area
+/// above rounding; the cut has slivers between near-duplicate points).
+void CheckCovers(const ConvexPolyhedron& shape, const Box& box,
+  const std::vector<HalfSpace>& halfSpaces, double rounding)
+{
+  const double margin = 1e3 * rounding;
+  for (int k = 0; k < 125; ++k)
+  {
+    const glm::dvec3 t(
+      0.05 + 0.225 * (k % 5), 0.05 + 0.225 * ((k / 5) % 5), 0.05 + 0.225 * (k / 25));
+    const glm::dvec3 p = box.Min + t * (box.Max - box.Min);
+    const bool kept = std::all_of(halfSpaces.begin(), halfSpaces.end(),
+      [&](const HalfSpace& half)
+      {
+        const double length = glm::length(half.Normal);
+        return !(length > 0.0 && std::isfinite(length) && std::isfinite(half.Offset / length)) ||
+          glm::dot(half.Normal / length, p) - half.Offset / length < -margin;
+      });
+    if (!kept || glm::any(glm::lessThan(p - box.Min, glm::dvec3(margin))) ||
+      glm::any(glm::lessThan(box.Max - p, glm::dvec3(margin))))
+    {
+      continue;
+    }
+    for (std::size_t t3 = 0; t3 + 2 < shape.Triangles.size(); t3 += 3)
+    {
+      const glm::dvec3& a = shape.Points[shape.Triangles[t3]];
+      const glm::dvec3 n = glm::cross(
+        shape.Points[shape.Triangles[t3 + 1]] - a, shape.Points[shape.Triangles[t3 + 2]] - a);
+      const double area = glm::length(n);
+      if (area > margin * box.Diagonal())
+      {
+        Require(glm::dot(n / area, p - a) <= rounding, "cut: holds the box cut by the half-spaces");
+      }
+    }
+  }
+}
+
 /// ClipBox: indices in range, points finite, in the box and, unless it left cuts out, in every
 /// half-space, a closed surface of non-negative volume no larger than the box's; the box itself
 /// without half-spaces.
@@ -695,6 +734,7 @@ void CheckClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)
     return;
   }
   Require(IsClosed(shape), "cut: a closed surface");
+  CheckCovers(shape, box, halfSpaces, rounding);
   if (size > 1e-6 * Magnitude(box))
   {
     // About the box's centre and in units of its diagonal, where the volume's products keep
@@ -713,6 +753,28 @@ void CheckClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)
     Require(volume >= -slack && volume <= boxVolume + slack, "cut: volume within the box's");
     Require(!halfSpaces.empty() || std::abs(volume - boxVolume) <= slack,
       "cut: the box itself without half-spaces");
+  }
+}
+
+/// A wedge cut to a box and drawn by its front faces must not reach beyond the wedge, where the
+/// eye may stand (ClipBox's left-out cuts make it Enlarged instead): its points lie in the
+/// wedge's half-spaces, to float rounding.
+void CheckInsideWedge(
+  const std::vector<float>& vertices, int floatsPerVertex, const Wedge& wedge, const Box& box)
+{
+  if (!wedge.Valid || !IsFinite(box) || Magnitude(box) > 1e15)
+  {
+    return;
+  }
+  const double rounding = 1e-5 * (box.Diagonal() + Magnitude(box));
+  for (std::size_t v = 0; v < vertices.size(); v += floatsPerVertex)
+  {
+    const glm::dvec3 p(vertices[v], vertices[v + 1], vertices[v + 2]);
+    for (const HalfSpace& half : wedge.HalfSpaces())
+    {
+      Require(glm::dot(half.Normal, p) - half.Offset <= rounding * glm::length(half.Normal),
+        "wedge bound: a wedge's cut lies in the wedge");
+    }
   }
 }
 
@@ -741,7 +803,8 @@ void CheckWedgeBounds(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4
       Require(IsFinite(p) && std::isfinite(vertices[v + 3]), "wedge bound: finite vertices");
       if (inside)
       {
-        const double rounding = 1e-6 * (inside->Diagonal() + Magnitude(*inside));
+        // Float's relative rounding, and its step between subnormals.
+        const double rounding = 1e-6 * (inside->Diagonal() + Magnitude(*inside)) + 1e-44;
         Require(glm::all(glm::lessThanEqual(inside->Min - rounding, p)) &&
             glm::all(glm::lessThanEqual(p, inside->Max + rounding)),
           "wedge bound: cut inside the receivers' box");
@@ -756,6 +819,10 @@ void CheckWedgeBounds(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4
       a, b, light, radius, box, faces, frontOnly, attributes, 3, vertices, indices);
     Require((shape == WedgeShape::Nothing) == vertices.empty(), "wedge bound: nothing or a shape");
     check(vertices, indices, 7, box.Valid ? &box : nullptr);
+    if (shape == WedgeShape::Planes && box.Valid && finite)
+    {
+      CheckInsideWedge(vertices, 7, Wedge::Build(a, b, light, radius), box);
+    }
   }
   if (receivers.Valid)
   {
@@ -770,8 +837,9 @@ void CheckWedgeBounds(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4
 
 /// The receivers' boxes, their pieces and the cuts of the silhouette edges' wedges to them, as
 /// counting builds them; then DisjointPieces and ClipBox on the decoded boxes and half-spaces.
-void CheckReceiverCuts(ByteReader& in, const CasterTopology& topo, const ShadowVolume& centre,
-  const glm::dvec4& light, double radius, bool frontOnly)
+/// Returns the decoded boxes.
+std::vector<Box> CheckReceiverCuts(ByteReader& in, const CasterTopology& topo,
+  const ShadowVolume& centre, const glm::dvec4& light, double radius, bool frontOnly)
 {
   std::vector<Box> receivers(in.U8() % 11);
   for (Box& box : receivers)
@@ -815,6 +883,262 @@ void CheckReceiverCuts(ByteReader& in, const CasterTopology& topo, const ShadowV
     }
     CheckWedgeBounds(
       a, b, light, radius, stable, pieces, faces.size() == 2 ? faces.data() : nullptr, frontOnly);
+  }
+  return receivers;
+}
+
+// ---- Culling: what the pass decides per caster and light before drawing ----
+
+/// A camera as the pass sees it: its view and projection (OpenGL clip space), clipping range
+/// and near-plane rectangle; Valid where they are finite.
+struct FuzzCamera
+{
+  glm::dmat4 WorldToView{ 1.0 }, WorldToClip{ 1.0 };
+  glm::dvec2 Range{ 0.1, 10.0 };
+  std::array<glm::dvec3, 4> NearCorners;
+  bool Valid = false;
+};
+
+bool IsFinite(const glm::dmat4& m)
+{
+  return IsFinite(m[0]) && IsFinite(m[1]) && IsFinite(m[2]) && IsFinite(m[3]);
+}
+
+/// A point of clip space (x, y, z in [-1, 1]) in the world.
+glm::dvec3 FromClip(const glm::dmat4& clipToWorld, const glm::dvec3& clip)
+{
+  const glm::dvec4 p = clipToWorld * glm::dvec4(clip, 1.0);
+  return glm::dvec3(p) / p.w;
+}
+
+FuzzCamera DecodeCamera(ByteReader& in)
+{
+  FuzzCamera camera;
+  const glm::dvec3 eye = DecodePoint(in), focal = DecodePoint(in);
+  const std::uint8_t flags = in.U8();
+  const glm::dvec3 up = flags % 3 == 0
+    ? glm::dvec3(0, 1, 0)
+    : (flags % 3 == 1 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0));
+  camera.Range.x = 1e-3 * (1 + in.U8()) * ((flags & 8) ? 1e-3 : 1.0);
+  camera.Range.y = camera.Range.x * (1.5 + in.U16());
+  camera.WorldToView = glm::lookAt(eye, focal, up);
+  const double aspect = 0.5 + in.U8() / 64.0;
+  const double angle = glm::radians(5.0 + in.U8() % 160);
+  const double half = 0.5 * glm::length(focal - eye) + 1e-3;
+  const glm::dmat4 projection = (flags & 4)
+    ? glm::ortho(-aspect * half, aspect * half, -half, half, camera.Range.x, camera.Range.y)
+    : glm::perspective(angle, aspect, camera.Range.x, camera.Range.y);
+  camera.WorldToClip = projection * camera.WorldToView;
+  const glm::dmat4 clipToWorld = glm::inverse(camera.WorldToClip);
+  for (int i = 0; i < 4; ++i)
+  {
+    camera.NearCorners[i] =
+      FromClip(clipToWorld, { (i == 1 || i == 2) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, -1.0 });
+  }
+  camera.Valid = IsFinite(camera.WorldToClip) && IsFinite(clipToWorld) &&
+    std::all_of(camera.NearCorners.begin(), camera.NearCorners.end(),
+      [](const glm::dvec3& c) { return IsFinite(c); });
+  return camera;
+}
+
+/// Whether the segment from the light point `from` to `q` meets the box (slab test, the box
+/// already shrunk by the caller's margin so that touching it does not count). Measured from the
+/// end nearer the box along the unit direction to the other: from an end 1e30 away, the
+/// crossings of a box a few units wide round together.
+bool SegmentMeetsBox(const glm::dvec3& from, const glm::dvec3& to, const Box& box)
+{
+  const glm::dvec3 centre = 0.5 * box.Min + 0.5 * box.Max;
+  const bool fromNearer = glm::length(from - centre) < glm::length(to - centre);
+  const glm::dvec3 q = fromNearer ? from : to;
+  const glm::dvec3 towards = (fromNearer ? to : from) - q;
+  const double length = glm::length(towards);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return glm::all(glm::lessThanEqual(box.Min, q)) && glm::all(glm::lessThanEqual(q, box.Max));
+  }
+  const glm::dvec3 d = towards / length;
+  double enter = 0.0, leave = length;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (d[axis] == 0.0)
+    {
+      if (q[axis] < box.Min[axis] || q[axis] > box.Max[axis])
+      {
+        return false;
+      }
+      continue;
+    }
+    double t0 = (box.Min[axis] - q[axis]) / d[axis], t1 = (box.Max[axis] - q[axis]) / d[axis];
+    if (t0 > t1)
+    {
+      std::swap(t0, t1);
+    }
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter <= leave;
+}
+
+/// The caster's box shrunk by a margin beyond rounding, or invalid where it has no inside.
+Box Shrunk(const glm::dvec3& min, const glm::dvec3& max)
+{
+  Box box;
+  box.Extend(min, max);
+  const double margin = 1e-6 * (box.Diagonal() + Magnitude(box));
+  box.Min += margin;
+  box.Max -= margin;
+  box.Valid = IsFinite(box) && glm::all(glm::lessThan(box.Min, box.Max));
+  return box;
+}
+
+/// Where the light stands for a point: its centre and, for a radius, six points of its sphere
+/// (positional) or directions at its angular radius (directional); unit directions towards a
+/// directional light, reached at `far`.
+std::vector<glm::dvec3> LightPoints(
+  const glm::dvec4& light, double radius, const glm::dvec3& from, double far)
+{
+  std::vector<glm::dvec3> points;
+  if (light.w != 0.0)
+  {
+    points.push_back(glm::dvec3(light));
+    for (int k = 0; k < 6; ++k)
+    {
+      glm::dvec3 offset(0.0);
+      offset[k / 2] = (k % 2 ? -radius : radius);
+      points.push_back(glm::dvec3(light) + offset);
+    }
+    return points;
+  }
+  const glm::dvec3 towards = UnitDirection(glm::dvec3(light));
+  const glm::dvec3 side = UnitDirection(
+    glm::cross(towards, std::abs(towards.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+  const glm::dvec3 other = glm::cross(towards, side);
+  const double r = std::min(radius, 1.5);
+  for (const glm::dvec3& d : { towards, std::cos(r) * towards + std::sin(r) * side,
+         std::cos(r) * towards - std::sin(r) * side, std::cos(r) * towards + std::sin(r) * other,
+         std::cos(r) * towards - std::sin(r) * other })
+  {
+    points.push_back(from + far * d);
+  }
+  return points;
+}
+
+/// VolumeMayReachNearPlane and ShadowMayReachView may be false alarms, never wrong: where a
+/// point of the near rectangle (of the view) lies in the caster box's shadow from a point of the
+/// light, they must say so.
+void CheckCulling(
+  const FuzzCamera& camera, const CasterTopology& topo, const glm::dvec4& light, double radius)
+{
+  const std::array<glm::dvec3, 4>& near = camera.NearCorners;
+  const bool reaches = VolumeMayReachNearPlane(topo.BoundsMin, topo.BoundsMax, light, near);
+  const bool inView =
+    ShadowMayReachView(topo.BoundsMin, topo.BoundsMax, light, radius, camera.WorldToClip);
+  (void)WedgesDrawnByFrontFaces(topo.BoundsMin, topo.BoundsMax, light, radius, near, false);
+  (void)BoxBeyondNearPlane(topo.BoundsMin, topo.BoundsMax, camera.WorldToClip);
+  const Box caster = Shrunk(topo.BoundsMin, topo.BoundsMax);
+  const double reach = 4.0 * (Magnitude(caster) + camera.Range.y + glm::length(glm::dvec3(light)));
+  if (!camera.Valid || topo.Points.empty() || !caster.Valid || !IsFinite(light) ||
+    !(radius >= 0.0) || radius > 1e6 || !(reach < 1e100) ||
+    (light.w == 0.0 && !(glm::length(glm::dvec3(light)) > 1e-100)))
+  {
+    return;
+  }
+  for (int i = 0; i <= 4 && !reaches; ++i)
+  {
+    for (int j = 0; j <= 4; ++j)
+    {
+      const glm::dvec3 q = (1.0 - j / 4.0) * ((1.0 - i / 4.0) * near[0] + i / 4.0 * near[1]) +
+        j / 4.0 * ((1.0 - i / 4.0) * near[3] + i / 4.0 * near[2]);
+      const glm::dvec3 from = LightPoints(light, 0.0, q, reach)[0];
+      Require(!SegmentMeetsBox(from, q, caster), "a volume reaching the near plane is seen");
+    }
+  }
+  const glm::dmat4 clipToWorld = glm::inverse(camera.WorldToClip);
+  for (int k = 0; k < 27 && !inView; ++k)
+  {
+    const glm::dvec3 q = FromClip(clipToWorld, { k % 3 - 1.0, (k / 3) % 3 - 1.0, k / 9 - 1.0 });
+    for (const glm::dvec3& from : LightPoints(light, radius, q, reach))
+    {
+      Require(!IsFinite(q) || !SegmentMeetsBox(from, q, caster), "a shadow in view is seen");
+    }
+  }
+}
+
+/// TightClippingRange: finite, within the camera's, near at most 0.8 of far, and every corner
+/// and centre of a prop's box in view within it.
+void CheckTightRange(const FuzzCamera& camera, const std::vector<Box>& props)
+{
+  const glm::dvec2 range =
+    TightClippingRange(props, camera.WorldToView, camera.WorldToClip, camera.Range);
+  if (!camera.Valid)
+  {
+    return;
+  }
+  Require(std::isfinite(range.x) && std::isfinite(range.y) && range.x > 0.0 && range.x < range.y,
+    "tight range: finite, positive and ordered");
+  Require(
+    range.x >= camera.Range.x && range.y <= camera.Range.y, "tight range: within the camera's");
+  Require(range == camera.Range || range.x <= 0.8 * range.y, "tight range: near at most 0.8 far");
+  for (const Box& box : props)
+  {
+    if (!IsFinite(box))
+    {
+      continue;
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      const glm::dvec3 p = k < 8 ? BoxCorner(box.Min, box.Max, k) : 0.5 * box.Min + 0.5 * box.Max;
+      if (glm::length(p) > 1e12)
+      {
+        continue; // whether a point 1e30 away is in view drowns in the matrix's rounding
+      }
+      const glm::dvec4 clip = camera.WorldToClip * glm::dvec4(p, 1.0);
+      const bool seen =
+        std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w && std::abs(clip.z) <= clip.w;
+      const double depth = -(camera.WorldToView * glm::dvec4(p, 1.0)).z;
+      const double slack = 1e-9 * (std::abs(depth) + camera.Range.y);
+      Require(!seen || (depth >= range.x - slack && depth <= range.y + slack),
+        "tight range: what is in view stays in it");
+    }
+  }
+}
+
+/// OccupancyGrid: its boxes together hold every box added, cut to its bounds.
+void CheckOccupancy(const Box& bounds, const std::vector<Box>& added)
+{
+  OccupancyGrid grid(bounds);
+  for (const Box& box : added)
+  {
+    if (box.Valid)
+    {
+      grid.Add(box.Min, box.Max);
+    }
+  }
+  const std::vector<Box> cells = grid.Boxes();
+  if (!IsFinite(bounds) || Magnitude(bounds) > 1e300)
+  {
+    return;
+  }
+  for (const Box& box : added)
+  {
+    if (!IsFinite(box))
+    {
+      continue;
+    }
+    const glm::dvec3 low = glm::clamp(box.Min, bounds.Min, bounds.Max);
+    const glm::dvec3 high = glm::clamp(box.Max, bounds.Min, bounds.Max);
+    for (int k = 0; k < 9; ++k)
+    {
+      // (The middle held to the box: halving a subnormal rounds.)
+      const glm::dvec3 p =
+        k < 8 ? BoxCorner(low, high, k) : glm::clamp(0.5 * low + 0.5 * high, low, high);
+      Require(std::any_of(cells.begin(), cells.end(),
+                [&p](const Box& cell) {
+                  return glm::all(glm::lessThanEqual(cell.Min, p)) &&
+                    glm::all(glm::lessThanEqual(p, cell.Max));
+                }),
+        "the occupancy grid holds every box added");
+    }
   }
 }
 
@@ -991,6 +1315,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sample.w != 0.0 ? glm::dvec4(glm::dvec3(sample) - topo.Origin, 1.0) : sample);
   }
   CheckCounting(topo, local, radius, frontOnly, sides, localSamples, points);
-  CheckReceiverCuts(in, topo, sides, local, radius, frontOnly);
+  const std::vector<Box> boxes = CheckReceiverCuts(in, topo, sides, local, radius, frontOnly);
+
+  const FuzzCamera camera = DecodeCamera(in);
+  CheckCulling(camera, topo, local, radius);
+  CheckTightRange(camera, boxes);
+  if (!boxes.empty())
+  {
+    CheckOccupancy(boxes.front(), std::vector<Box>(boxes.begin() + 1, boxes.end()));
+  }
   return 0;
 }
