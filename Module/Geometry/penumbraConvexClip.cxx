@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 namespace penumbra
 {
@@ -86,7 +87,11 @@ bool Cut(std::vector<Polygon>& polygons, const HalfSpace& half, double tolerance
       }
       if ((sp < -tolerance && sq > tolerance) || (sp > tolerance && sq < -tolerance))
       {
-        const glm::dvec3 crossing = p + (q - p) * (sp / (sp - sq));
+        // From the lesser end, so that the two faces sharing this side (which walk it in
+        // opposite directions) get the same point to the last bit.
+        const bool fromP = std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+        const glm::dvec3 crossing =
+          fromP ? p + (q - p) * (sp / (sp - sq)) : q + (p - q) * (sq / (sq - sp));
         inside.push_back(crossing);
         cut.push_back(crossing);
       }
@@ -149,19 +154,33 @@ ConvexPolyhedron Triangulate(const std::vector<Polygon>& polygons, double tolera
 /// closed, without cracks or T-junctions that could let a view ray through.
 bool Closed(const ConvexPolyhedron& shape)
 {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> forward, backward;
+  // Each side as its two indices, lower first, and whether it is walked from the higher: sorted,
+  // every side's walks must split evenly between the two directions.
+  std::vector<std::uint64_t> sides;
+  sides.reserve(shape.Triangles.size());
   for (std::size_t t = 0; t + 2 < shape.Triangles.size(); t += 3)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const std::uint32_t a = shape.Triangles[t + k], b = shape.Triangles[t + (k + 1) % 3];
-      forward.emplace_back(a, b);
-      backward.emplace_back(b, a);
+      const std::uint64_t a = shape.Triangles[t + k], b = shape.Triangles[t + (k + 1) % 3];
+      sides.push_back((std::min(a, b) << 33) | (std::max(a, b) << 1) | (a > b ? 1 : 0));
     }
   }
-  std::sort(forward.begin(), forward.end());
-  std::sort(backward.begin(), backward.end());
-  return forward == backward;
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t first = 0; first < sides.size();)
+  {
+    std::size_t last = first, reversed = 0;
+    for (; last < sides.size() && (sides[last] >> 1) == (sides[first] >> 1); ++last)
+    {
+      reversed += sides[last] & 1;
+    }
+    if (2 * reversed != last - first)
+    {
+      return false;
+    }
+    first = last;
+  }
+  return true;
 }
 } // namespace
 
@@ -371,13 +390,17 @@ ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpace
   for (const HalfSpace& half : halfSpaces)
   {
     const double length = glm::length(half.Normal);
-    if (length > 0.0 && std::isfinite(length) && std::isfinite(half.Offset))
+    if (!(length > 0.0) || !std::isfinite(length))
     {
-      units.push_back({ half.Normal / length, half.Offset / length });
+      continue;
+    }
+    const HalfSpace unit{ half.Normal / length, half.Offset / length };
+    if (std::isfinite(unit.Offset))
+    {
+      units.push_back(unit);
     }
   }
-  const std::vector<Polygon> faces = BoxFaces(box);
-  std::vector<Polygon> polygons = faces;
+  std::vector<Polygon> polygons = BoxFaces(box);
   for (const HalfSpace& unit : units)
   {
     if (!Cut(polygons, unit, tolerance))
@@ -390,10 +413,11 @@ ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpace
   {
     return shape;
   }
-  // Cuts by nearly parallel planes place their crossings with errors beyond the tolerance, and
-  // faces then disagree on their shared corners. Cut again, leaving out each cut that opens the
-  // surface: a larger bound only costs fragments, a crack would lose them.
-  polygons = faces;
+  // Nearly parallel planes (or a cap whose points lie nearly on a line) can still leave faces
+  // disagreeing on their shared corners. Cut again, leaving out each cut that opens the surface:
+  // the bound is larger, which the caller must allow for (a wedge so cut is drawn by its back
+  // faces), and a crack would let view rays through.
+  polygons = BoxFaces(box);
   std::size_t leftOut = 0;
   for (const HalfSpace& unit : units)
   {

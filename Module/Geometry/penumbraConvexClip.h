@@ -110,9 +110,11 @@ VTKPENUMBRAGEOMETRY_EXPORT std::vector<Box> DisjointPieces(
 /**
  * The box cut by every half-space: a closed surface. Empty when nothing of the box is left (or
  * less than a sliver of 1e-12 of its size plus its distance from the origin). Half-spaces with a
- * zero or non-finite normal are ignored, and so is a cut whose rounding would leave the surface
- * open (nearly parallel planes, whose crossings faces place differently; counted in
- * CutsLeftOut): the result then holds the exact cut, a larger bound.
+ * zero or non-finite normal (or an offset that overflows once the normal is made unit) are
+ * ignored, and so is a cut whose rounding would leave the surface open (nearly parallel planes,
+ * a cap whose points lie nearly on a line; counted in CutsLeftOut): the result then holds the
+ * exact cut but is larger, which a caller must allow for (AppendWedgeBound reports such a wedge
+ * as Enlarged).
  */
 VTKPENUMBRAGEOMETRY_EXPORT ConvexPolyhedron ClipBox(
   const Box& box, const std::vector<HalfSpace>& halfSpaces);

@@ -32,6 +32,13 @@ WedgeShape EdgeBound(const glm::dvec3& from, const glm::dvec3& to, const glm::dv
   return WedgeShape::FullViewport;
 }
 
+/// `shape`, or Enlarged for a wedge whose cut left a plane out (it may then reach beyond the
+/// wedge, and drawn by front faces would miss the points of an eye inside it).
+WedgeShape Loosened(WedgeShape shape, const ConvexPolyhedron& cut)
+{
+  return shape == WedgeShape::Planes && cut.CutsLeftOut > 0 ? WedgeShape::Enlarged : shape;
+}
+
 /// Appends `cut`'s points (w = 1), each followed by `attributes` and then `extra`, and its
 /// triangles.
 void AppendPolyhedron(const ConvexPolyhedron& cut, const float* attributes, int attributeCount,
@@ -110,7 +117,7 @@ WedgeShape AppendWedgeBound(const glm::dvec3& from, const glm::dvec3& to, const 
       return WedgeShape::Nothing;
     }
     AppendPolyhedron(cut, attributes, attributeCount, nullptr, 0, vertices, indices);
-    return shape;
+    return Loosened(shape, cut);
   }
   Wedge wedge;
   LightPyramid pyramid;
@@ -141,6 +148,7 @@ WedgeShape AppendWedgeBoundInPieces(const glm::dvec3& from, const glm::dvec3& to
   const WedgeShape shape =
     CutBound(from, to, light, radius, receivers, faces, frontFacesOnly, halfSpaces);
   bool drawn = false;
+  WedgeShape drawnShape = shape;
   for (const Box& piece : pieces)
   {
     const ConvexPolyhedron cut = ClipBox(piece, halfSpaces);
@@ -148,13 +156,17 @@ WedgeShape AppendWedgeBoundInPieces(const glm::dvec3& from, const glm::dvec3& to
     {
       continue;
     }
+    if (Loosened(shape, cut) == WedgeShape::Enlarged)
+    {
+      drawnShape = WedgeShape::Enlarged;
+    }
     const float bounds[6] = { static_cast<float>(piece.Min.x), static_cast<float>(piece.Min.y),
       static_cast<float>(piece.Min.z), static_cast<float>(piece.Max.x),
       static_cast<float>(piece.Max.y), static_cast<float>(piece.Max.z) };
     AppendPolyhedron(cut, attributes, attributeCount, bounds, 6, vertices, indices);
     drawn = true;
   }
-  return drawn ? shape : WedgeShape::Nothing;
+  return drawn ? drawnShape : WedgeShape::Nothing;
 }
 
 } // namespace penumbra

@@ -27,6 +27,8 @@ struct EdgeFace;
 enum class WedgeShape
 {
   Planes,       ///< a Wedge: four planes around the edge
+  Enlarged,     ///< a Wedge cut to the receivers with a cut left out (ClipBox's CutsLeftOut):
+                ///< it may reach beyond the wedge, towards the eye, so draw it by back faces
   Pyramid,      ///< a LightPyramid: the edge points at the light
   FullViewport, ///< no bound of its own: the receivers' box, or a triangle over the viewport
   Nothing       ///< the bound misses the receivers' box

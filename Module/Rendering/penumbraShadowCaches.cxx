@@ -334,8 +334,8 @@ void WedgeBuffer::AppendEdgeTo(WedgeGeometry& geometry, const glm::dvec3& from,
   {
     return; // the bound misses the receivers' box: nothing to draw
   }
-  // Pyramids and edges with no bound of their own are both fallbacks: their caster's wedges are
-  // drawn by back faces.
+  // Pyramids, edges with no bound of their own and wedges whose cut had to leave a plane out
+  // (Enlarged) are fallbacks: their caster's wedges are drawn by back faces.
   ++(shape == WedgeShape::Planes ? geometry.Wedges : geometry.Fallbacks);
   geometry.FullViewport += shape == WedgeShape::FullViewport;
 }
