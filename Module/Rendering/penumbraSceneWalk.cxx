@@ -378,6 +378,8 @@ struct GlyphPointArrays
   vtkBitArray* Mask;
 };
 
+/// The arrays of `points` that `mapper` reads its glyphs' scales, orientations, sources and
+/// mask from (none that it does not use).
 GlyphPointArrays GlyphPointArraysOf(vtkGlyph3DMapper* mapper, vtkDataSet* points)
 {
   return { (mapper->*GlyphArrays::Scale)(points), (mapper->*GlyphArrays::Orientation)(points),
@@ -400,8 +402,10 @@ std::size_t SourceEntry(vtkDataArray* sourceIndex, vtkIdType id, std::size_t cou
 }
 
 /// The glyphs of one input's points, numbered on from `part` (masked and unplaced points keep
-/// their numbers); `nonFinite` is set where one has no finite matrix. False where VTK draws
-/// none of the mapper's glyphs: an orientation array of the wrong size, which VTK reports.
+/// their numbers); `nonFinite` is set where one has no finite matrix. False for an orientation
+/// array of the wrong size, which VTK reports: the caller then takes none of the mapper's glyphs,
+/// although VTK 9.1 (vtkOpenGLGlyph3DMapper::RebuildStructures) skips that input only and draws
+/// the other inputs' (composite input: a known difference, not fixed).
 bool AddGlyphsAt(const GlyphSet& glyphs, vtkGlyph3DMapper* mapper, vtkDataSet* points,
   std::size_t& part, bool& nonFinite, std::vector<DrawnSurface>& surfaces)
 {

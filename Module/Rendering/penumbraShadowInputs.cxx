@@ -228,9 +228,9 @@ void AddShadowKeys(ShadowInputs& inputs, vtkProp* prop)
   inputs.Add(static_cast<double>(vtkSoftShadowPass::GetShadowPlane(prop)));
 }
 
-/// The times of `leaf` that AddLeaf records: a prop's own (for an actor whose look is recorded
-/// by value, without its property's), or for an assembly's part, whose own time moves every
-/// frame, its properties' where its look is not recorded by value.
+/// The times of `leaf` that AddLeaf records. A prop of its own: its time (an actor whose look is
+/// recorded by value: its vtkProp3D time, without its properties'). An assembly's part, whose
+/// own time moves every frame: its properties' times, unless its look is recorded by value.
 void AddLeafTimes(ShadowInputs& inputs, vtkProp* leaf, vtkActor* actor, bool part, bool lookByValue)
 {
   if (!part)
