@@ -322,6 +322,12 @@ void TestClosedSphere(std::mt19937& rng)
         Winding(topo, every, light, centre + 0.01 * away, rng) == 1 &&
         Winding(topo, volume, light, centre + 3.0 * away, rng) == 1,
       "every triangle: two surfaces behind the sphere, one inside; front faces: one behind");
+    // Counted with every triangle each silhouette edge is walked twice: a weighted count draws
+    // each side once, sparing half the side indices; front faces walk each once, sparing none.
+    Check(every.Silhouette.size() == volume.Silhouette.size() &&
+        every.Sides.size() == 2 * volume.Sides.size() &&
+        every.RepeatedSideIndices() == volume.Sides.size() && volume.RepeatedSideIndices() == 0,
+      "every triangle: the second copy of each side is repeated; front faces: none");
   }
   // A light inside a closed mesh: nothing outside it sees the light.
   Check(!ShadowVolume::FrontFacesSuffice(topo, { 0.1, 0.05, -0.1, 1.0 }),
