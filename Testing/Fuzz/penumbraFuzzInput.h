@@ -26,6 +26,13 @@
  *                       u16 far (near x (1.5 + far)), u8 aspect (0.5 + aspect / 64), u8 view
  *                       angle (5 + angle % 160 degrees): culling, the tight depth range and the
  *                       occupancy grid (the first box its bounds, the others added)
+ *   glyphs:             u8 flags (bit 0: scaling; bits 1-2 mod 3: scale mode; bit 3:
+ *                       clamping; bits 4-5 mod 3: orientation mode), Scalar factor, Scalar
+ *                       range x 2, Point scale tuple, Point position, Scalar orientation x 4,
+ *                       u8 components (mod 4); imposters: Point centre, Point axis, Scalar
+ *                       radius, Scalar length, Point actor translation
+ *   plateaus:           u8 count (mod 9), Point x count (FitReceiverPlane), Point origin,
+ *                       Point normal (the receiver plane of BuildPlateaus)
  *
  * Box: u8 mode (bit 0: invalid), Point, Point (the corners: their min and max).
  *

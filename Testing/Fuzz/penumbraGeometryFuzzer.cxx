@@ -6,7 +6,9 @@
 #include "penumbraConvexClip.h"
 #include "penumbraCulling.h"
 #include "penumbraFuzzInput.h"
+#include "penumbraGlyphs.h"
 #include "penumbraLightSamples.h"
+#include "penumbraPlateaus.h"
 #include "penumbraSampleCounting.h"
 #include "penumbraShadowVolume.h"
 #include "penumbraWedge.h"
@@ -941,6 +943,15 @@ FuzzCamera DecodeCamera(ByteReader& in)
   return camera;
 }
 
+/// Whether the camera's near rectangle lies within 1e12 of the origin: the near plane of an eye
+/// 1e30 away, or of a view 1e30 wide, drowns in the rounding of its corners, and what lies in
+/// its view is no longer decided to the precision the checks need.
+bool NearBy(const FuzzCamera& camera)
+{
+  return std::all_of(camera.NearCorners.begin(), camera.NearCorners.end(),
+    [](const glm::dvec3& c) { return glm::length(c) < 1e12; });
+}
+
 /// Whether the segment from the light point `from` to `q` meets the box (slab test, the box
 /// already shrunk by the caller's margin so that touching it does not count). Measured from the
 /// end nearer the box along the unit direction to the other: from an end 1e30 away, the
@@ -1037,8 +1048,8 @@ void CheckCulling(
   (void)BoxBeyondNearPlane(topo.BoundsMin, topo.BoundsMax, camera.WorldToClip);
   const Box caster = Shrunk(topo.BoundsMin, topo.BoundsMax);
   const double reach = 4.0 * (Magnitude(caster) + camera.Range.y + glm::length(glm::dvec3(light)));
-  if (!camera.Valid || topo.Points.empty() || !caster.Valid || !IsFinite(light) ||
-    !(radius >= 0.0) || radius > 1e6 || !(reach < 1e100) ||
+  if (!camera.Valid || !NearBy(camera) || topo.Points.empty() || !caster.Valid ||
+    !IsFinite(light) || !(radius >= 0.0) || radius > 1e6 || !(reach < 1e100) ||
     (light.w == 0.0 && !(glm::length(glm::dvec3(light)) > 1e-100)))
   {
     return;
@@ -1070,7 +1081,7 @@ void CheckTightRange(const FuzzCamera& camera, const std::vector<Box>& props)
 {
   const glm::dvec2 range =
     TightClippingRange(props, camera.WorldToView, camera.WorldToClip, camera.Range);
-  if (!camera.Valid)
+  if (!camera.Valid || !NearBy(camera))
   {
     return;
   }
@@ -1139,6 +1150,149 @@ void CheckOccupancy(const Box& bounds, const std::vector<Box>& added)
                 }),
         "the occupancy grid holds every box added");
     }
+  }
+}
+
+// ---- Glyph and imposter matrices, receiver planes and plateaus ----
+
+/// GlyphScale, GlyphMatrix and the imposters' matrices: finite for finite input, no zero scale
+/// (VTK's 1e-10), the glyph at its position with the volume its scales give, a false return
+/// exactly for the input the headers name.
+void CheckGlyphs(ByteReader& in)
+{
+  GlyphSettings settings;
+  const std::uint8_t flags = in.U8();
+  settings.Scaling = (flags & 1) != 0;
+  settings.ScaleMode = (flags >> 1) % 3;
+  settings.Clamping = (flags & 8) != 0;
+  settings.OrientationMode = (flags >> 4) % 3;
+  settings.ScaleFactor = DecodeScalar(in);
+  settings.Range[0] = DecodeScalar(in);
+  settings.Range[1] = DecodeScalar(in);
+  const glm::dvec3 tuple = DecodePoint(in), position = DecodePoint(in);
+  const double orientation[4] = { DecodeScalar(in), DecodeScalar(in), DecodeScalar(in),
+    DecodeScalar(in) };
+  const int components = in.U8() % 4;
+  const glm::dvec3 scale = GlyphScale(settings, components ? &tuple.x : nullptr, components);
+  const bool finiteSettings = std::isfinite(settings.ScaleFactor) &&
+    std::isfinite(settings.Range[0]) && std::isfinite(settings.Range[1]) &&
+    std::abs(settings.ScaleFactor) < 1e100 && glm::length(tuple) < 1e100;
+  if (finiteSettings && IsFinite(tuple))
+  {
+    Require(IsFinite(scale) && glm::all(glm::notEqual(scale, glm::dvec3(0.0))),
+      "glyph scale finite, never zero");
+  }
+  glm::dmat4 matrix(0.0);
+  const int count = settings.OrientationMode == GlyphSettings::Quaternion ? 4 : 3;
+  const bool finiteOrientation =
+    std::all_of(orientation, orientation + count, [](double v) { return std::isfinite(v); });
+  const bool placed = GlyphMatrix(settings, position, orientation, scale, matrix);
+  Require(placed == finiteOrientation, "a glyph is placed exactly when its orientation is finite");
+  if (placed && IsFinite(position) && IsFinite(scale) && glm::length(position) < 1e100 &&
+    glm::length(scale) < 1e100 &&
+    glm::length(glm::dvec3(orientation[0], orientation[1], orientation[2])) < 1e100 &&
+    std::abs(orientation[3]) < 1e100)
+  {
+    Require(IsFinite(matrix), "glyph matrix finite");
+    Require(glm::length(glm::dvec3(matrix[3]) - position) <= 1e-9 * (1.0 + glm::length(position)),
+      "the glyph stands at its point");
+    const glm::dvec3 scaled = settings.Scaling ? scale : glm::dvec3(1.0);
+    const double volume = std::abs(scaled.x * scaled.y * scaled.z);
+    if (volume > 1e-200 && volume < 1e200)
+    {
+      Require(std::abs(std::abs(glm::determinant(glm::dmat3(matrix))) - volume) <= 1e-6 * volume,
+        "a glyph's matrix keeps the volume its scales give");
+    }
+  }
+
+  const glm::dvec3 centre = DecodePoint(in), axis = DecodePoint(in);
+  const double radius = DecodeScalar(in), length = DecodeScalar(in);
+  glm::dmat4 actor(1.0);
+  const glm::dvec3 moved = DecodePoint(in);
+  actor[3] = glm::dvec4(IsFinite(moved) ? moved : glm::dvec3(0.0), 1.0);
+  glm::dmat4 sphere(0.0), stick(0.0);
+  const bool sphereOk = ImposterSphereMatrix(actor, centre, radius, sphere);
+  Require(
+    sphereOk == (IsFinite(centre) && IsFinite(actor) && std::isfinite(radius) && radius > 0.0),
+    "an imposter sphere is placed exactly for a finite centre and a positive radius");
+  if (sphereOk && glm::length(centre) < 1e100 && radius < 1e100 && glm::length(actor[3]) < 1e100)
+  {
+    Require(IsFinite(sphere) && sphere[0][0] == radius && sphere[1][1] == radius &&
+        sphere[2][2] == radius,
+      "an imposter sphere has its radius, unscaled");
+  }
+  const bool stickOk = ImposterStickMatrix(actor, centre, axis, length, radius, stick);
+  if (stickOk && glm::length(centre) < 1e100 && glm::length(axis) < 1e100 &&
+    std::abs(length) < 1e100 && radius < 1e100 && glm::length(actor[3]) < 1e100)
+  {
+    Require(IsFinite(stick), "an imposter stick's matrix is finite");
+  }
+  Require(
+    !stickOk || (std::isfinite(length) && length > 0.0 && std::isfinite(radius) && radius > 0.0),
+    "an imposter stick needs a positive length and radius");
+}
+
+/// FitReceiverPlane: a unit normal, every finite point within the thickness of the plane and
+/// within the extent along it; PlateauIntensity within [0, 1] and rising; BuildPlateaus finite,
+/// its depths in [0, 1], whole triangles.
+void CheckPlateaus(
+  ByteReader& in, const CasterTopology& topo, const glm::dvec4& light, double radius)
+{
+  std::vector<glm::dvec3> points(in.U8() % 9);
+  for (glm::dvec3& p : points)
+  {
+    p = DecodePoint(in);
+  }
+  PlaneFit fit;
+  if (FitReceiverPlane(points, fit))
+  {
+    Require(std::abs(glm::length(fit.Plane.Normal) - 1.0) < 1e-9, "a fitted plane's unit normal");
+    for (const glm::dvec3& p : points)
+    {
+      if (!IsFinite(p) || glm::length(p) > 1e100)
+      {
+        continue;
+      }
+      const double rounding = 1e-9 * (glm::length(p) + glm::length(fit.Plane.Origin) + 1.0);
+      Require(std::abs(fit.Plane.Height(p)) <= fit.Thickness + rounding,
+        "points within the fitted plane's thickness");
+      const glm::dvec2 uv = fit.Plane.ToPlane(p);
+      Require(glm::all(glm::lessThanEqual(fit.Min - rounding, uv)) &&
+          glm::all(glm::lessThanEqual(uv, fit.Max + rounding)),
+        "points within the fitted plane's extent");
+    }
+  }
+  double previous = 0.0;
+  for (int k = 0; k <= 8; ++k)
+  {
+    const double intensity = PlateauIntensity(k / 8.0, PlateauFalloff::Sinusoidal);
+    Require(intensity >= 0.0 && intensity <= 1.0 && intensity >= previous,
+      "plateau intensity within [0, 1], rising");
+    previous = intensity;
+  }
+
+  ReceiverPlane plane;
+  if (!ReceiverPlane::MakeNear(DecodePoint(in), DecodePoint(in), topo.Origin, plane))
+  {
+    return;
+  }
+  // As the pass gives them: a directional light as a unit direction.
+  const glm::dvec4 world = light.w != 0.0 ? glm::dvec4(glm::dvec3(light) + topo.Origin, 1.0)
+                                          : glm::dvec4(UnitDirection(glm::dvec3(light)), 0.0);
+  const ShadowVolume volume = ShadowVolume::Build(topo, light, false, true);
+  std::vector<PlateauVertex> triangles;
+  const glm::dmat4 toWorld = glm::translate(glm::dmat4(1.0), topo.Origin);
+  (void)BuildPlateaus(topo, volume, toWorld, world, radius, plane, triangles);
+  Require(triangles.size() % 3 == 0, "plateaus: whole triangles");
+  const bool sane = IsFinite(world) && std::isfinite(radius) && std::abs(radius) < 1e100 &&
+    (world.w != 0.0 || std::abs(radius) < 1.5) && glm::length(glm::dvec3(world)) < 1e100 &&
+    Magnitude(Box{ true, topo.BoundsMin, topo.BoundsMax }) < 1e30 &&
+    glm::length(plane.Origin) < 1e30; // a plane 1e283 away puts every shadow beyond float range
+  for (const PlateauVertex& v : triangles)
+  {
+    Require(!sane || (std::isfinite(v.U) && std::isfinite(v.V)), "plateau vertices finite");
+    Require(!(v.T < 0.0f) && !(v.T > 1.0f) && (!sane || std::isfinite(v.T)),
+      "plateau depth within [0, 1]");
   }
 }
 
@@ -1324,5 +1478,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     CheckOccupancy(boxes.front(), std::vector<Box>(boxes.begin() + 1, boxes.end()));
   }
+  CheckGlyphs(in);
+  CheckPlateaus(in, topo, local, radius);
   return 0;
 }
