@@ -6,6 +6,14 @@
 
 vtkStandardNewMacro(vtkPenumbraLayeredTexture);
 
+void vtkPenumbraLayeredTexture::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Layers: " << this->Depth << " of " << this->Width << " x " << this->Height
+     << (this->Target == GL_TEXTURE_2D_ARRAY ? " (2D array)" : " (not allocated as layers)")
+     << "\n";
+}
+
 bool vtkPenumbraLayeredTexture::AllocateLayers(
   unsigned int width, unsigned int height, unsigned int layers, int components, int vtkType)
 {

@@ -21,6 +21,7 @@ class vtkPenumbraLayeredTexture : public vtkTextureObject
 public:
   static vtkPenumbraLayeredTexture* New();
   vtkTypeMacro(vtkPenumbraLayeredTexture, vtkTextureObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Allocates `layers` layers of width x height texels of `components` of `vtkType` (or of
   /// the internal format, format and type set before), as vtkTextureObject::Allocate3D does for
