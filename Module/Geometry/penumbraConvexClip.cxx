@@ -65,16 +65,24 @@ bool Cut(std::vector<Polygon>& polygons, const HalfSpace& half, double tolerance
   std::vector<Polygon> kept;
   Polygon cut;
   bool anyOutside = false;
+  std::vector<double> sides;
   for (const Polygon& polygon : polygons)
   {
     Polygon inside;
     bool inPlane = true;
+    // Each corner's side once, by one expression, so that every face holding it agrees (two
+    // expressions could be contracted to fused multiply-adds differently).
+    sides.resize(polygon.size());
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      sides[i] = glm::dot(half.Normal, polygon[i]) - half.Offset;
+    }
     for (std::size_t i = 0; i < polygon.size(); ++i)
     {
       const glm::dvec3& p = polygon[i];
       const glm::dvec3& q = polygon[(i + 1) % polygon.size()];
-      const double sp = glm::dot(half.Normal, p) - half.Offset;
-      const double sq = glm::dot(half.Normal, q) - half.Offset;
+      const double sp = sides[i];
+      const double sq = sides[(i + 1) % polygon.size()];
       anyOutside = anyOutside || sp > tolerance;
       inPlane = inPlane && std::abs(sp) <= tolerance;
       if (sp <= tolerance)
@@ -90,8 +98,9 @@ bool Cut(std::vector<Polygon>& polygons, const HalfSpace& half, double tolerance
         // From the lesser end, so that the two faces sharing this side (which walk it in
         // opposite directions) get the same point to the last bit.
         const bool fromP = std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-        const glm::dvec3 crossing =
-          fromP ? p + (q - p) * (sp / (sp - sq)) : q + (p - q) * (sq / (sq - sp));
+        const glm::dvec3 &from = fromP ? p : q, &to = fromP ? q : p;
+        const double sFrom = fromP ? sp : sq, sTo = fromP ? sq : sp;
+        const glm::dvec3 crossing = from + (to - from) * (sFrom / (sFrom - sTo));
         inside.push_back(crossing);
         cut.push_back(crossing);
       }

@@ -81,7 +81,10 @@ glm::dvec2 DepthsInView(const Box& box, const std::vector<HalfSpace>& frustum,
   // (a stray point) would lose the view's few units to that.
   Box grown = box;
   const glm::dvec3 margin(1e-6 * box.Diagonal());
-  const glm::dvec3 frustumMargin(1e-6 * frustumBox.Diagonal());
+  // Generous: the far corners of a range of 1e14 or more (from the inverse of the projection)
+  // are off by a good share of the far plane, and the cut is only there to bring boxes 1e30
+  // wide down to the view's scale (a review).
+  const glm::dvec3 frustumMargin(0.5 * frustumBox.Diagonal());
   grown.Min = glm::max(grown.Min - margin, frustumBox.Min - frustumMargin);
   grown.Max = glm::min(grown.Max + margin, frustumBox.Max + frustumMargin);
   if (!glm::all(glm::lessThan(grown.Min, grown.Max)))
@@ -112,31 +115,33 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   const glm::dvec3 apex = light.w != 0.0 ? glm::dvec3(light) / light.w : glm::dvec3(0.0);
   const glm::dvec3 towardsLight =
     light.w != 0.0 ? apex - centre : UnitDirection(glm::dvec3(light)) * size;
-  // A point inside the hull, to orient its planes: near the rectangle, where its distances to
-  // them are about the rectangle's size. Halfway to a light 1e30 away, the distances (half the
-  // rectangle's centre's) drowned in the rounding of coordinates of 5e29, and a plane could
-  // face the wrong way (found by the fuzzer).
-  const double reach = glm::length(towardsLight);
-  const glm::dvec3 inside = centre + std::min(0.5, size / reach) * towardsLight;
-
+  // Each plane is oriented by difference vectors, never by a point's coordinates: the near plane
+  // towards the light, each side plane towards the rectangle's centre. A point halfway to a light
+  // 1e30 away, or near a rectangle 1e10 from the origin under a grazing light, had its distances
+  // to the planes drown in the rounding of its coordinates, and a plane could face the wrong way
+  // (the fuzzer; a review).
   std::array<Plane, 5> planes;
-  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, Plane& plane)
+  auto makePlane = [&](const glm::dvec3& a, const glm::dvec3& edge, const glm::dvec3& along,
+                     const glm::dvec3& inward, Plane& plane)
   {
-    glm::dvec3 n = glm::cross(b - a, c - a);
+    glm::dvec3 n = glm::cross(edge, along);
     const double length = glm::length(n);
-    if (!(length > 1e-12 * size * size))
+    if (!(length > 1e-12 * glm::length(edge) * glm::length(along)))
     {
       return false; // light on the near plane, or swept parallel to it
     }
     n /= length;
-    plane = { n, glm::dot(n, a) };
-    if (plane.Distance(inside) < 0.0)
+    double side = glm::dot(n, inward);
+    if (side < 0.0)
     {
-      plane = { -n, -plane.Offset };
+      n = -n;
+      side = -side;
     }
-    return plane.Distance(inside) > 1e-9 * size;
+    plane = { n, glm::dot(n, a) };
+    return side > 1e-9 * glm::length(inward);
   };
-  if (!makePlane(nearCorners[0], nearCorners[1], nearCorners[2], planes[0]))
+  if (!makePlane(nearCorners[0], nearCorners[1] - nearCorners[0], nearCorners[2] - nearCorners[0],
+        towardsLight, planes[0]))
   {
     return true;
   }
@@ -144,8 +149,10 @@ bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   {
     const glm::dvec3& a = nearCorners[i];
     const glm::dvec3& b = nearCorners[(i + 1) % 4];
-    const glm::dvec3 c = light.w != 0.0 ? apex : a + towardsLight;
-    if (!makePlane(a, b, c, planes[i + 1]))
+    // A directional light's side planes hold its direction itself: a + towardsLight, at the
+    // rectangle's coordinates, would tilt them by their rounding.
+    const glm::dvec3 along = light.w != 0.0 ? apex - a : towardsLight;
+    if (!makePlane(a, b - a, along, centre - (0.5 * a + 0.5 * b), planes[i + 1]))
     {
       return true;
     }
@@ -240,14 +247,17 @@ double OccupancyGrid::Face(int index, int axis) const
                              : this->Bounds.Min[axis] + size * index / Resolution;
 }
 
-void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
+bool OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
 {
-  // A cell with a NaN point draws nothing; its box would make its grid cells' boxes NaN.
+  // A box that is not finite would make its grid cells' boxes NaN.
   const glm::dvec3 both = min - max;
-  if (!this->Bounds.Valid || !std::isfinite(both.x) || !std::isfinite(both.y) ||
-    !std::isfinite(both.z))
+  if (!std::isfinite(both.x) || !std::isfinite(both.y) || !std::isfinite(both.z))
   {
-    return;
+    return false;
+  }
+  if (!this->Bounds.Valid)
+  {
+    return true;
   }
   const glm::dvec3 size = this->Bounds.Max - this->Bounds.Min;
   // The grid cell [Face(c), Face(c + 1)) of a coordinate, clamped to the grid; a flat axis is
@@ -296,6 +306,7 @@ void OccupancyGrid::Add(const glm::dvec3& min, const glm::dvec3& max)
       }
     }
   }
+  return true;
 }
 
 std::vector<Box> OccupancyGrid::Boxes() const

@@ -179,9 +179,11 @@ public:
 
   /// A grid over `bounds`; every box added later is clamped to them.
   explicit OccupancyGrid(const Box& bounds);
-  /// Adds the box min..max to the grid cells it overlaps (its faces included), cut to each. A
-  /// box that is not finite (a cell with a NaN point, which VTK does not draw) adds nothing.
-  void Add(const glm::dvec3& min, const glm::dvec3& max);
+  /// Adds the box min..max to the grid cells it overlaps (its faces included), cut to each.
+  /// False, adding nothing, for a box that is not finite: a cell with a NaN point, of which VTK
+  /// may still draw the parts (a polygon's triangles, a polyline's segments) that avoid it, so
+  /// the caller should fall back to the data's bounds.
+  bool Add(const glm::dvec3& min, const glm::dvec3& max);
   /// The filled cells' boxes: together they hold every box added. Invalid bounds give one
   /// invalid box: nothing is known.
   std::vector<Box> Boxes() const;

@@ -205,13 +205,19 @@ bool SceneBounds::OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld,
       }
       OccupancyGrid grid(bounds);
       double cell[6];
-      for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+      bool finite = true;
+      for (vtkIdType i = 0; i < data->GetNumberOfCells() && finite; ++i)
       {
         data->GetCellBounds(i, cell);
-        grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
+        finite =
+          grid.Add(glm::dvec3(cell[0], cell[2], cell[4]), glm::dvec3(cell[1], cell[3], cell[5]));
       }
-      occupancy = Occupancy{ data->GetMTime(), grid.Boxes() };
+      occupancy = Occupancy{ data->GetMTime(), grid.Boxes(), finite };
     }
+  }
+  if (!occupancy.Finite)
+  {
+    return false;
   }
   for (const Box& box : occupancy.Boxes)
   {

@@ -63,11 +63,13 @@ private:
   {
     vtkMTimeType Time = 0;
     std::vector<Box> Boxes;
+    bool Finite = true; ///< false where a cell's box was not: the data's bounds stand for it
   };
   /// Adds to `boxes`, in place of the box of `data` (which `dataToWorld` places), the world
   /// boxes of the grid cells its cells occupy. False for data of more than a million cells,
-  /// which is not walked each time it changes. Entries of data not asked about in a frame are
-  /// dropped (`used`).
+  /// which is not walked each time it changes, or with a cell whose box is not finite (a NaN
+  /// point, of which VTK may draw the rest of the cell). Entries of data not asked about in a frame
+  /// are dropped (`used`).
   bool OccupiedBoxes(vtkDataSet* data, const glm::dmat4& dataToWorld, std::vector<Box>& boxes,
     std::map<vtkDataSet*, Occupancy>& used);
 

@@ -117,7 +117,8 @@ struct VolumeCache
 struct WedgeGeometry
 {
   std::size_t Wedges = 0;       ///< edges with a proper wedge
-  std::size_t Fallbacks = 0;    ///< edges with no wedge planes: a light pyramid or the viewport
+  std::size_t Fallbacks = 0;    ///< edges drawn by back faces: a light pyramid, the viewport,
+                                ///< or a cut that left a plane out (WedgeShape::Enlarged)
   std::size_t FullViewport = 0; ///< of those, drawn over the whole viewport
   std::vector<float> Vertices;
   std::vector<std::uint32_t> Indices;

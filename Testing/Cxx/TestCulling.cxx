@@ -364,16 +364,16 @@ void TestOccupancyGrid(std::mt19937& rng)
   Check(InAnyBox(boxes, glm::dvec3(4 - wall, 4 - wall, 4 - wall)) &&
       !InAnyBox(boxes, glm::dvec3(4 - 3 * wall, 4 - 3 * wall, 4 - 3 * wall)),
     "a corner of the room is left out up to the walls' thickness");
-  // A cell with a NaN point (VTK draws nothing of it): its box went into the grid's cells and
-  // made their boxes NaN, and TightClippingRange then kept the camera's range for the whole
-  // prop (found by the fuzzer).
+  // A cell with a NaN point: its box went into the grid's cells and made their boxes NaN, and
+  // TightClippingRange then kept the camera's range for the whole frame (found by the fuzzer).
   penumbra::OccupancyGrid withNaN(room);
   for (const auto& w : walls)
   {
     withNaN.Add(w.first, w.second);
   }
-  withNaN.Add({ std::nan(""), 0.0, -4.0 }, { 4.0, std::nan(""), 4.0 });
+  const bool nanAdded = withNaN.Add({ std::nan(""), 0.0, -4.0 }, { 4.0, std::nan(""), 4.0 });
   const std::vector<penumbra::Box> withNaNBoxes = withNaN.Boxes();
+  Check(!nanAdded, "a box with NaN corners is reported, for the caller to use the bounds");
   Check(std::all_of(withNaNBoxes.begin(), withNaNBoxes.end(),
           [](const penumbra::Box& b)
           { return std::isfinite(b.Min.x + b.Min.y + b.Min.z + b.Max.x + b.Max.y + b.Max.z); }) &&
@@ -506,6 +506,84 @@ void TestClipBoxByPlanes(std::mt19937& rng)
 /// reaches the near plane. The hull's planes were oriented by a point halfway to the light, whose
 /// distances to them (about the rectangle's size) drowned in the rounding of its coordinates, and
 /// a plane turned the wrong way said no (found by the fuzzer).
+/// Boxes on a segment from a point of the near rectangle to a light that grazes its plane, the
+/// rectangle 1e10 from the origin: their volumes reach the near plane. Oriented by a point near
+/// the rectangle, the near plane could face the wrong way (its distance, size x sin(angle), below
+/// the rounding of the point's coordinates): up to 44 of 2000 such boxes said no (a review).
+void TestGrazingLightFarFromOrigin(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int wrong = 0, boxes = 0;
+  for (const double theta : { 1e-6, 1e-8 })
+  {
+    for (const bool positional : { true, false })
+    {
+      for (int trial = 0; trial < 1000; ++trial)
+      {
+        const double origin = 1e10;
+        const glm::dvec3 c(
+          origin * (0.3 + unit(rng)), origin * (unit(rng) - 0.5), origin * unit(rng));
+        const glm::dvec3 normal =
+          glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+        const glm::dvec3 u = glm::normalize(glm::cross(normal, glm::dvec3(0.3, 0.7, 0.2)));
+        const glm::dvec3 v = glm::cross(normal, u);
+        const double hw = 0.5 + unit(rng), hh = 0.5 + unit(rng);
+        const std::array<glm::dvec3, 4> nearCorners = { c - hw * u - hh * v, c + hw * u - hh * v,
+          c + hw * u + hh * v, c - hw * u + hh * v };
+        const double phi = 6.283 * unit(rng), tilt = unit(rng) < 0.5 ? theta : -theta;
+        const glm::dvec3 dir =
+          std::cos(tilt) * (std::cos(phi) * u + std::sin(phi) * v) + std::sin(tilt) * normal;
+        const double reach = 1e12;
+        const glm::dvec4 light =
+          positional ? glm::dvec4(c + reach * dir, 1.0) : glm::dvec4(dir, 0.0);
+        const glm::dvec3 q = c + (2 * unit(rng) - 1) * hw * u + (2 * unit(rng) - 1) * hh * v;
+        const glm::dvec3 p = q + unit(rng) * (positional ? glm::dvec3(light) - q : reach * dir);
+        const double half =
+          (1e-3 + 1e-10 * glm::length(p) + 1e-10 * origin + 1e-10 * reach) * (1 + 10 * unit(rng));
+        ++boxes;
+        wrong += !penumbra::VolumeMayReachNearPlane(p - half, p + half, light, nearCorners);
+      }
+    }
+  }
+  std::printf(
+    "     grazing lights, rectangle 1e10 away: %d of %d boxes said cannot reach\n", wrong, boxes);
+  Check(wrong == 0, "a volume from a grazing light reaches a near plane far from the origin");
+}
+
+/// Clipping ranges up to 1e15 wide (1e-7 to 1e8), which vtkCamera accepts and the tight range
+/// exists to narrow: the far corners of the frustum, from the inverse of the projection, are off
+/// by a good share of the far plane, and cut to their box with a small margin a box at 0.99 of
+/// the far plane, across a side plane, was lost from the range (a review). From 1e16 it is lost
+/// still, as before that cut.
+void TestWideClippingRange()
+{
+  const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
+  const double t = std::tan(glm::radians(15.0));
+  bool kept = true;
+  for (const double nearPlane : { 1e-6, 1e-7, 1e-8 })
+  {
+    for (const double farPlane : { 1e6, 1e7, 1e8 })
+    {
+      for (const double k : { 0.5, 0.9, 0.99 })
+      {
+        if (farPlane / nearPlane > 1.5e15)
+        {
+          continue;
+        }
+        const glm::dmat4 projection =
+          glm::perspective(glm::radians(30.0), 1.0, nearPlane, farPlane);
+        const double d0 = (k - 0.0004) * farPlane, d1 = k * farPlane;
+        const penumbra::Box far{ true, { 0.5 * t * d1, -1, -d1 }, { 2 * t * d1, 1, -d0 } };
+        const penumbra::Box near{ true, { -0.1, -0.1, -2 }, { 0.1, 0.1, -1 } };
+        const glm::dvec2 range = penumbra::TightClippingRange(
+          { near, far }, view, projection * view, { nearPlane, farPlane });
+        kept = kept && range.y >= d1;
+      }
+    }
+  }
+  Check(kept, "a box across a side plane near the far plane of a wide range stays in range");
+}
+
 void TestFarPositionalLight()
 {
   // The fuzzer's input, to the digit: rounded corners happened to give the right answer.
@@ -634,6 +712,8 @@ int main()
     "z-fail draws both caps, z-pass only a seen-through caster's light cap, a wedge fallback "
     "draws back faces");
   TestFarPositionalLight();
+  TestGrazingLightFarFromOrigin(rng);
+  TestWideClippingRange();
   TestTightClippingRange(rng);
   TestOccupancyGrid(rng);
   TestShadowScissor(rng);

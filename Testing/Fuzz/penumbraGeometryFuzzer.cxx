@@ -1076,7 +1076,8 @@ void CheckCulling(
 }
 
 /// TightClippingRange: finite, within the camera's, near at most 0.8 of far, and every corner
-/// and centre of a prop's box in view within it.
+/// and centre of a prop's box in view, and every point of a 5^3 lattice of the view inside a
+/// box (a ground across the view has no corner in it), within it.
 void CheckTightRange(const FuzzCamera& camera, const std::vector<Box>& props)
 {
   const glm::dvec2 range =
@@ -1090,6 +1091,22 @@ void CheckTightRange(const FuzzCamera& camera, const std::vector<Box>& props)
   Require(
     range.x >= camera.Range.x && range.y <= camera.Range.y, "tight range: within the camera's");
   Require(range == camera.Range || range.x <= 0.8 * range.y, "tight range: near at most 0.8 far");
+  const glm::dmat4 clipToWorld = glm::inverse(camera.WorldToClip);
+  for (int k = 0; k < 125; ++k)
+  {
+    const glm::dvec3 p =
+      FromClip(clipToWorld, glm::dvec3(k % 5 - 2.0, (k / 5) % 5 - 2.0, k / 25 - 2.0) * 0.45);
+    const bool inBox = std::any_of(props.begin(), props.end(),
+      [&p](const Box& b)
+      {
+        return b.Valid && glm::all(glm::lessThanEqual(b.Min, p)) &&
+          glm::all(glm::lessThanEqual(p, b.Max));
+      });
+    const double depth = -(camera.WorldToView * glm::dvec4(p, 1.0)).z;
+    const double slack = 1e-6 * (std::abs(depth) + camera.Range.y);
+    Require(!inBox || !IsFinite(p) || (depth >= range.x - slack && depth <= range.y + slack),
+      "tight range: a point in view inside a box stays in it");
+  }
   for (const Box& box : props)
   {
     if (!IsFinite(box))
