@@ -113,6 +113,13 @@ bool GlyphMatrix(const GlyphSettings& settings, const glm::dvec3& position,
     }
     rotation = RotationOf(OrientationQuaternion(settings.OrientationMode, orientation));
   }
+  // A direction whose squares underflow (1e-236) has no length to normalize by, in VTK 9.1's
+  // vtkOpenGLGlyph3DMapper too, which draws no such glyph (found by the fuzzer).
+  if (!std::isfinite(rotation[0][0] + rotation[0][1] + rotation[0][2] + rotation[1][0] +
+        rotation[1][1] + rotation[1][2] + rotation[2][0] + rotation[2][1] + rotation[2][2]))
+  {
+    return false;
+  }
   const glm::dvec3 size = settings.Scaling ? scale : glm::dvec3(1.0);
   matrix = glm::dmat4(1.0);
   for (int column = 0; column < 3; ++column)

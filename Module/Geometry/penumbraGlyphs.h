@@ -47,7 +47,8 @@ VTKPENUMBRAGEOMETRY_EXPORT glm::dvec3 GlyphScale(
 
 /// The glyph's object-to-data matrix: translated to `position`, rotated by `orientation` (3 or 4
 /// values as the mode wants, or null for none), scaled by `scale` when settings.Scaling.
-/// Returns false, leaving `matrix` unset, when the orientation is not finite.
+/// Returns false, leaving `matrix` unset, when the orientation is not finite or gives no finite
+/// rotation (a direction too small to normalize: VTK draws no such glyph).
 VTKPENUMBRAGEOMETRY_EXPORT bool GlyphMatrix(const GlyphSettings& settings,
   const glm::dvec3& position, const double* orientation, const glm::dvec3& scale,
   glm::dmat4& matrix);

@@ -196,6 +196,11 @@ void TestBadInput()
   const double direction[3] = { nan, 0.0, 0.0 };
   Check(!penumbra::GlyphMatrix(settings, glm::dvec3(0.0), direction, glm::dvec3(1.0), matrix),
     "a NaN direction gives no matrix");
+  // Its squares underflow: no length to normalize by, in VTK's mapper too (the fuzzer found a
+  // NaN matrix returned as placed).
+  const double tiny[3] = { 3.8e-236, 3.8e-236, 3.8e-236 };
+  Check(!penumbra::GlyphMatrix(settings, glm::dvec3(0.0), tiny, glm::dvec3(1.0), matrix),
+    "a direction too small to normalize gives no matrix");
   settings.OrientationMode = GlyphSettings::Quaternion;
   const double infinite[4] = { 1.0, std::numeric_limits<double>::infinity(), 0.0, 0.0 };
   Check(!penumbra::GlyphMatrix(settings, glm::dvec3(0.0), infinite, glm::dvec3(1.0), matrix),

@@ -1204,7 +1204,13 @@ void CheckGlyphs(ByteReader& in)
   const bool finiteOrientation =
     std::all_of(orientation, orientation + count, [](double v) { return std::isfinite(v); });
   const bool placed = GlyphMatrix(settings, position, orientation, scale, matrix);
-  Require(placed == finiteOrientation, "a glyph is placed exactly when its orientation is finite");
+  Require(!placed || finiteOrientation, "a glyph is placed only where its orientation is finite");
+  // A direction of moderate length always gives a rotation.
+  const double directionLength =
+    glm::length(glm::dvec3(orientation[0], orientation[1], orientation[2]));
+  Require(placed || !finiteOrientation || settings.OrientationMode != GlyphSettings::Direction ||
+      !(directionLength > 1e-100 && directionLength < 1e100),
+    "a glyph with a finite direction of moderate length is placed");
   if (placed && IsFinite(position) && IsFinite(scale) && glm::length(position) < 1e100 &&
     glm::length(scale) < 1e100 &&
     glm::length(glm::dvec3(orientation[0], orientation[1], orientation[2])) < 1e100 &&
