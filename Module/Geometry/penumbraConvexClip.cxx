@@ -427,6 +427,7 @@ ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpace
   // the bound is larger, which the caller must allow for (a wedge so cut is drawn by its back
   // faces), and a crack would let view rays through.
   polygons = BoxFaces(box);
+  shape = Triangulate(polygons, tolerance);
   std::size_t leftOut = 0;
   for (const HalfSpace& unit : units)
   {
@@ -435,16 +436,17 @@ ConvexPolyhedron ClipBox(const Box& box, const std::vector<HalfSpace>& halfSpace
     {
       return {};
     }
-    if (Closed(Triangulate(cut, tolerance)))
+    ConvexPolyhedron candidate = Triangulate(cut, tolerance);
+    if (Closed(candidate))
     {
       polygons = std::move(cut);
+      shape = std::move(candidate);
     }
     else
     {
       ++leftOut;
     }
   }
-  shape = Triangulate(polygons, tolerance);
   shape.CutsLeftOut = leftOut;
   return shape;
 }
