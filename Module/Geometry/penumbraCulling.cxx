@@ -339,6 +339,11 @@ glm::dvec2 TightClippingRange(const std::vector<Box>& props, const glm::dmat4& w
     const glm::dvec4 p =
       clipToWorld * glm::dvec4(BoxCorner(glm::dvec3(-1.0), glm::dvec3(1.0), corner), 1.0);
     const glm::dvec3 point = glm::dvec3(p) / p.w;
+    // Box::Extend's min and max would pass over a NaN corner (w = 0) after the first.
+    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+    {
+      return current;
+    }
     frustumBox.Extend(point, point);
   }
   if (!std::isfinite(frustumBox.Diagonal()))
