@@ -493,6 +493,13 @@ Box DecodeBox(ByteReader& in)
   return box;
 }
 
+/// Closed containment, with `slack` beyond each face.
+bool Holds(const Box& box, const glm::dvec3& p, double slack = 0.0)
+{
+  return glm::all(glm::lessThanEqual(box.Min - slack, p)) &&
+    glm::all(glm::lessThanEqual(p, box.Max + slack));
+}
+
 /// Half-open containment, as the counting shader tests a pixel's point against a piece.
 bool HoldsHalfOpen(const Box& box, const glm::dvec3& p)
 {
@@ -712,9 +719,7 @@ void CheckClipBox(const Box& box, const std::vector<HalfSpace>& halfSpaces)
   for (const glm::dvec3& p : shape.Points)
   {
     Require(IsFinite(p), "cut: finite points");
-    Require(glm::all(glm::lessThanEqual(box.Min - rounding, p)) &&
-        glm::all(glm::lessThanEqual(p, box.Max + rounding)),
-      "cut: points in the box");
+    Require(Holds(box, p, rounding), "cut: points in the box");
     for (const HalfSpace& half : halfSpaces)
     {
       const double length = glm::length(half.Normal);
@@ -807,9 +812,7 @@ void CheckWedgeBounds(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4
       {
         // Float's relative rounding, and its step between subnormals.
         const double rounding = 1e-6 * (inside->Diagonal() + Magnitude(*inside)) + 1e-44;
-        Require(glm::all(glm::lessThanEqual(inside->Min - rounding, p)) &&
-            glm::all(glm::lessThanEqual(p, inside->Max + rounding)),
-          "wedge bound: cut inside the receivers' box");
+        Require(Holds(*inside, p, rounding), "wedge bound: cut inside the receivers' box");
       }
     }
   };
@@ -965,7 +968,7 @@ bool SegmentMeetsBox(const glm::dvec3& from, const glm::dvec3& to, const Box& bo
   const double length = glm::length(towards);
   if (!(length > 0.0) || !std::isfinite(length))
   {
-    return glm::all(glm::lessThanEqual(box.Min, q)) && glm::all(glm::lessThanEqual(q, box.Max));
+    return Holds(box, q);
   }
   const glm::dvec3 d = towards / length;
   double enter = 0.0, leave = length;
@@ -1096,12 +1099,8 @@ void CheckTightRange(const FuzzCamera& camera, const std::vector<Box>& props)
   {
     const glm::dvec3 p =
       FromClip(clipToWorld, glm::dvec3(k % 5 - 2.0, (k / 5) % 5 - 2.0, k / 25 - 2.0) * 0.45);
-    const bool inBox = std::any_of(props.begin(), props.end(),
-      [&p](const Box& b)
-      {
-        return b.Valid && glm::all(glm::lessThanEqual(b.Min, p)) &&
-          glm::all(glm::lessThanEqual(p, b.Max));
-      });
+    const bool inBox = std::any_of(
+      props.begin(), props.end(), [&p](const Box& b) { return b.Valid && Holds(b, p); });
     const double depth = -(camera.WorldToView * glm::dvec4(p, 1.0)).z;
     const double slack = 1e-6 * (std::abs(depth) + camera.Range.y);
     Require(!inBox || !IsFinite(p) || (depth >= range.x - slack && depth <= range.y + slack),
@@ -1160,11 +1159,8 @@ void CheckOccupancy(const Box& bounds, const std::vector<Box>& added)
       // (The middle held to the box: halving a subnormal rounds.)
       const glm::dvec3 p =
         k < 8 ? BoxCorner(low, high, k) : glm::clamp(0.5 * low + 0.5 * high, low, high);
-      Require(std::any_of(cells.begin(), cells.end(),
-                [&p](const Box& cell) {
-                  return glm::all(glm::lessThanEqual(cell.Min, p)) &&
-                    glm::all(glm::lessThanEqual(p, cell.Max));
-                }),
+      Require(
+        std::any_of(cells.begin(), cells.end(), [&p](const Box& cell) { return Holds(cell, p); }),
         "the occupancy grid holds every box added");
     }
   }
