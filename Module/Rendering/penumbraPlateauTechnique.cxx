@@ -246,14 +246,13 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   frame.DepthCopy()->Activate();
   this->Depth->Activate();
-  const glm::mat4 clipToPlane(glm::translate(glm::dmat4(1.0), -plane.Origin) * frame.ClipToWorld);
   const float planeToTexture[4] = { static_cast<float>(1.0 / size.x),
     static_cast<float>(1.0 / size.y), static_cast<float>(-lo.x / size.x),
     static_cast<float>(-lo.y / size.y) };
   const glm::vec3 normal(plane.Normal), u(plane.U), v(plane.V);
   frame.SetDepthUniforms(resolve);
   resolve->SetUniformi("plateauTexture", this->Depth->GetTextureUnit());
-  resolve->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(clipToPlane)));
+  frame.SetClipToLocal(resolve, plane.Origin);
   resolve->SetUniform3f("planeNormal", glm::value_ptr(normal));
   resolve->SetUniform3f("planeU", glm::value_ptr(u));
   resolve->SetUniform3f("planeV", glm::value_ptr(v));

@@ -85,6 +85,14 @@ void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program) const
   program->SetUniform2f("viewportSize", viewport);
 }
 
+void ShadowFrame::SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& origin) const
+{
+  glm::dmat4 clipToLocal = glm::translate(glm::dmat4(1.0), -origin) * this->ClipToWorld;
+  clipToLocal[3] += clipToLocal[2];
+  const glm::mat4 uniform(clipToLocal);
+  program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(uniform)));
+}
+
 void ShadowFrame::DrawResolve(float lightIntensity)
 {
   vtkShaderProgram* program = this->Programs->Ready(this->Window, penumbraResolveVS,
@@ -119,10 +127,9 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
   ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
   ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);
   const glm::mat4 toClip(this->WorldToClip * glm::translate(glm::dmat4(1.0), buffer.Origin));
-  const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -buffer.Origin) * this->ClipToWorld);
   const glm::vec4 lightWedge(buffer.LightInWedgeSpace());
   program->SetUniformMatrix4x4("MCDCMatrix", const_cast<float*>(glm::value_ptr(toClip)));
-  program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(fromClip)));
+  this->SetClipToLocal(program, buffer.Origin);
   program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
   buffer.Bind(program, attributes);
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(buffer.IndexCount()), GL_UNSIGNED_INT, nullptr);

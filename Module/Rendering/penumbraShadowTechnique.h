@@ -141,6 +141,12 @@ struct ShadowFrame
   /// Sets the uniforms every shader that reads the scene depth declares: the depth copy's
   /// texture unit (activated by the caller) and the viewport size.
   void SetDepthUniforms(vtkShaderProgram* program) const;
+  /// Sets `clipToLocal`, which penumbraPointAt reads: NDC to world space relative to `origin`,
+  /// with the NDC depth's column added into the constant one, so that the shader multiplies by
+  /// the NDC depth minus 1. Near the far plane, where a perspective depth buffer holds most of
+  /// the scene, the depth then takes no float cancellation: depth - 1 is exact, and the columns'
+  /// sum, which cancels, is taken here in double.
+  void SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& origin) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.
   void DrawResolve(float lightIntensity);

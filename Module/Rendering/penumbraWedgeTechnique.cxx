@@ -68,11 +68,10 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
   if (horizon)
   {
     const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
-    const glm::mat4 fromClip(glm::translate(glm::dmat4(1.0), -origin) * frame.ClipToWorld);
     const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
     frame.SetDepthUniforms(horizon);
     horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
-    horizon->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(fromClip)));
+    frame.SetClipToLocal(horizon, origin);
     horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglBlendEquation(GL_MIN);

@@ -3,15 +3,19 @@
 // relative to the light (world space for a directional light) for the horizon cap, relative to
 // the receiver plane's origin for the plateau resolve. Shared through //PENUMBRA::DepthPoint::Dec.
 uniform sampler2D depthTexture;
-uniform mat4 clipToLocal; // NDC of this viewport to the local frame
+// NDC of this viewport to the local frame, applied to (x, y, z - 1, 1): its last column holds
+// the far plane's centre (ShadowFrame::SetClipToLocal)
+uniform mat4 clipToLocal;
 uniform vec2 viewportSize;
 
 /// `eyeDepthBias`: NDC depth by which the point moves towards the eye (0 for the point itself).
 vec3 penumbraPointAt(ivec2 pixel, float depth, float eyeDepthBias)
 {
-  vec4 ndc = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0,
-    depth * 2.0 - 1.0 - eyeDepthBias, 1.0);
-  vec4 point = clipToLocal * ndc;
+  // depth - 1 is exact in float for depth >= 0.5; NDC z itself would round away the steps
+  // that the far part of a perspective depth range is made of.
+  vec4 ndcFromFar = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0,
+    (depth - 1.0) * 2.0 - eyeDepthBias, 1.0);
+  vec4 point = clipToLocal * ndcFromFar;
   return point.xyz / point.w;
 }
 
