@@ -30,6 +30,11 @@ namespace
 /// Much more moves it measurably off the surface where the depth range is wide (a near plane at
 /// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
 constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
+/// And the share of the point's and the eye's distances from the caster's origin by which it
+/// moves further: where the tight depth range makes depth steps finer than the float rounding
+/// of the coordinates the depth was drawn from, the depth is off by that rounding (four float
+/// steps: a cylinder's cap drawn 2e-7 off its plane in a user trial, half a depth step then).
+constexpr float CountingEyeFloatBias = 4.0f / 16777216.0f;
 
 /// The largest difference of counted neighbours' visibilities that half-resolution counting
 /// takes as smooth (penumbraHalfUpsampleFS.glsl's `uncertain`): two samples' shares, or fewer
@@ -336,6 +341,7 @@ bool CountingTechnique::CountWedges(
   SetSampleCount(program, sampleCount);
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
+  program->SetUniformf("eyeFloatBias", CountingEyeFloatBias);
   // Samples as offsets from the light's centre, which each caster's wedge coordinates place
   // (lightWedge), or directions, which no origin moves. Their spread about the centre lets a
   // fragment skip an edge whose plane through it misses them all

@@ -28,6 +28,7 @@ uniform int sampleCount; // samples set in lightSamples
 uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
 uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
+uniform float eyeFloatBias; // and the share of its frame's coordinates' size by which it moves
 uniform int counterStride;  // pixels between counter texels: 1, or 2 at half resolution
 layout(r32ui) uniform uimage2DArray counters;
 
@@ -53,6 +54,9 @@ void main()
   float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
   vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
+  vec3 towardsEye = penumbraPointAt(pixel, 0.0, 0.0) - p;
+  p += towardsEye *
+    (eyeFloatBias * (length(p) + length(p + towardsEye)) / max(length(towardsEye), 1e-30));
   // The view ray may cross the wedge's polyhedra in several receivers' pieces: only the piece
   // that holds p counts it (penumbra::AppendWedgeBoundInPieces; pieces are half-open).
   if (any(lessThan(p, pieceMinVS)) || any(greaterThanEqual(p, pieceMaxVS)))
