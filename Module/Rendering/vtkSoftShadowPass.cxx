@@ -487,33 +487,14 @@ public:
 void vtkSoftShadowPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
-  vtkInternals& internals = *this->Internals;
   this->NumberOfRenderedProps = 0;
-  // One pass shadows a frame: another inside its delegate chain would edit the same shaders
-  // again, and a pass inside its own chain would recurse for ever.
-  const std::vector<const vtkSoftShadowPass*>& active = RenderingPasses::Active();
-  if (!active.empty())
+  if (this->RenderIfNested(s))
   {
-    const bool cycle = std::find(active.begin(), active.end(), this) != active.end();
-    if (!internals.WarnedNested)
-    {
-      vtkWarningMacro(<< (cycle ? "This pass is in its own delegate chain: it draws nothing "
-                                  "the second time."
-                                : "This pass is in the delegate chain of another "
-                                  "vtkSoftShadowPass, which shadows the frame: it draws its "
-                                  "delegate unshadowed."));
-      internals.WarnedNested = true;
-    }
-    if (!cycle)
-    {
-      RenderingPasses rendering(this);
-      this->RenderDelegate(s);
-    }
     return;
   }
   RenderingPasses rendering(this);
 
-  using Stage = penumbra::StageTimes::Stage;
+  vtkInternals& internals = *this->Internals;
   internals.StageTimes.BeginFrame(this->CollectStageTimes);
   auto renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   auto window =
@@ -525,45 +506,95 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   const bool selecting = renderer && renderer->GetSelector();
   if (this->ShadowsEnabled && window && !selecting)
   {
-    this->FollowWindow(window);
-    renderer->GetTiledSizeAndOrigin(
-      &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
-    // Inside a pass that draws into a framebuffer of its own (vtkSSAAPass renders into one
-    // larger than the window), that framebuffer's pixels are the ones drawn: size the buffers
-    // to it, as vtkSSAOPass does.
-    if (vtkFrameBufferObjectBase* target = s->GetFrameBuffer())
-    {
-      target->GetLastSize(internals.Size[0], internals.Size[1]);
-      internals.Origin[0] = internals.Origin[1] = 0;
-    }
-    // Before anything reads the props' data or bounds (the lights' samples face the casters).
-    penumbra::UpdateMapperInputs(renderer);
-    // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
-    internals.LightsPass->Render(s);
-    this->CollectShadowingLights(renderer);
-    if (!internals.Lights.empty() && !this->LayersFit(window))
-    {
-      internals.Lights.clear(); // drawn as VTK draws it, unshadowed, rather than black
-    }
+    this->PrepareShadowingLights(s, renderer, window);
   }
   this->UpdateShaderConfiguration();
 
   if (internals.Lights.empty() || internals.Size[0] <= 0 || internals.Size[1] <= 0)
   {
-    internals.Lights.clear();
-    if (!selecting)
-    {
-      this->ResetShadowStatistics();
-      internals.ForgetInputs();
-    }
-    {
-      penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
-      this->RenderDelegate(s);
-    }
-    internals.StageTimes.EndFrame();
+    this->RenderUnshadowed(s, selecting);
     return;
   }
+  this->RenderShadowed(s, renderer, window);
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
 
+bool vtkSoftShadowPass::RenderIfNested(const vtkRenderState* s)
+{
+  // One pass shadows a frame: another inside its delegate chain would edit the same shaders
+  // again, and a pass inside its own chain would recurse for ever.
+  const std::vector<const vtkSoftShadowPass*>& active = RenderingPasses::Active();
+  if (active.empty())
+  {
+    return false;
+  }
+  vtkInternals& internals = *this->Internals;
+  const bool cycle = std::find(active.begin(), active.end(), this) != active.end();
+  if (!internals.WarnedNested)
+  {
+    vtkWarningMacro(<< (cycle ? "This pass is in its own delegate chain: it draws nothing "
+                                "the second time."
+                              : "This pass is in the delegate chain of another "
+                                "vtkSoftShadowPass, which shadows the frame: it draws its "
+                                "delegate unshadowed."));
+    internals.WarnedNested = true;
+  }
+  if (!cycle)
+  {
+    RenderingPasses rendering(this);
+    this->RenderDelegate(s);
+  }
+  return true;
+}
+
+void vtkSoftShadowPass::PrepareShadowingLights(
+  const vtkRenderState* s, vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  this->FollowWindow(window);
+  this->UpdateFrameSize(s, renderer);
+  // Before anything reads the props' data or bounds (the lights' samples face the casters).
+  penumbra::UpdateMapperInputs(renderer);
+  // Lights follow the camera only once VTK's lights pass has run: run it now, it is idempotent.
+  internals.LightsPass->Render(s);
+  this->CollectShadowingLights(renderer);
+  if (!internals.Lights.empty() && !this->LayersFit(window))
+  {
+    internals.Lights.clear(); // drawn as VTK draws it, unshadowed, rather than black
+  }
+}
+
+void vtkSoftShadowPass::UpdateFrameSize(const vtkRenderState* s, vtkRenderer* renderer)
+{
+  vtkInternals& internals = *this->Internals;
+  renderer->GetTiledSizeAndOrigin(
+    &internals.Size[0], &internals.Size[1], &internals.Origin[0], &internals.Origin[1]);
+  // Inside a pass that draws into a framebuffer of its own (vtkSSAAPass renders into one
+  // larger than the window), that framebuffer's pixels are the ones drawn: size the buffers
+  // to it, as vtkSSAOPass does.
+  if (vtkFrameBufferObjectBase* target = s->GetFrameBuffer())
+  {
+    target->GetLastSize(internals.Size[0], internals.Size[1]);
+    internals.Origin[0] = internals.Origin[1] = 0;
+  }
+}
+
+void vtkSoftShadowPass::RenderUnshadowed(const vtkRenderState* s, bool selecting)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Lights.clear();
+  if (!selecting)
+  {
+    this->ResetShadowStatistics();
+    internals.ForgetInputs();
+  }
+  this->CompositeAndEndFrame(s);
+}
+
+void vtkSoftShadowPass::RenderShadowed(
+  const vtkRenderState* s, vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
   this->AddReceiverKeys(s);
   internals.Bounds.UpdateScene(renderer);
   internals.CulledInView = penumbra::PropsCulledInView(s);
@@ -574,20 +605,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   {
     this->DrawShadows(s, window);
   }
-  internals.LI.GetLayers()->Activate();
-  internals.ApplyShadows = true;
-  internals.DrawsAtShadowSize = internals.DrawsAtOtherSizes = 0;
-  this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
-
-  {
-    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
-    this->RenderDelegate(s);
-  }
-  internals.StageTimes.EndFrame();
-  this->WarnOfDelegateSize();
-
-  internals.ApplyShadows = false;
-  internals.LI.GetLayers()->Deactivate();
+  this->CompositeShadows(s);
   this->RemoveReceiverKeys();
   if (reused)
   {
@@ -598,7 +616,30 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     internals.Caches.PurgeUnused(); // a reused frame used none: they are the drawn frame's
   }
   this->GraphicsMemoryBytes = static_cast<vtkIdType>(internals.GraphicsMemoryBytes());
-  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+void vtkSoftShadowPass::CompositeShadows(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.LI.GetLayers()->Activate();
+  internals.ApplyShadows = true;
+  internals.DrawsAtShadowSize = internals.DrawsAtOtherSizes = 0;
+  this->NumberOfShadowingLights = static_cast<int>(internals.Lights.size());
+  this->CompositeAndEndFrame(s);
+  this->WarnOfDelegateSize();
+  internals.ApplyShadows = false;
+  internals.LI.GetLayers()->Deactivate();
+}
+
+void vtkSoftShadowPass::CompositeAndEndFrame(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  using Stage = penumbra::StageTimes::Stage;
+  {
+    penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Compositing);
+    this->RenderDelegate(s);
+  }
+  internals.StageTimes.EndFrame();
 }
 
 void vtkSoftShadowPass::ResetShadowStatistics(bool depthKept)

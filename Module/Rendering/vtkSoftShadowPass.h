@@ -443,6 +443,25 @@ private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
   void operator=(const vtkSoftShadowPass&) = delete;
 
+  /// Inside a soft shadow pass already rendering (another one, or this one through its own
+  /// delegate chain): warns once and draws the delegate unshadowed, or nothing in a cycle, and
+  /// returns true. False otherwise, having drawn nothing.
+  bool RenderIfNested(const vtkRenderState* s);
+  /// Sizes the frame and collects the lights that shadow it, none where their layers do not fit.
+  void PrepareShadowingLights(
+    const vtkRenderState* s, vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  /// The viewport's size and origin, or those of the framebuffer the frame is drawn into.
+  void UpdateFrameSize(const vtkRenderState* s, vtkRenderer* renderer);
+  /// The frame without shadows: the delegate alone. Outside a selection render (which leaves
+  /// them to the next frame) the shadows' statistics are zeroed and their kept inputs forgotten.
+  void RenderUnshadowed(const vtkRenderState* s, bool selecting);
+  /// Draws the shadows, or keeps the last drawn frame's, then the delegate with them applied.
+  void RenderShadowed(
+    const vtkRenderState* s, vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  /// The delegate drawn with the LI layers applied to the receivers.
+  void CompositeShadows(const vtkRenderState* s);
+  /// The delegate, timed as the compositing stage; then the frame's stage times end.
+  void CompositeAndEndFrame(const vtkRenderState* s);
   void RenderDelegate(const vtkRenderState* s);
   /// Zeroes the statistics of the shadows drawn (a reused frame keeps the drawn frame's); with
   /// `depthKept`, the depth's statistics stay: the kept depth is the last drawn frame's.
