@@ -98,6 +98,44 @@ bool Counted(const CasterCache& caster, const ShadowLight& light)
 {
   return !caster.Translucent() && !caster.Culled.count(light.Light);
 }
+
+/// Sets the counting wedges' light samples: offsets from the light's centre, which each
+/// caster's wedge coordinates place (lightWedge), or directions, which no origin moves. Their
+/// spread about the centre lets a fragment skip an edge whose plane through it misses them all
+/// (penumbra::EdgePlaneMissesSamples).
+void SetLightSamples(vtkShaderProgram* program, const ShadowLight& light)
+{
+  const glm::dvec3 centre = light.World.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(light.World);
+  std::vector<float> samples;
+  samples.reserve(4 * light.CountingSamples.size());
+  double spread = 0.0;
+  for (const glm::dvec4& sample : light.CountingSamples)
+  {
+    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
+    samples.insert(samples.end(),
+      { static_cast<float>(position.x), static_cast<float>(position.y),
+        static_cast<float>(position.z), static_cast<float>(sample.w) });
+    spread = std::max(spread, glm::length(position - centre));
+  }
+  program->SetUniform4fv(
+    "lightSamples", static_cast<int>(light.CountingSamples.size()), samples.data());
+  program->SetUniformf("sampleSpread", static_cast<float>(spread));
+}
+
+/// Draws the wedges of every caster counted for the light, with the wedge program bound.
+void DrawCountedWedges(ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light)
+{
+  for (CasterCache* caster : *frame.Casters)
+  {
+    if (!Counted(*caster, light))
+    {
+      continue;
+    }
+    CountingWedgeCache& cache = caster->CountingWedges[light.Light];
+    program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
+    frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
+  }
+}
 } // namespace
 
 bool CountingTechnique::Supported(vtkObject* owner)
@@ -293,9 +331,7 @@ bool CountingTechnique::CountWedges(
   ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
-  const std::size_t sampleCount = light.CountingSamples.size();
-  const bool counted = pixels == WedgePixels::Counted;
-  const std::string wedgeFS = CountingShader(penumbraCountingWedgeFS, sampleCount);
+  const std::string wedgeFS = CountingShader(penumbraCountingWedgeFS, light.CountingSamples.size());
   vtkShaderProgram* program = frame.Programs->Ready(window, penumbraCountingWedgeVS,
     wedgeFS.c_str(), "soft shadow volume wedge", "soft shadows average hard shadows instead");
   if (!program)
@@ -304,6 +340,25 @@ bool CountingTechnique::CountWedges(
   }
   vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
+  SetWedgeState(ostate, pixels);
+  glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  frame.DepthCopy()->Activate();
+  SetWedgeUniforms(frame, program, light, pixels);
+  const TechniqueCounts before = frame.Counts;
+  DrawCountedWedges(frame, program, light);
+  if (pixels == WedgePixels::Uncertain)
+  {
+    frame.Counts = before; // the wedges the counted pixels' pass drew, in the statistics once
+  }
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  // For the resolve's reads and for the clear of a second count (glClearTexImage).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  frame.DepthCopy()->Deactivate();
+  return true;
+}
+
+void CountingTechnique::SetWedgeState(vtkOpenGLState* ostate, WedgePixels pixels)
+{
   ostate->vtkglEnable(GL_STENCIL_TEST);
   ostate->vtkglStencilMask(0xFF);
   if (pixels == WedgePixels::Uncertain)
@@ -330,56 +385,22 @@ bool CountingTechnique::CountWedges(
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglEnable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
-  glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  frame.DepthCopy()->Activate();
+}
 
+void CountingTechnique::SetWedgeUniforms(
+  const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light, WedgePixels pixels)
+{
+  const bool counted = pixels == WedgePixels::Counted;
   frame.SetDepthUniforms(program);
   const glm::vec4 clipToCounters =
     counted ? HalfResolutionCounts::ClipToCounters(frame.Size) : glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
   program->SetUniform4f("clipToCounters", glm::value_ptr(clipToCounters));
   program->SetUniformi("counterStride", counted ? 2 : 1);
-  SetSampleCount(program, sampleCount);
+  SetSampleCount(program, light.CountingSamples.size());
   program->SetUniformi("counters", 0);
   program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   program->SetUniformf("eyeFloatBias", CountingEyeFloatBias);
-  // Samples as offsets from the light's centre, which each caster's wedge coordinates place
-  // (lightWedge), or directions, which no origin moves. Their spread about the centre lets a
-  // fragment skip an edge whose plane through it misses them all
-  // (penumbra::EdgePlaneMissesSamples).
-  const glm::dvec3 centre = light.World.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(light.World);
-  std::vector<float> samples;
-  samples.reserve(4 * sampleCount);
-  double spread = 0.0;
-  for (const glm::dvec4& sample : light.CountingSamples)
-  {
-    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
-    samples.insert(samples.end(),
-      { static_cast<float>(position.x), static_cast<float>(position.y),
-        static_cast<float>(position.z), static_cast<float>(sample.w) });
-    spread = std::max(spread, glm::length(position - centre));
-  }
-  program->SetUniform4fv("lightSamples", static_cast<int>(sampleCount), samples.data());
-  program->SetUniformf("sampleSpread", static_cast<float>(spread));
-  const TechniqueCounts before = frame.Counts;
-  for (CasterCache* caster : *frame.Casters)
-  {
-    if (!Counted(*caster, light))
-    {
-      continue;
-    }
-    CountingWedgeCache& cache = caster->CountingWedges[light.Light];
-    program->SetUniformi("frontFacesOnly", cache.FrontFacesOnly ? 1 : 0);
-    frame.DrawWedgeBuffer(program, *caster, cache, CountingWedgeCache::Attributes(), light);
-  }
-  if (pixels == WedgePixels::Uncertain)
-  {
-    frame.Counts = before; // the wedges the counted pixels' pass drew, in the statistics once
-  }
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  // For the resolve's reads and for the clear of a second count (glClearTexImage).
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  frame.DepthCopy()->Deactivate();
-  return true;
+  SetLightSamples(program, light);
 }
 
 bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, ResolveInto target)

@@ -102,6 +102,13 @@ private:
   bool Draw(ShadowFrame& frame, const ShadowLight& light);
   /// Adds every opaque caster's wedges' changes into the counters at `pixels`.
   bool CountWedges(ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels);
+  /// The draw state of CountWedges: no colour, and the stencil marking the pixels that wedges
+  /// reach (among the uncertain ones only, for WedgePixels::Uncertain).
+  static void SetWedgeState(vtkOpenGLState* ostate, WedgePixels pixels);
+  /// The wedge program's uniforms for counting the light's samples at `pixels`; the depth copy
+  /// must be active.
+  static void SetWedgeUniforms(const ShadowFrame& frame, vtkShaderProgram* program,
+    const ShadowLight& light, WedgePixels pixels);
   /// Sizes the counters for `texels` and `samples`; false when OpenGL refuses them.
   bool AllocateCounters(
     vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples);
