@@ -30,6 +30,56 @@
 namespace penumbra
 {
 
+namespace
+{
+/// `plane`, or the same plane turned over, so that it faces the light whichever way its polygons
+/// wind.
+ReceiverPlane FacingLight(ReceiverPlane plane, const glm::dvec4& light)
+{
+  const double lightSide =
+    light.w != 0.0 ? plane.Height(glm::dvec3(light)) : glm::dot(plane.Normal, glm::dvec3(light));
+  if (lightSide < 0.0)
+  {
+    ReceiverPlane::Make(plane.Origin, -plane.Normal, plane);
+  }
+  return plane;
+}
+
+/// The casters whose plateaus fall on the plane: those not culled for the light, the plane's own
+/// actor left out.
+std::vector<CasterCache*> PlateauCasters(
+  const ShadowFrame& frame, const ShadowLight& light, const vtkProp* planeProp)
+{
+  std::vector<CasterCache*> casters;
+  for (CasterCache* caster : *frame.Casters)
+  {
+    if (!caster->Culled.count(light.Light) && caster->Actor != planeProp)
+    {
+      casters.push_back(caster);
+    }
+  }
+  return casters;
+}
+
+/// What the plateau triangles and texture are made from (PlateauTechnique::Signature): the
+/// light, the plane, the texture's resolution and each caster's silhouette and matrix.
+std::vector<double> PlateauSignature(const ShadowLight& light, const ReceiverPlane& plane,
+  int resolution, const std::vector<CasterCache*>& casters)
+{
+  std::vector<double> signature = { light.World.x, light.World.y, light.World.z, light.World.w,
+    light.SoftRadius, plane.Origin.x, plane.Origin.y, plane.Origin.z, plane.Normal.x,
+    plane.Normal.y, plane.Normal.z, static_cast<double>(resolution) };
+  for (CasterCache* caster : casters)
+  {
+    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(caster)));
+    signature.push_back(static_cast<double>(caster->Volumes[light.VolumeKey(0)].Generation));
+    const double* m = glm::value_ptr(caster->ObjectToWorld);
+    signature.insert(signature.end(), m, m + 16);
+  }
+  return signature;
+}
+} // namespace
+
 bool PlateauTechnique::FindReceiverPlane(vtkRenderer* renderer, vtkObject* owner)
 {
   this->HavePlane = this->Bounded = false;
@@ -153,71 +203,72 @@ bool PlateauTechnique::RenderTexture(
 
 vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
 {
-  vtkOpenGLRenderWindow* window = frame.Window;
-  // The plane faces the light, whichever way its polygons wind.
-  ReceiverPlane plane = this->Plane;
-  const double lightSide = light.World.w != 0.0 ? plane.Height(glm::dvec3(light.World))
-                                                : glm::dot(plane.Normal, glm::dvec3(light.World));
-  if (lightSide < 0.0)
-  {
-    ReceiverPlane::Make(plane.Origin, -plane.Normal, plane);
-  }
-  const int resolution = this->Settings.Resolution;
-  std::vector<double> signature = { light.World.x, light.World.y, light.World.z, light.World.w,
-    light.SoftRadius, plane.Origin.x, plane.Origin.y, plane.Origin.z, plane.Normal.x,
-    plane.Normal.y, plane.Normal.z, static_cast<double>(resolution) };
-  std::vector<CasterCache*> casters;
-  for (CasterCache* caster : *frame.Casters)
-  {
-    if (caster->Culled.count(light.Light) || caster->Actor == this->PlaneProp)
-    {
-      continue;
-    }
-    casters.push_back(caster);
-    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(caster)));
-    signature.push_back(static_cast<double>(caster->Volumes[light.VolumeKey(0)].Generation));
-    const double* m = glm::value_ptr(caster->ObjectToWorld);
-    signature.insert(signature.end(), m, m + 16);
-  }
+  const ReceiverPlane plane = FacingLight(this->Plane, light.World);
+  const std::vector<CasterCache*> casters = PlateauCasters(frame, light, this->PlaneProp);
+  const std::vector<double> signature =
+    PlateauSignature(light, plane, this->Settings.Resolution, casters);
   if (signature != this->Signature)
   {
     this->Signature = signature;
     this->TextureCurrent = false;
-    this->Triangles.clear();
-    for (CasterCache* caster : casters)
-    {
-      VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
-      volume.EnsureCaps(*caster->Mesh);
-      BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld, light.World,
-        light.SoftRadius, plane, this->Triangles);
-    }
-    // The texture covers the plateaus, within the receiver's extent when it has one.
-    this->Lo = glm::dvec2(std::numeric_limits<double>::max());
-    this->Hi = -this->Lo;
-    for (const PlateauVertex& v : this->Triangles)
-    {
-      this->Lo = glm::min(this->Lo, glm::dvec2(v.U, v.V));
-      this->Hi = glm::max(this->Hi, glm::dvec2(v.U, v.V));
-    }
-    if (this->Bounded)
-    {
-      this->Lo = glm::max(this->Lo, this->Min);
-      this->Hi = glm::min(this->Hi, this->Max);
-    }
+    this->BuildTriangles(light, plane, casters);
+    this->FitTextureExtent();
   }
   const glm::dvec2 lo = this->Lo, size = this->Hi - this->Lo;
   if (this->Triangles.empty() || !(size.x > 0.0) || !(size.y > 0.0))
   {
     return 0;
   }
-  const double tolerance = this->Bounded ? this->Tolerance : 1e-5 * glm::length(size);
+  this->ReadyTexture(frame.Window);
+  if (!this->TextureCurrent && !this->RenderTexture(frame, lo, size))
+  {
+    return 0;
+  }
+  if (!this->ResolveIntoLayer(frame, plane, lo, size))
+  {
+    return 0;
+  }
+  return static_cast<vtkIdType>(this->Triangles.size() / 3);
+}
 
-  vtkOpenGLState* ostate = window->GetState();
+void PlateauTechnique::BuildTriangles(
+  const ShadowLight& light, const ReceiverPlane& plane, const std::vector<CasterCache*>& casters)
+{
+  this->Triangles.clear();
+  for (CasterCache* caster : casters)
+  {
+    VolumeCache& volume = caster->Volumes[light.VolumeKey(0)];
+    volume.EnsureCaps(*caster->Mesh);
+    BuildPlateaus(caster->Mesh->Topology, volume.Volume, caster->ObjectToWorld, light.World,
+      light.SoftRadius, plane, this->Triangles);
+  }
+}
+
+void PlateauTechnique::FitTextureExtent()
+{
+  // The texture covers the plateaus, within the receiver's extent when it has one.
+  this->Lo = glm::dvec2(std::numeric_limits<double>::max());
+  this->Hi = -this->Lo;
+  for (const PlateauVertex& v : this->Triangles)
+  {
+    this->Lo = glm::min(this->Lo, glm::dvec2(v.U, v.V));
+    this->Hi = glm::max(this->Hi, glm::dvec2(v.U, v.V));
+  }
+  if (this->Bounded)
+  {
+    this->Lo = glm::max(this->Lo, this->Min);
+    this->Hi = glm::min(this->Hi, this->Max);
+  }
+}
+
+void PlateauTechnique::ReadyTexture(vtkOpenGLRenderWindow* window)
+{
   if (this->Framebuffer->GetContext() != window)
   {
     this->Framebuffer->SetContext(window);
   }
   // Filtered lookups smooth the texels' steps; the depth is t itself, not compared.
+  const int resolution = this->Settings.Resolution;
   if (TextureNeedsAllocation(
         this->Depth, window, resolution, resolution, 1, 1, vtkTextureObject::Linear))
   {
@@ -226,18 +277,20 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     this->Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32);
     this->TextureCurrent = false;
   }
-  if (!this->TextureCurrent && !this->RenderTexture(frame, lo, size))
-  {
-    return 0;
-  }
+}
 
+bool PlateauTechnique::ResolveIntoLayer(
+  ShadowFrame& frame, const ReceiverPlane& plane, const glm::dvec2& lo, const glm::dvec2& size)
+{
   // Into the LI layer, at the pixels on the plane (the hard shadow stays elsewhere).
+  vtkOpenGLRenderWindow* window = frame.Window;
   vtkShaderProgram* resolve = frame.Programs->Ready(window, penumbraResolveVS,
     penumbraPlateauResolveFS, "plateau resolve", "plateaus are left out");
   if (!resolve)
   {
-    return 0;
+    return false;
   }
+  vtkOpenGLState* ostate = window->GetState();
   ScopedDrawState saved(ostate);
   ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
   ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -250,6 +303,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
     static_cast<float>(1.0 / size.y), static_cast<float>(-lo.x / size.x),
     static_cast<float>(-lo.y / size.y) };
   const glm::vec3 normal(plane.Normal), u(plane.U), v(plane.V);
+  const double tolerance = this->Bounded ? this->Tolerance : 1e-5 * glm::length(size);
   frame.SetDepthUniforms(resolve);
   resolve->SetUniformi("plateauTexture", this->Depth->GetTextureUnit());
   frame.SetClipToLocal(resolve, plane.Origin);
@@ -262,7 +316,7 @@ vtkIdType PlateauTechnique::Draw(ShadowFrame& frame, const ShadowLight& light)
   frame.FullScreen->Draw(resolve, this->ResolveVAO);
   this->Depth->Deactivate();
   frame.DepthCopy()->Deactivate();
-  return static_cast<vtkIdType>(this->Triangles.size() / 3);
+  return true;
 }
 
 void PlateauTechnique::WarnNoPlane(vtkObject* owner)

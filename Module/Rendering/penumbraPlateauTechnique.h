@@ -61,8 +61,20 @@ private:
   /// Renders the light's plateaus over the receiver plane, then writes them into its LI layer
   /// at the pixels on the plane; returns the plateau triangles drawn.
   vtkIdType Draw(ShadowFrame& frame, const ShadowLight& light);
+  /// Makes the plateau triangles of `casters`' silhouettes for the light over `plane`.
+  void BuildTriangles(
+    const ShadowLight& light, const ReceiverPlane& plane, const std::vector<CasterCache*>& casters);
+  /// Fits the texture's extent (Lo, Hi) to the triangles, within the plane's bounds if it has any.
+  void FitTextureExtent();
+  /// Puts the framebuffer in `window`'s context, and allocates the plateau texture where it is
+  /// not one of the resolution's there (a texture allocated anew is not current).
+  void ReadyTexture(vtkOpenGLRenderWindow* window);
   /// Draws the current plateau triangles into the plateau texture over [lo, lo + size].
   bool RenderTexture(ShadowFrame& frame, const glm::dvec2& lo, const glm::dvec2& size);
+  /// Writes the plateau texture over [lo, lo + size] into the light's LI layer at the pixels on
+  /// `plane`; false when its shader did not build.
+  bool ResolveIntoLayer(
+    ShadowFrame& frame, const ReceiverPlane& plane, const glm::dvec2& lo, const glm::dvec2& size);
 
   bool HavePlane = false;
   ReceiverPlane Plane;
