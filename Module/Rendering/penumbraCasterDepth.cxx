@@ -28,24 +28,6 @@ namespace penumbra
 {
 namespace
 {
-/// No polygon offset or z-shift moves the mapper's triangles (vtkOpenGLPolyDataMapper's
-/// GetCoincidentParameters, for triangles).
-bool DrawsTrianglesWithoutOffset(vtkMapper* mapper, vtkProperty* property)
-{
-  const int resolve = mapper->GetResolveCoincidentTopology();
-  if (resolve == VTK_RESOLVE_SHIFT_ZBUFFER)
-  {
-    return false;
-  }
-  if (resolve == VTK_RESOLVE_POLYGON_OFFSET || property->GetEdgeVisibility())
-  {
-    double factor = 0.0, units = 0.0;
-    mapper->GetCoincidentTopologyPolygonOffsetParameters(factor, units);
-    return factor == 0.0 && units == 0.0;
-  }
-  return true;
-}
-
 /// Whether VTK draws nothing of `data` but its polygons' and strips' triangles.
 bool OnlySurfaceCells(vtkPolyData* data)
 {
@@ -119,7 +101,7 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
     actor->HasTranslucentPolygonalGeometry() || property->GetRepresentation() != VTK_SURFACE ||
     property->GetVertexVisibility() || property->GetBackfaceCulling() ||
     property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
-    !DrawsTrianglesWithoutOffset(mapper, property) || HasCustomShaders(actor))
+    HasCustomShaders(actor))
   {
     return false;
   }

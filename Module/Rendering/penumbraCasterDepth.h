@@ -11,10 +11,11 @@
  * cuts them): drawn from there, its depth needs a position-only shader and one draw call. A
  * composite mapper's blocks are drawn the same way, one mesh each: VTK draws them from one vertex
  * buffer shifted to the data's centre, so that a block far from it gets coarse depth.
- * Everything else (other mappers, clipping planes, edges, lines and points, custom shaders,
- * polygon offsets, a concave polygon) is left to VTK's opaque pass. A closed caster seen from
- * outside only is drawn with the faces turned away from the eye culled: they are hidden behind
- * its own.
+ * Everything else (other mappers, clipping planes, lines and points, custom shaders, a
+ * concave polygon) is left to VTK's opaque pass. A polygon offset or z-shift is not drawn
+ * (vtkSoftShadowPass turns VTK's off for its depth pass too): it moves a surface's depth, not
+ * its points, and the shadows are counted at the points. A closed caster seen from outside only
+ * is drawn with the faces turned away from the eye culled: they are hidden behind its own.
  */
 #ifndef penumbraCasterDepth_h
 #define penumbraCasterDepth_h
@@ -47,8 +48,8 @@ public:
   /// vtkCompositePolyDataMapper2, opaque (every drawn block), neither forced so nor textured with
   /// alpha (VTK drops fragments of alpha 0 then too), a surface (edges drawn on it included:
   /// VTK widens its triangles for them, a band the pass's depth leaves out,
-  /// KeepEdgesOutOfDepthPass) without vertices or culled faces, no clipping plane, no polygon
-  /// offset or z-shift, no custom shader code, and
+  /// KeepEdgesOutOfDepthPass) without vertices or culled faces, no clipping plane, no custom
+  /// shader code (a polygon offset or z-shift is left out of the pass's depth), and
   /// data with no vertex or line cells and no ghost cells. Read before VTK draws the frame's
   /// other props.
   static bool DrawnAsItsTriangles(vtkProp* prop);
