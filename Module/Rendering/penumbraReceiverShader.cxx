@@ -123,4 +123,19 @@ bool KeepEdgesOutOfDepthPass(std::string& geometryShader)
   return true;
 }
 
+bool KeepOffsetOutOfDepthPass(std::string& fragmentShader)
+{
+  static const std::string offset = "1.0*cOffset/65000";
+  const std::size_t at = fragmentShader.find(offset);
+  const std::size_t main = fragmentShader.find("void main()");
+  if (at == std::string::npos || main == std::string::npos || main > at ||
+    fragmentShader.find("penumbraDepthPass") != std::string::npos)
+  {
+    return false; // no offset, or edited already
+  }
+  fragmentShader.replace(at, offset.size(), "float(1 - penumbraDepthPass)*cOffset/65000");
+  fragmentShader.insert(main, "uniform int penumbraDepthPass; // 1 while the pass draws depth\n");
+  return true;
+}
+
 } // namespace penumbra

@@ -54,6 +54,14 @@ std::vector<int> ScaleLightColours(
 /// widens triangles.
 bool KeepEdgesOutOfDepthPass(std::string& geometryShader);
 
+/// Makes VTK 9.1's coincident-topology offset (a polygon offset's units or a z-shift, which VTK
+/// adds to gl_FragDepth) apply only while `penumbraDepthPass` is 0. It moves a surface's depth
+/// back, not its points, and counting takes each pixel's point from the pass's depth: behind
+/// its own face, the point read the face's edges from behind (vedo sets an offset for every
+/// mesh). A uniform rather than VTK's global setting turned off, which would make VTK rebuild
+/// the shader for each of the two draws of every frame. Returns whether the shader offsets.
+bool KeepOffsetOutOfDepthPass(std::string& fragmentShader);
+
 } // namespace penumbra
 
 #endif

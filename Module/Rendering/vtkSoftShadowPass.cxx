@@ -967,27 +967,6 @@ private:
   penumbra::ScopedFramebufferBindings Bindings;
   penumbra::ScopedDrawState Saved; // stencil write mask and clear depth included
 };
-
-/// Turns VTK's global polygon offset or z-shift off while VTK draws the pass's depth. It moves a
-/// surface's depth back, not its points, and soft shadow volumes take each pixel's point from
-/// the depth: behind its own face, the point reads its face's edges as seen from behind
-/// (vedo turns an offset on for every mesh: a quarter of a lone sphere's shadowed pixels were
-/// off averaging). It decides only which of two coincident surfaces is seen, both at the point.
-class ScopedNoCoincidentTopologyShift
-{
-public:
-  ScopedNoCoincidentTopologyShift()
-    : Saved(vtkMapper::GetResolveCoincidentTopology())
-  {
-    vtkMapper::SetResolveCoincidentTopologyToOff();
-  }
-  ~ScopedNoCoincidentTopologyShift() { vtkMapper::SetResolveCoincidentTopology(this->Saved); }
-  ScopedNoCoincidentTopologyShift(const ScopedNoCoincidentTopologyShift&) = delete;
-  ScopedNoCoincidentTopologyShift& operator=(const ScopedNoCoincidentTopologyShift&) = delete;
-
-private:
-  const int Saved;
-};
 } // namespace
 
 void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
@@ -1043,7 +1022,6 @@ void vtkSoftShadowPass::RenderDepthWithVTK(const vtkRenderState* s, std::vector<
   depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(internals.LI.GetFramebuffer());
   penumbra::ScopedActiveCamera shadowCamera(s->GetRenderer(), internals.Camera.Get());
-  ScopedNoCoincidentTopologyShift noShift;
   internals.DrawingDepth = true;
   internals.DepthPass->Render(&depthState);
   internals.DrawingDepth = false;
@@ -1364,6 +1342,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(std::string&, std::string& geome
     return true; // nothing inserted, already reported
   }
   penumbra::KeepEdgesOutOfDepthPass(geometryShader);
+  penumbra::KeepOffsetOutOfDepthPass(fragmentShader);
   auto actor = vtkActor::SafeDownCast(prop);
   // Actors that a prop such as vtkCubeAxesActor draws through, unseen by the renderer, are its
   // annotation: VTK draws their lines unlit by design, so they say nothing.

@@ -159,5 +159,19 @@ int main()
   const std::string wideLinesBefore = wideLines;
   Check(!penumbra::KeepEdgesOutOfDepthPass(wideLines) && wideLines == wideLinesBefore,
     "other geometry shaders are left alone");
+  const std::string offsetBefore = "uniform float cOffset;\nvoid main()\n{\n  gl_FragDepth = "
+                                   "gl_FragCoord.z + 1.0*cOffset/65000;\n}\n";
+  std::string offset = offsetBefore;
+  Check(penumbra::KeepOffsetOutOfDepthPass(offset) &&
+      offset.find("uniform int penumbraDepthPass;") < offset.find("void main()") &&
+      offset.find("gl_FragCoord.z + float(1 - penumbraDepthPass)*cOffset/65000;") !=
+        std::string::npos,
+    "VTK's coincident offset is added outside the pass's depth only");
+  const std::string offsetEdited = offset;
+  Check(!penumbra::KeepOffsetOutOfDepthPass(offset) && offset == offsetEdited,
+    "the offset is edited once only");
+  std::string noOffset = "void main()\n{\n}\n";
+  Check(!penumbra::KeepOffsetOutOfDepthPass(noOffset) && noOffset == "void main()\n{\n}\n",
+    "a shader without an offset is left alone");
   return penumbra_test::Finish();
 }

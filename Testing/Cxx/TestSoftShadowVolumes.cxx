@@ -15,6 +15,7 @@
 #include "penumbraProcessMemory.h"
 #include "penumbraTestHarness.h"
 
+#include "vtkActorCollection.h"
 #include "vtkAppendPolyData.h"
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
@@ -474,8 +475,10 @@ void TestCapInLightPlaneCloseUp()
 /// VTK's global polygon offset, which vedo turns on for every mesh (factor and units 0.1), with
 /// the casters' depth drawn from their meshes and by VTK: an offset moves a surface's depth back,
 /// not its points, and counting's point, taken from the depth, then lay behind its own face
-/// (a user trial: a quarter of a lone sphere's shadowed pixels off averaging; 3.65% here, either
-/// way, while the pass drew the offset). Drawn from the meshes, such props' depth is the surface's.
+/// (a user trial: a quarter of a lone sphere's shadowed pixels off averaging; 3.65% here, each
+/// way, while the pass drew the offset). Drawn from the meshes, such props' depth is the surface's;
+/// drawn by VTK, the offset is off in the pass's depth pass, also where VTK applies it for edges
+/// shown whatever the global setting (3.65% with VTK's global setting turned off instead).
 void TestGlobalPolygonOffset(const SceneMaker& make)
 {
   const int resolve = vtkMapper::GetResolveCoincidentTopology();
@@ -483,12 +486,24 @@ void TestGlobalPolygonOffset(const SceneMaker& make)
   vtkMapper::GetResolveCoincidentTopologyPolygonOffsetParameters(factor, units);
   vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
   vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(0.1, 0.1);
-  for (const bool fromMeshes : { true, false })
+  for (const int drawnBy : { 0, 1, 2 })
   {
+    const bool fromMeshes = drawnBy == 0;
     SceneWindow view(make());
     view.Pass->SetDepthFromCasterMeshes(fromMeshes);
+    if (drawnBy == 2)
+    {
+      // VTK offsets a surface under its edges whatever the global setting.
+      vtkActorCollection* actors = view.Renderer->GetActors();
+      actors->InitTraversal();
+      while (vtkActor* actor = actors->GetNextActor())
+      {
+        actor->GetProperty()->EdgeVisibilityOn();
+      }
+    }
     const SampleAgreement agreement = CountedAgainstAveraged(view);
-    const std::string drawn = fromMeshes ? "from the meshes" : "by VTK";
+    const std::string drawn =
+      fromMeshes ? "from the meshes" : (drawnBy == 1 ? "by VTK" : "by VTK, edges shown");
     Check((view.Pass->GetNumberOfPropsWithDepthFromMeshes() > 0) == fromMeshes,
       "VTK's global polygon offset: props' depth drawn " + drawn);
     std::printf("global polygon offset, depth drawn %s: differ > 1/N on %.2f%% of %d shadowed "
