@@ -14,8 +14,9 @@
  * Everything else (other mappers, clipping planes, lines and points, custom shaders, a
  * concave polygon) is left to VTK's opaque pass. A polygon offset or z-shift is not drawn
  * (nor by VTK in the pass's depth pass, for receivers: KeepOffsetOutOfDepthPass): it moves a
- * surface's depth, not its points, and the shadows are counted at the points. A closed caster seen from outside only
- * is drawn with the faces turned away from the eye culled: they are hidden behind its own.
+ * surface's depth, not its points, and the shadows are counted at the points. A closed caster
+ * seen from outside only is drawn with the faces turned away from the eye culled: they are
+ * hidden behind its own.
  */
 #ifndef penumbraCasterDepth_h
 #define penumbraCasterDepth_h
