@@ -106,6 +106,52 @@ glm::dvec2 DepthsInView(const Box& box, const std::vector<HalfSpace>& frustum,
 
 } // namespace
 
+bool ProjectsInfinityToInfinity(const glm::dmat4& worldToClip)
+{
+  // Clip w of (d, 0) is row 3 of the matrix times d (GLM: column-major).
+  return worldToClip[0][3] == 0.0 && worldToClip[1][3] == 0.0 && worldToClip[2][3] == 0.0;
+}
+
+double ParallelSweepLength(const glm::dmat4& objectToWorld, const glm::dvec3& casterMin,
+  const glm::dvec3& casterMax, const glm::dvec4& light, const Box& scene,
+  const std::array<glm::dvec3, 4>& nearCorners)
+{
+  if (!scene.Valid)
+  {
+    return 0.0;
+  }
+  std::vector<glm::dvec3> points(nearCorners.begin(), nearCorners.end());
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::bvec3 high((corner & 1) != 0, (corner & 2) != 0, (corner & 4) != 0);
+    points.push_back(glm::mix(scene.Min, scene.Max, high));
+    points.push_back(glm::mix(casterMin, casterMax, high));
+  }
+  // From the light, or across the points for a directional light's parallel sweep.
+  double reach = 0.0;
+  for (const glm::dvec3& a : points)
+  {
+    if (light.w != 0.0)
+    {
+      reach = std::max(reach, glm::distance(a, glm::dvec3(light)));
+      continue;
+    }
+    for (const glm::dvec3& b : points)
+    {
+      reach = std::max(reach, glm::distance(a, b));
+    }
+  }
+  // A world length is at least an object length over the Frobenius norm of the inverse.
+  const glm::dmat3 toObject = glm::inverse(glm::dmat3(objectToWorld));
+  double norm = 0.0;
+  for (int column = 0; column < 3; ++column)
+  {
+    norm += glm::dot(toObject[column], toObject[column]);
+  }
+  const double length = 1e3 * reach * std::sqrt(norm);
+  return std::isfinite(length) && length > 0.0 ? length : 0.0;
+}
+
 bool VolumeMayReachNearPlane(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
   const glm::dvec4& light, const std::array<glm::dvec3, 4>& nearCorners)
 {

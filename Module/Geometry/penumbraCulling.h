@@ -34,6 +34,14 @@ inline glm::dvec3 UnitDirection(const glm::dvec3& v)
 }
 
 /**
+ * Whether `worldToClip` takes every point at infinity (w = 0) to clip w = 0: a parallel
+ * projection, under which a shadow volume's far end at infinity is drawn nowhere, although it
+ * lies behind every pixel or none. (A perspective projection takes only the directions parallel
+ * to the image plane there.)
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool ProjectsInfinityToInfinity(const glm::dmat4& worldToClip);
+
+/**
  * Whether a caster's shadow volume may reach the near-plane rectangle (McGuire et al.): true when
  * the caster's bounds meet the convex hull of that rectangle and the light (for a directional
  * light, the rectangle swept towards it). Only separating planes of the hull are tried, so "true"
@@ -163,6 +171,22 @@ VTKPENUMBRAGEOMETRY_EXPORT PixelRect ShadowScissor(const glm::dvec3& casterMin,
 VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 VolumeEndPlane(const glm::dvec3& casterMin,
   const glm::dvec3& casterMax, const glm::dvec4& light, const Box& scene,
   const std::array<glm::dvec3, 4>& nearCorners);
+
+/**
+ * How far a z-fail shadow volume's swept points go under a parallel projection, which draws a
+ * far end at infinity nowhere (ProjectsInfinityToInfinity) although it lies behind every pixel
+ * or none: object-space length along each swept direction (the shader scales each direction to
+ * it), so that every swept point lies 1000 times farther from the light (positional) or from
+ * the caster (directional) than any point of `scene`, the caster's box and the near rectangle
+ * lies from it. The volume, closed by its dark cap there, then holds the same visible points
+ * as the volume to infinity, unless a caster triangle spans within 0.1 degrees of a half turn
+ * seen from the light. (1e4 put swept points so far out that llvmpipe's clipping drew slivers
+ * along the window's edge.) 0 (to infinity) where the matrix cannot be inverted or a box is
+ * invalid.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT double ParallelSweepLength(const glm::dmat4& objectToWorld,
+  const glm::dvec3& casterMin, const glm::dvec3& casterMax, const glm::dvec4& light,
+  const Box& scene, const std::array<glm::dvec3, 4>& nearCorners);
 
 /**
  * Where a prop's cells are, finer than its bounds: a grid of Resolution^3 cells over the bounds,

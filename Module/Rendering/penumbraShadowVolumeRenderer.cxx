@@ -251,6 +251,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     const glm::vec4 endPlane(glm::transpose(caster.ObjectToWorld) *
       VolumeEndPlane(caster.WorldMin, caster.WorldMax, sample, frame.SceneBox, frame.NearCorners));
     program->SetUniform4f("endPlaneMC", glm::value_ptr(endPlane));
+    program->SetUniformf("sweepLength", 0.0f);
     ostate->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
@@ -275,6 +276,13 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglDepthFunc(countInColour ? GL_GEQUAL : GL_LESS);
     const glm::vec4 toInfinity(0.0f);
     program->SetUniform4f("endPlaneMC", glm::value_ptr(toInfinity));
+    // A parallel projection draws the far end at infinity nowhere (w = 0 at every swept point),
+    // though it lies behind every pixel or none: the volume then ends far beyond the scene.
+    const double sweep = ProjectsInfinityToInfinity(frame.WorldToClip)
+      ? ParallelSweepLength(caster.ObjectToWorld, caster.WorldMin, caster.WorldMax, sample,
+          frame.SceneBox, frame.NearCorners)
+      : 0.0;
+    program->SetUniformf("sweepLength", static_cast<float>(sweep));
     vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     // Leaving a volume behind the point takes the light away.

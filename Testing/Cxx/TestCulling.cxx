@@ -584,6 +584,62 @@ void TestWideClippingRange()
   Check(kept, "a box across a side plane near the far plane of a wide range stays in range");
 }
 
+/// Parallel projections take every point at infinity to w = 0, perspective ones only the
+/// directions parallel to the image plane, whatever the view and the frustum's offsets.
+void TestProjectsInfinityToInfinity()
+{
+  const glm::dmat4 view =
+    glm::lookAt(glm::dvec3(1, 2, 3), glm::dvec3(0.2, 0, -1), glm::dvec3(0, 1, 0));
+  Check(penumbra::ProjectsInfinityToInfinity(glm::ortho(-2.0, 3.0, -1.0, 1.5, 0.01, 100.0) * view),
+    "a parallel projection draws infinity nowhere");
+  Check(
+    !penumbra::ProjectsInfinityToInfinity(glm::frustum(-0.2, 0.1, -0.1, 0.15, 0.01, 100.0) * view),
+    "a perspective projection draws the far end of volumes at infinity");
+}
+
+/// Under a parallel projection z-fail volumes end at ParallelSweepLength: every swept point,
+/// whatever the caster's matrix, lies 1000 times farther from a positional light than any point
+/// of the scene, the caster's box and the near rectangle.
+void TestParallelSweepLength(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> coordinate(-5.0, 5.0), scale(0.01, 100.0);
+  int shortSweeps = 0;
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    glm::dmat4 objectToWorld = glm::translate(
+      glm::dmat4(1.0), glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)));
+    objectToWorld = glm::rotate(
+      objectToWorld, coordinate(rng), glm::normalize(glm::dvec3(coordinate(rng), 1.0, 0.5)));
+    objectToWorld = glm::scale(objectToWorld, glm::dvec3(scale(rng), scale(rng), scale(rng)));
+    const glm::dvec3 lo(coordinate(rng), coordinate(rng), coordinate(rng));
+    const glm::dvec3 hi = lo + glm::dvec3(1.0, 2.0, 0.5);
+    const penumbra::Box scene{ true, glm::min(lo, glm::dvec3(-4.0)),
+      glm::max(hi, glm::dvec3(4.0)) };
+    const glm::dvec4 light(coordinate(rng), 6.0 + coordinate(rng), coordinate(rng), 1.0);
+    const std::array<glm::dvec3, 4> nearCorners = { glm::dvec3(-1, 1, 8), glm::dvec3(1, 1, 8),
+      glm::dvec3(1, 2, 8), glm::dvec3(-1, 2, 8) };
+    const double length =
+      penumbra::ParallelSweepLength(objectToWorld, lo, hi, light, scene, nearCorners);
+    double reach = 0.0;
+    for (const glm::dvec3& p : { scene.Min, scene.Max, lo, hi, nearCorners[0], nearCorners[2] })
+    {
+      reach = std::max(reach, glm::distance(p, glm::dvec3(light)));
+    }
+    // The shortest world length of an object-space direction of that length.
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      glm::dvec3 direction(0.0);
+      direction[axis] = 1.0;
+      const glm::dvec3 diagonal = glm::normalize(glm::dvec3(1.0, -2.0, 0.5) + direction);
+      for (const glm::dvec3& d : { direction, diagonal })
+      {
+        shortSweeps += glm::length(glm::dmat3(objectToWorld) * (length * d)) < 1e3 * reach;
+      }
+    }
+  }
+  Check(shortSweeps == 0, "swept points under a parallel projection go far beyond the scene");
+}
+
 void TestFarPositionalLight()
 {
   // The fuzzer's input, to the digit: rounded corners happened to give the right answer.
@@ -712,6 +768,9 @@ int main()
     "z-fail draws both caps, z-pass only a seen-through caster's light cap, a wedge fallback "
     "draws back faces");
   TestFarPositionalLight();
+  TestProjectsInfinityToInfinity();
+  std::mt19937 sweepRng(31); // its own stream: the checks below keep their cases
+  TestParallelSweepLength(sweepRng);
   TestGrazingLightFarFromOrigin(rng);
   TestWideClippingRange();
   TestTightClippingRange(rng);

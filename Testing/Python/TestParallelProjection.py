@@ -12,7 +12,7 @@ import numpy as np
 import penumbra
 from penumbra_testing import (actor_of, check, compare_hard_shadows, counted_against_averaged, finish,
                               ground_and_sphere, image, light_pass_and_truth)
-from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -92,5 +92,42 @@ for parallel in (True, False):
           % (projection, 100 * differ, shadowed))
     check(shadowed > 0.02 * surface.sum() and differ <= 0.003,
           projection + ": counting equals averaging with a wide user range")
+
+# A point light behind the plane of a parallel eye close to a lone, open ground: the ground's
+# volumes are drawn z-fail, and their far end at infinity, which lies behind every pixel here,
+# is drawn nowhere by a parallel projection (every swept point at w = 0). A sweep of random
+# scenes found averaged and counted shadows reading the whole lit ground as shadowed (mean
+# visibility 0 against the truth's 1), while the one-sample hard shadow happened to be right.
+renderer.RemoveAllViewProps()
+ground = vtkPlaneSource()
+ground.SetOrigin(-3, 0, -3)
+ground.SetPoint1(3, 0, -3)
+ground.SetPoint2(-3, 0, 3)
+renderer.AddActor(actor_of(ground, (0.85, 0.85, 0.8)))
+light.SetPositional(True)
+light.SetPosition(-0.49, 1.93, -2.70)
+penumbra.vtkSoftShadowPass.SetLightRadius(light, 0.064)
+focal = np.array([-0.089, 0.586, 0.608])
+towards_eye = np.array([-0.103, 0.323, -0.221])
+camera.SetFocalPoint(*focal)
+camera.SetPosition(*(focal + 0.4 * towards_eye / np.linalg.norm(towards_eye)))
+camera.SetViewUp(0, 1, 0)
+camera.SetParallelProjection(True)
+camera.SetParallelScale(0.1)
+renderer.ResetCameraClippingRange()
+truth.SetSamplesPerLight(64)
+truth.Update()
+true = image(truth.GetVisibilityImage(0), w, h)
+for method, choose in (("averaged", shadows.SetMethodToAveragedHardShadows),
+                       ("counted", shadows.SetMethodToSoftShadowVolumes)):
+    choose()
+    window.Render()
+    ours = image(shadows.GetVisibilityImage(0), w, h)
+    off = np.mean(np.abs(ours - true) > 1.0 / 16 + 1e-6)
+    print("     parallel, light behind the eye's plane, %s: %d z-fail volumes, mean visibility "
+          "%.3f (truth %.3f), %.2f%% of pixels off by more than 1/N"
+          % (method, shadows.GetNumberOfZFailVolumes(), ours.mean(), true.mean(), 100 * off))
+    check(shadows.GetNumberOfZFailVolumes() > 0 and off <= 0.002,
+          "parallel, light behind the eye's plane: %s z-fail volumes end beyond the scene" % method)
 
 finish()

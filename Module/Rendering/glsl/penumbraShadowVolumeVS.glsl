@@ -1,7 +1,8 @@
 //VTK::System::Dec
 // Shadow volume of one caster for one light. Each caster point is uploaded twice: w = 1 as
 // itself, w = 0 for its copy swept away from the light, which reaches infinity exactly
-// (homogeneous w = 0) or stops on the end plane; the mesh is uploaded once per data change.
+// (homogeneous w = 0), stops on the end plane or goes a set length; the mesh is uploaded once
+// per data change.
 in vec4 vertexMC;
 
 uniform mat4 MCDCMatrix;
@@ -11,6 +12,9 @@ uniform vec4 lightMC;
 // space; the swept copies stop on it, which spares the fill of the volume beyond the scene.
 // (0, 0, 0, 0): they go to infinity.
 uniform vec4 endPlaneMC;
+// z-fail under a parallel projection, which draws infinity nowhere: the object-space length the
+// swept directions are scaled to (penumbra::ParallelSweepLength); 0 otherwise.
+uniform float sweepLength;
 // Pushes the light cap away from the eye (NDC depth units); see ShadowVolumeRenderer::DrawVolume.
 uniform float capDepthBias;
 
@@ -24,7 +28,11 @@ void main()
   else
   {
     vec3 away = vertexMC.xyz * lightMC.w - lightMC.xyz;
-    if (endPlaneMC == vec4(0.0))
+    if (sweepLength > 0.0)
+    {
+      gl_Position = MCDCMatrix * vec4(vertexMC.xyz + away * (sweepLength / length(away)), 1.0);
+    }
+    else if (endPlaneMC == vec4(0.0))
     {
       gl_Position = MCDCMatrix * vec4(away, 0.0);
     }
