@@ -104,4 +104,18 @@ std::vector<glm::dvec4> SpreadLightSamples(
   return PlaceOnLight(light, radius, SunflowerPoints(count), target);
 }
 
+glm::dvec4 CountingReference(const glm::dvec4& light, double radius)
+{
+  // Irrational-looking ratios: no plane of a scene built from round numbers holds it.
+  const glm::dvec3 off = glm::normalize(glm::dvec3(0.5773502, 0.6180340, -0.5320889));
+  const double offset = CountingReferenceOffset * radius;
+  if (light.w != 0.0)
+  {
+    return glm::dvec4(glm::dvec3(light) + offset * off, 1.0);
+  }
+  const glm::dvec3 direction(light);
+  const glm::dvec3 across = glm::normalize(off - glm::dot(off, direction) * direction);
+  return glm::dvec4(std::cos(offset) * direction + std::sin(offset) * across, 0.0);
+}
+
 } // namespace penumbra

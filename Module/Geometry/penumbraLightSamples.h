@@ -54,6 +54,20 @@ VTKPENUMBRAGEOMETRY_EXPORT std::vector<glm::dvec4> PlaceOnLight(const glm::dvec4
 VTKPENUMBRAGEOMETRY_EXPORT std::vector<glm::dvec4> SpreadLightSamples(
   const glm::dvec4& light, double radius, int count, const glm::dvec3& target);
 
+/// The share of a light's radius by which counting's reference point lies off its centre.
+constexpr double CountingReferenceOffset = 0.01;
+
+/**
+ * The point on a light from which soft shadow volumes count (the centre's volume and the edges'
+ * crossings start there): any point of the light gives the same counts, and this one lies off
+ * every plane through the centre that round numbers make (the light at a box's top, a ground at
+ * the light's height), where the centre's volume has faces edge-on to it and its count ties.
+ * A positional light (centre, 1) of radius r: the centre moved by CountingReferenceOffset * r
+ * along a fixed direction with no zero component; a directional light (unit direction, 0) of
+ * angular radius `radius` radians: its direction turned by about that share of the radius.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec4 CountingReference(const glm::dvec4& light, double radius);
+
 } // namespace penumbra
 
 #endif

@@ -105,13 +105,14 @@ bool Counted(const CasterCache& caster, const ShadowLight& light)
 /// (penumbra::EdgePlaneMissesSamples).
 void SetLightSamples(vtkShaderProgram* program, const ShadowLight& light)
 {
-  const glm::dvec3 centre = light.World.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(light.World);
+  const glm::dvec4& reference = light.Samples.front(); // CountingReference
+  const glm::dvec3 centre = reference.w != 0.0 ? glm::dvec3(0.0) : glm::dvec3(reference);
   std::vector<float> samples;
   samples.reserve(4 * light.CountingSamples.size());
   double spread = 0.0;
   for (const glm::dvec4& sample : light.CountingSamples)
   {
-    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(light.World);
+    const glm::dvec3 position = glm::dvec3(sample) - sample.w * glm::dvec3(reference);
     samples.insert(samples.end(),
       { static_cast<float>(position.x), static_cast<float>(position.y),
         static_cast<float>(position.z), static_cast<float>(sample.w) });
@@ -207,9 +208,10 @@ void CountingTechnique::PrepareLight(
 vtkIdType CountingTechnique::UpdateCaster(
   const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers)
 {
+  const glm::dvec4& reference = light.Samples.front(); // CountingReference
   const bool frontFacesOnly = ShadowVolume::FrontFacesSuffice(
-    caster.Mesh->Topology, glm::inverse(caster.ObjectToWorld) * light.World);
-  return caster.CountingWedges[light.Light].Update(*caster.Mesh, caster.ObjectToWorld, light.World,
+    caster.Mesh->Topology, glm::inverse(caster.ObjectToWorld) * reference);
+  return caster.CountingWedges[light.Light].Update(*caster.Mesh, caster.ObjectToWorld, reference,
            light.SoftRadius, frontFacesOnly, receivers)
     ? 1
     : 0;

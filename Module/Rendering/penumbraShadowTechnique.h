@@ -56,10 +56,12 @@ struct ShadowLight
   /// Automatic's soft lights.
   ShadowTechnique* Technique = nullptr;
   /// Points (or directions) on the light whose hard shadows are averaged (one for hard
-  /// shadows), or the light itself for the other techniques.
+  /// shadows), the point counting starts from for counting (CountingReference), or the light
+  /// itself for the other techniques.
   std::vector<glm::dvec4> Samples;
   /// The light's radius for wedges, plateaus and counting: world units, or radians for a
-  /// directional light.
+  /// directional light. Counting's is grown by CountingReferenceOffset, so that its light
+  /// about the reference point holds the whole light.
   double SoftRadius = 0.0;
   glm::dvec3 SampleTarget{ 0.0 };
   double SampleRadius = 0.0; ///< as SpreadLightSamples takes it: world units, or clamped degrees

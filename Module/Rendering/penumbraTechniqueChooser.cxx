@@ -100,6 +100,10 @@ void TechniqueChooser::Choose(vtkSoftShadowPass* pass, ShadowLight& light, const
     light.CountingChosenAutomatically = automatic;
     light.CountingSamples =
       this->Counting.ChooseSamples(pass, world, radius, pass->GetLightSamples(), target);
+    // Counting starts from a point off the centre, on a light grown to hold the whole light
+    // around it.
+    light.Samples = { CountingReference(world, light.SoftRadius) };
+    light.SoftRadius *= 1.0 + CountingReferenceOffset;
     return;
   }
   light.Samples = SpreadLightSamples(world, radius, pass->GetLightSamples(), target);

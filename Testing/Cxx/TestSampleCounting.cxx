@@ -563,10 +563,34 @@ void TestCasterAngularRadius()
 }
 } // namespace
 
+/// Counting's reference lies on the light, a small share of its radius from the centre, and off
+/// the axis planes through the centre, where round numbers put faces.
+void TestCountingReference()
+{
+  const glm::dvec4 positional(4.6, 0.8, -1.0, 1.0);
+  const glm::dvec4 reference = penumbra::CountingReference(positional, 0.37);
+  const glm::dvec3 off = glm::dvec3(reference) - glm::dvec3(positional);
+  const double offset = penumbra::CountingReferenceOffset * 0.37;
+  Check(reference.w == 1.0 && std::abs(glm::length(off) - offset) < 1e-12 &&
+      std::abs(off.x) > 0.3 * offset && std::abs(off.y) > 0.3 * offset &&
+      std::abs(off.z) > 0.3 * offset,
+    "a positional light's reference lies off its centre's axis planes, inside the light");
+  const glm::dvec4 directional(glm::normalize(glm::dvec3(0.0, 0.5, 1.0)), 0.0);
+  const double radius = glm::radians(4.6);
+  const glm::dvec4 turned = penumbra::CountingReference(directional, radius);
+  const double angle =
+    std::acos(std::min(1.0, glm::dot(glm::dvec3(turned), glm::dvec3(directional))));
+  Check(turned.w == 0.0 && std::abs(glm::length(glm::dvec3(turned)) - 1.0) < 1e-12 &&
+      std::abs(angle - penumbra::CountingReferenceOffset * radius) < 1e-9 &&
+      std::abs(turned.x) > 1e-4,
+    "a directional light's reference is its direction turned off the planes holding it");
+}
+
 int main()
 {
   std::mt19937 rng(7);
   TestCasterAngularRadius();
+  TestCountingReference();
   TestFacingOverLight();
   TestDegenerate();
   TestPotentialSilhouetteIsSmall();
