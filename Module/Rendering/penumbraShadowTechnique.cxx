@@ -122,7 +122,9 @@ void ShadowFrame::DrawWedgeBuffer(vtkShaderProgram* program, const CasterCache& 
     return;
   }
   vtkOpenGLState* ostate = this->Window->GetState();
-  const bool frontFaces = WedgesDrawnByFrontFaces(caster.WorldMin, caster.WorldMax, light.World,
+  // The light the wedges were built around: its own, or counting's about CountingReference.
+  const glm::dvec4& wedgeLight = light.Samples.front();
+  const bool frontFaces = WedgesDrawnByFrontFaces(caster.WorldMin, caster.WorldMax, wedgeLight,
     light.SoftRadius, this->NearCorners, buffer.Fallbacks != 0);
   ostate->vtkglCullFace(frontFaces ? GL_BACK : GL_FRONT);
   ostate->vtkglDepthFunc(frontFaces ? GL_LEQUAL : GL_GEQUAL);

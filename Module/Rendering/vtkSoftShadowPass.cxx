@@ -1524,17 +1524,19 @@ void vtkSoftShadowPass::WarnOfLightsReachingTheScene(vtkRenderer* renderer)
   vtkInternals& internals = *this->Internals;
   for (const vtkInternals::ShadowLight& light : internals.Lights)
   {
-    if (light.World.w == 0.0 || !(light.SoftRadius > 0.0) ||
+    // The light's own radius (SampleRadius: world units for a positional light), not the one
+    // counting grows about its reference.
+    if (light.World.w == 0.0 || !(light.SampleRadius > 0.0) ||
       internals.WarnedLights.Said(light.Light, "reaching"))
     {
       continue;
     }
     const double distance =
       penumbra::SceneBounds::NearestPropSurface(renderer, glm::dvec3(light.World));
-    if (distance < light.SoftRadius)
+    if (distance < light.SampleRadius)
     {
       internals.WarnedLights.First(light.Light, "reaching");
-      vtkWarningMacro("Light " << light.Light << " has a radius of " << light.SoftRadius
+      vtkWarningMacro("Light " << light.Light << " has a radius of " << light.SampleRadius
                                << ", more than its distance to the nearest visible prop's box ("
                                << distance
                                << "): points inside its sphere see all of it, but soft shadows "
