@@ -49,6 +49,24 @@ int IdentifierUses(const std::string& text, const std::string& name, std::size_t
 }
 
 const char* const DeclarationsTag = "//VTK::Light::Dec";
+
+/// Replaces the first `statement` after main's start with `gated`, which reads the uniform
+/// penumbraDepthPass, and declares it; false, leaving the shader alone, where the statement is
+/// missing or the shader was edited already.
+bool ReplaceForDepthPass(
+  std::string& shader, const std::string& statement, const std::string& gated)
+{
+  const std::size_t at = shader.find(statement);
+  const std::size_t main = shader.find("void main()");
+  if (at == std::string::npos || main == std::string::npos || main > at ||
+    shader.find("penumbraDepthPass") != std::string::npos)
+  {
+    return false;
+  }
+  shader.replace(at, statement.size(), gated);
+  shader.insert(main, "uniform int penumbraDepthPass; // 1 while the pass draws depth\n");
+  return true;
+}
 } // namespace
 
 bool InsertLightDeclarations(std::string& fragmentShader, const std::string& declarations,
@@ -111,31 +129,14 @@ std::vector<int> ScaleLightColours(
 bool KeepEdgesOutOfDepthPass(std::string& geometryShader)
 {
   static const std::string widen = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
-  const std::size_t at = geometryShader.find(widen);
-  const std::size_t main = geometryShader.find("void main()");
-  if (at == std::string::npos || main == std::string::npos || main > at ||
-    geometryShader.find("penumbraDepthPass") != std::string::npos)
-  {
-    return false; // not VTK 9.1's edges, or edited already
-  }
-  geometryShader.replace(at, widen.size(), "if (penumbraDepthPass == 0) { " + widen + " }");
-  geometryShader.insert(main, "uniform int penumbraDepthPass; // 1 while the pass draws depth\n");
-  return true;
+  return ReplaceForDepthPass(
+    geometryShader, widen, "if (penumbraDepthPass == 0) { " + widen + " }");
 }
 
 bool KeepOffsetOutOfDepthPass(std::string& fragmentShader)
 {
-  static const std::string offset = "1.0*cOffset/65000";
-  const std::size_t at = fragmentShader.find(offset);
-  const std::size_t main = fragmentShader.find("void main()");
-  if (at == std::string::npos || main == std::string::npos || main > at ||
-    fragmentShader.find("penumbraDepthPass") != std::string::npos)
-  {
-    return false; // no offset, or edited already
-  }
-  fragmentShader.replace(at, offset.size(), "float(1 - penumbraDepthPass)*cOffset/65000");
-  fragmentShader.insert(main, "uniform int penumbraDepthPass; // 1 while the pass draws depth\n");
-  return true;
+  return ReplaceForDepthPass(
+    fragmentShader, "1.0*cOffset/65000", "float(1 - penumbraDepthPass)*cOffset/65000");
 }
 
 } // namespace penumbra

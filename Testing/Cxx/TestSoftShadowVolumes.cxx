@@ -102,6 +102,18 @@ SampleAgreement CountedAgainstAveraged(SceneWindow& view)
   return CompareSampledVisibility(averaged, Visibility(view.Pass), view.Pass->GetLightSamples());
 }
 
+/// Prints how far counting is from averaging in `what` and holds it to the scenes' limits: at
+/// most 0.3% of the shadowed pixels off by more than 1/N and 0.05% by more than one half, with
+/// a shadow in view.
+void CheckAgreement(const SampleAgreement& agreement, const std::string& what)
+{
+  std::printf("%s: differ > 1/N on %.2f%% of %d shadowed px, > 0.5 on %.2f%%\n", what.c_str(),
+    100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
+  Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
+      agreement.Half <= 0.0005,
+    what + ": counting equals averaging within 1/N");
+}
+
 /// What a scene is held to: the shares of shadowed pixels where counting may differ from
 /// averaging by more than 1/N and by more than one half, with or without the tight depth range.
 struct Limits
@@ -360,15 +372,10 @@ void TestCompositeFarApart()
   view.Renderer->AddActor(actor);
   view.Renderer->ResetCameraClippingRange();
   const SampleAgreement agreement = CountedAgainstAveraged(view);
-  std::printf("composite blocks 1,000 apart: differ > 1/N on %.2f%% of %d shadowed px, > 0.5 on "
-              "%.2f%%\n",
-    100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
   // The composite prop and the ground.
   Check(view.Pass->GetNumberOfPropsWithDepthFromMeshes() == 2,
     "composite blocks far apart: the blocks' depth comes from their own meshes");
-  Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
-      agreement.Half <= 0.0005,
-    "composite blocks far apart: counting equals averaging within 1/N");
+  CheckAgreement(agreement, "composite blocks 1,000 apart");
 }
 
 /// How the room of TestEyeInsideRoom is drawn.
@@ -431,13 +438,7 @@ void TestEyeInsideRoom(RoomKind kind, const std::string& what)
   SceneWindow view(scene);
   AddRoom(view.Renderer, kind);
   view.Renderer->GetActiveCamera()->SetClippingRange(1e-4, 100.0);
-  const SampleAgreement agreement = CountedAgainstAveraged(view);
-  std::printf("eye inside a room (%s), near plane 1e-4: differ > 1/N on %.2f%% of %d shadowed "
-              "px, > 0.5 on %.2f%%\n",
-    what.c_str(), 100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
-  Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
-      agreement.Half <= 0.0005,
-    "the eye inside a room (" + what + "): counting equals averaging within 1/N");
+  CheckAgreement(CountedAgainstAveraged(view), "eye inside a room (" + what + "), near plane 1e-4");
 }
 
 /// A cylinder's cap whose plane cuts the light's disk, seen from close by with a near plane the
@@ -463,13 +464,8 @@ void TestCapInLightPlaneCloseUp()
   SceneWindow view(scene);
   view.Renderer->GetActiveCamera()->SetViewAngle(60.0);
   view.Renderer->GetActiveCamera()->SetClippingRange(1e-3, 10.0);
-  const SampleAgreement agreement = CountedAgainstAveraged(view);
-  std::printf("a cap in the light's plane, close up, near plane 1e-3: differ > 1/N on %.2f%% of "
-              "%d shadowed px, > 0.5 on %.2f%%\n",
-    100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
-  Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
-      agreement.Half <= 0.0005,
-    "a cap in the light's plane, close up: counting equals averaging within 1/N");
+  CheckAgreement(
+    CountedAgainstAveraged(view), "a cap in the light's plane, close up, near plane 1e-3");
 }
 
 /// VTK's global polygon offset, which vedo turns on for every mesh (factor and units 0.1), with
@@ -506,12 +502,7 @@ void TestGlobalPolygonOffset(const SceneMaker& make)
       fromMeshes ? "from the meshes" : (drawnBy == 1 ? "by VTK" : "by VTK, edges shown");
     Check((view.Pass->GetNumberOfPropsWithDepthFromMeshes() > 0) == fromMeshes,
       "VTK's global polygon offset: props' depth drawn " + drawn);
-    std::printf("global polygon offset, depth drawn %s: differ > 1/N on %.2f%% of %d shadowed "
-                "px, > 0.5 on %.2f%%\n",
-      drawn.c_str(), 100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
-    Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
-        agreement.Half <= 0.0005,
-      "VTK's global polygon offset, depth drawn " + drawn + ": counting equals averaging");
+    CheckAgreement(agreement, "global polygon offset, depth drawn " + drawn);
   }
   Check(vtkMapper::GetResolveCoincidentTopology() == VTK_RESOLVE_POLYGON_OFFSET,
     "VTK's global polygon offset stays on after the frames");
@@ -545,12 +536,7 @@ void TestLightInFacePlanes()
   for (const Scene& scene : scenes)
   {
     SceneWindow view(scene);
-    const SampleAgreement agreement = CountedAgainstAveraged(view);
-    std::printf("%s: differ > 1/N on %.2f%% of %d shadowed px, > 0.5 on %.2f%%\n",
-      scene.Name.c_str(), 100.0 * agreement.Step, agreement.Shadowed, 100.0 * agreement.Half);
-    Check(agreement.Shadowed > Width * Height / 100 && agreement.Step <= 0.003 &&
-        agreement.Half <= 0.0005,
-      scene.Name + ": counting equals averaging within 1/N");
+    CheckAgreement(CountedAgainstAveraged(view), scene.Name);
   }
 }
 
