@@ -53,7 +53,8 @@ void main()
   ivec2 pixel = texel * counterStride;
   float depth = penumbraSceneDepth(pixel);
   // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
-  vec3 p = penumbraPointAt(pixel, depth, eyeDepthBias);
+  // (Not past the near plane, from where the eye would lie behind the point.)
+  vec3 p = penumbraPointAt(pixel, depth, min(eyeDepthBias, 2.0 * depth));
   vec3 towardsEye = penumbraPointAt(pixel, 0.0, 0.0) - p;
   p += towardsEye *
     (eyeFloatBias * (length(p) + length(p + towardsEye)) / max(length(towardsEye), 1e-30));
