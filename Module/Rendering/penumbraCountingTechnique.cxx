@@ -33,9 +33,10 @@ constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
 /// And the share of the point's and the eye's distances from the caster's origin by which it
 /// moves further: where the tight depth range makes depth steps finer than the float rounding
 /// of the coordinates the depth was drawn from, the depth is off by that rounding (a cylinder's
-/// cap drawn 2e-7 off its plane in a user trial, half a depth step then). One float step: four
-/// moved grazing terminators of the benchmark's large torus a sample brighter (wedges.md).
-constexpr float CountingEyeFloatBias = 1.0f / 16777216.0f;
+/// cap drawn 2e-7 off its plane in a user trial, half a depth step then). Two float steps: four
+/// moved grazing terminators of the benchmark's large torus a sample brighter, one left edges
+/// seen at grazing angles off in a sweep of scenes (wedges.md).
+constexpr float CountingEyeFloatBias = 2.0f / 16777216.0f;
 
 /// The largest difference of counted neighbours' visibilities that half-resolution counting
 /// takes as smooth (penumbraHalfUpsampleFS.glsl's `uncertain`): two samples' shares, or fewer
