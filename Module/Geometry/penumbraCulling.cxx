@@ -120,12 +120,12 @@ double ParallelSweepLength(const glm::dmat4& objectToWorld, const glm::dvec3& ca
   {
     return 0.0;
   }
-  std::vector<glm::dvec3> points(nearCorners.begin(), nearCorners.end());
+  std::array<glm::dvec3, 20> points;
+  std::copy(nearCorners.begin(), nearCorners.end(), points.begin());
   for (int corner = 0; corner < 8; ++corner)
   {
-    const glm::bvec3 high((corner & 1) != 0, (corner & 2) != 0, (corner & 4) != 0);
-    points.push_back(glm::mix(scene.Min, scene.Max, high));
-    points.push_back(glm::mix(casterMin, casterMax, high));
+    points[4 + 2 * corner] = BoxCorner(scene.Min, scene.Max, corner);
+    points[5 + 2 * corner] = BoxCorner(casterMin, casterMax, corner);
   }
   // From the light, or across the points for a directional light's parallel sweep.
   double reach = 0.0;

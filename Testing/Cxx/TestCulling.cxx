@@ -621,9 +621,17 @@ void TestParallelSweepLength(std::mt19937& rng)
     const double length =
       penumbra::ParallelSweepLength(objectToWorld, lo, hi, light, scene, nearCorners);
     double reach = 0.0;
-    for (const glm::dvec3& p : { scene.Min, scene.Max, lo, hi, nearCorners[0], nearCorners[2] })
+    for (const glm::dvec3& p : nearCorners)
     {
       reach = std::max(reach, glm::distance(p, glm::dvec3(light)));
+    }
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      for (const glm::dvec3& p :
+        { penumbra::BoxCorner(scene.Min, scene.Max, corner), penumbra::BoxCorner(lo, hi, corner) })
+      {
+        reach = std::max(reach, glm::distance(p, glm::dvec3(light)));
+      }
     }
     // The shortest world length of an object-space direction of that length.
     for (int axis = 0; axis < 3; ++axis)
