@@ -270,4 +270,45 @@ bool CountingIsCheaper(const std::vector<CountingCost>& casters, int samples, La
   return CountingToAveraging(casters, samples) < limit;
 }
 
+bool SeesAboveSurface(const glm::dvec3& normal, const glm::dvec3& towardsEye, const glm::dvec3& p,
+  const glm::dvec4& light)
+{
+  const double seenSide = glm::dot(normal, towardsEye) < 0.0 ? -1.0 : 1.0;
+  return normal == glm::dvec3(0.0) ||
+    seenSide * glm::dot(normal, glm::dvec3(light) - light.w * p) > 0.0;
+}
+
+namespace
+{
+/// +1 or -1 as x >= 0 or not: the fold keeps the quadrant of a coordinate that is 0.
+glm::dvec2 SignNotZero(const glm::dvec2& v)
+{
+  return { v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0 };
+}
+} // namespace
+
+glm::dvec2 OctahedralEncode(const glm::dvec3& direction)
+{
+  const double sum = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
+  if (!(sum > 0.0))
+  {
+    return glm::dvec2(0.0);
+  }
+  const glm::dvec3 n = direction / sum;
+  const glm::dvec2 upper(n.x, n.y);
+  return n.z >= 0.0 ? upper : (1.0 - glm::abs(glm::dvec2(n.y, n.x))) * SignNotZero(upper);
+}
+
+glm::dvec3 OctahedralDecode(const glm::dvec2& code)
+{
+  glm::dvec3 n(code, 1.0 - std::abs(code.x) - std::abs(code.y));
+  if (n.z < 0.0)
+  {
+    const glm::dvec2 folded = (1.0 - glm::abs(glm::dvec2(n.y, n.x))) * SignNotZero(code);
+    n.x = folded.x;
+    n.y = folded.y;
+  }
+  return glm::normalize(n);
+}
+
 } // namespace penumbra

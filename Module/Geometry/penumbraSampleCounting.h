@@ -131,6 +131,27 @@ VTKPENUMBRAGEOMETRY_EXPORT int SampleCrossing(const glm::dvec3& p, const glm::dv
 VTKPENUMBRAGEOMETRY_EXPORT bool EdgePlaneMissesSamples(const glm::dvec3& p, const glm::dvec3& a,
   const glm::dvec3& b, const glm::dvec4& centre, double spread);
 
+/**
+ * Whether a point p on an opaque surface can see the light point (x, y, z, 1) or direction
+ * (x, y, z, 0): only in front of its own plane, on the side that `towardsEye` (from p towards
+ * the eye) shows. `normal` is the plane's normal, either way round; a zero normal (no plane
+ * known) sees every sample. Counting needs this beside its counts: it takes p a little off its
+ * surface towards the eye (float rounding), from where the segment to a sample just behind the
+ * plane can pass the surface's next edge.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT bool SeesAboveSurface(const glm::dvec3& normal,
+  const glm::dvec3& towardsEye, const glm::dvec3& p, const glm::dvec4& light);
+
+/**
+ * A direction's octahedral encoding (Meyer et al. 2010): two numbers in [-1, 1], the direction
+ * projected on the octahedron |x| + |y| + |z| = 1, the lower half folded out over the upper.
+ * The caster meshes' depth pass stores triangle normals so (penumbraCasterDepthFS.glsl) in two
+ * float channels; OctahedralDecode undoes it. A zero direction gives (0, 0).
+ */
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 OctahedralEncode(const glm::dvec3& direction);
+/// The unit direction of OctahedralEncode's `code`.
+VTKPENUMBRAGEOMETRY_EXPORT glm::dvec3 OctahedralDecode(const glm::dvec2& code);
+
 /// What the choice between counting and averaging the same light samples needs of one caster.
 struct CountingCost
 {

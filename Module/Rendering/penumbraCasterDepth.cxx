@@ -109,10 +109,10 @@ bool CasterDepth::DrawnAsItsTriangles(vtkProp* prop)
   return composite ? OnlySurfaceLeaves(input) : OnlySurfaceCells(vtkPolyData::SafeDownCast(input));
 }
 
-std::vector<vtkProp*> CasterDepth::Draw(
+std::vector<vtkProp*> CasterDepth::Select(
   const ShadowFrame& frame, const std::vector<vtkProp*>& props)
 {
-  this->CulledProps = 0;
+  this->Selected.clear();
   std::vector<vtkProp*> left;
   // Each prop's surfaces: a plain actor's one, a composite mapper's drawn blocks. A prop is
   // ours to draw only if every one of them is opaque and cut as VTK cuts it.
@@ -129,7 +129,6 @@ std::vector<vtkProp*> CasterDepth::Draw(
     prop.Usable = prop.Usable && !caster->Translucent() && !caster->SeenThrough &&
       caster->Mesh->Topology.Report.PolygonsCutUnlikeVTK == 0;
   }
-  std::vector<const PropCasters*> drawn;
   for (vtkProp* prop : props)
   {
     auto found = casters.find(prop);
@@ -139,10 +138,17 @@ std::vector<vtkProp*> CasterDepth::Draw(
     }
     else
     {
-      drawn.push_back(&found->second);
+      this->Selected.push_back({ prop, std::move(found->second.Casters) });
     }
   }
-  if (drawn.empty())
+  return left;
+}
+
+std::vector<vtkProp*> CasterDepth::Draw(const ShadowFrame& frame, bool writeNormals)
+{
+  this->CulledProps = 0;
+  std::vector<vtkProp*> left;
+  if (this->Selected.empty())
   {
     return left;
   }
@@ -150,12 +156,17 @@ std::vector<vtkProp*> CasterDepth::Draw(
     "caster-depth", "VTK draws the casters' depth");
   if (!this->Program)
   {
-    return props;
+    for (const SelectedProp& selected : this->Selected)
+    {
+      left.push_back(selected.Prop);
+    }
+    return left;
   }
-  for (const PropCasters* prop : drawn)
+  this->Program->SetUniformi("writeNormals", writeNormals ? 1 : 0);
+  for (const SelectedProp& selected : this->Selected)
   {
     bool culled = false;
-    for (CasterCache* caster : prop->Casters)
+    for (CasterCache* caster : selected.Casters)
     {
       culled = this->DrawCaster(frame, *caster) || culled;
     }
@@ -180,6 +191,9 @@ bool CasterDepth::DrawCaster(const ShadowFrame& frame, CasterCache& caster)
   const glm::mat4 objectToClip(frame.WorldToClip * caster.ObjectToWorld);
   this->Program->SetUniformMatrix4x4(
     "MCDCMatrix", const_cast<float*>(glm::value_ptr(objectToClip)));
+  const glm::mat3 normalToWorld(glm::transpose(glm::inverse(glm::dmat3(caster.ObjectToWorld))));
+  this->Program->SetUniformMatrix3x3(
+    "normalToWorld", const_cast<float*>(glm::value_ptr(normalToWorld)));
   caster.Mesh->Bind(this->Program);
   caster.Mesh->BindTriangles();
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * caster.Mesh->Topology.Triangles.size()),

@@ -55,10 +55,16 @@ public:
   /// other props.
   static bool DrawnAsItsTriangles(vtkProp* prop);
 
-  /// Draws into the bound depth buffer the depth of each of `props` (all DrawnAsItsTriangles)
-  /// whose caster among frame.Casters is opaque and cut as VTK draws it, with the caller's
-  /// depth state. Returns the others (a prop that casts no shadow, say), for VTK to draw.
-  std::vector<vtkProp*> Draw(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
+  /// Chooses which of `props` (all DrawnAsItsTriangles) Draw draws: each whose caster among
+  /// frame.Casters is opaque and cut as VTK draws it. Returns the others (a prop that casts no
+  /// shadow, say), for VTK to draw before Draw: VTK writes no normals, so a surface it drew
+  /// later could hide a mesh's normal under its own depth.
+  std::vector<vtkProp*> Select(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
+  /// Draws into the bound depth buffer the depth of the props Select chose, with the caller's
+  /// depth state, and with `writeNormals` each fragment's triangle normal into colour
+  /// attachment 0 (LightIntensityBuffer::AttachClearedSurfaceNormals). Returns the props it could
+  /// not draw (all of them where its shader does not build), for VTK to draw.
+  std::vector<vtkProp*> Draw(const ShadowFrame& frame, bool writeNormals);
   /// Props the last Draw drew with the hidden faces of their mesh, or of some of their blocks,
   /// culled: closed casters whose pieces all wind one way (CasterTopology::OutwardWinding),
   /// wholly beyond the near plane.
@@ -68,6 +74,12 @@ private:
   /// Draws one caster's mesh; returns whether its hidden faces were culled.
   bool DrawCaster(const ShadowFrame& frame, CasterCache& caster);
 
+  struct SelectedProp
+  {
+    vtkProp* Prop;
+    std::vector<CasterCache*> Casters; ///< its surfaces: one, or a composite mapper's blocks
+  };
+  std::vector<SelectedProp> Selected;
   vtkShaderProgram* Program = nullptr;
   vtkIdType CulledProps = 0;
 };

@@ -125,6 +125,48 @@ void SetLightSamples(vtkShaderProgram* program, const ShadowLight& light)
   program->SetUniformf("sampleSpread", static_cast<float>(spread));
 }
 
+/// Places clipToLocal's origin, and lightWedge, at counting's reference: the frame in which
+/// SetLightSamples gives the samples.
+void SetReferenceFrame(
+  const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light)
+{
+  const glm::dvec4& reference = light.Samples.front(); // CountingReference
+  const bool positional = reference.w != 0.0;
+  frame.SetClipToLocal(program, positional ? glm::dvec3(reference) : glm::dvec3(0.0));
+  const glm::vec4 lightWedge(positional ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : reference);
+  program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+}
+
+/// The depth copy and surface normals, active for the full-screen resolves while it lives.
+class ActiveTextures
+{
+public:
+  explicit ActiveTextures(const ShadowFrame& frame)
+    : Depth(frame.DepthCopy())
+    , Normals(frame.SurfaceNormals)
+  {
+    this->Depth->Activate();
+    if (this->Normals)
+    {
+      this->Normals->Activate();
+    }
+  }
+  ~ActiveTextures()
+  {
+    if (this->Normals)
+    {
+      this->Normals->Deactivate();
+    }
+    this->Depth->Deactivate();
+  }
+  ActiveTextures(const ActiveTextures&) = delete;
+  ActiveTextures& operator=(const ActiveTextures&) = delete;
+
+private:
+  vtkTextureObject* Depth;
+  vtkTextureObject* Normals;
+};
+
 /// Draws the wedges of every caster counted for the light, with the wedge program bound.
 void DrawCountedWedges(ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light)
 {
@@ -452,6 +494,11 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   resolve->SetUniformi("counterStride", target == ResolveInto::HalfResolution ? 2 : 1);
   SetSampleCount(resolve, light.CountingSamples.size());
   this->Deep.Bind(window, resolve, DeepCountsImageUnit, light.Light);
+  ActiveTextures surface(frame);
+  frame.SetDepthUniforms(resolve);
+  frame.SetSurfaceSideUniforms(resolve);
+  SetReferenceFrame(frame, resolve, light);
+  SetLightSamples(resolve, light);
   // Counted again only at the uncertain pixels (CountWedges); every other pixel is written.
   const int counted =
     target == ResolveInto::UncertainPixels ? HalfResolutionCounts::UncertainStencil : 0;
@@ -476,8 +523,10 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
 bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& light)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
+  const std::string transmissionFS =
+    CountingShader(penumbraCountingTransmissionFS, light.CountingSamples.size());
   vtkShaderProgram* program =
-    frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingTransmissionFS,
+    frame.Programs->Ready(window, penumbraResolveVS, transmissionFS.c_str(),
       "soft shadow volume transmission", "soft shadows average hard shadows instead");
   if (!program)
   {
@@ -517,6 +566,11 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
     {
       return false;
     }
+    ActiveTextures surface(frame);
+    frame.SetDepthUniforms(program);
+    frame.SetSurfaceSideUniforms(program);
+    SetReferenceFrame(frame, program, light);
+    SetLightSamples(program, light);
     this->CountOffset->Activate();
     this->SampleCounters->Activate();
     this->LogTransmission->Activate();

@@ -59,6 +59,7 @@ public:
   /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
   void SetHalfResolution(bool half) { this->HalfResolution = half; }
   bool CountsCentreInColour() const override { return true; }
+  bool ReadsSurfaceNormals() const override { return true; }
   bool ShadowsTranslucentCasters() const override { return true; }
   /// Builds the wedges of the opaque casters that are not culled (after the chooser kept
   /// counting).

@@ -87,6 +87,30 @@ void LightIntensityBuffer::CopyDepth(vtkOpenGLState* ostate)
     GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 }
 
+bool LightIntensityBuffer::AttachClearedSurfaceNormals(vtkOpenGLRenderWindow* window)
+{
+  if (TextureNeedsAllocation(
+        this->SurfaceNormals, window, this->Width, this->Height, 1, 2, vtkTextureObject::Nearest) &&
+    !this->SurfaceNormals->Allocate2D(this->Width, this->Height, 2, VTK_FLOAT))
+  {
+    this->SurfaceNormals->ReleaseGraphicsResources(window);
+    return false;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  this->AttachColour(this->SurfaceNormals, 0);
+  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+  ostate->vtkglClearColor(NoSurfaceNormal, NoSurfaceNormal, 0.0f, 0.0f);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  return true;
+}
+
+vtkTextureObject* LightIntensityBuffer::GetSurfaceNormals()
+{
+  return this->SurfaceNormals->GetHandle() ? this->SurfaceNormals.GetPointer() : nullptr;
+}
+
 std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
 {
   if (!this->DepthStencil->GetHandle())
@@ -94,7 +118,8 @@ std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
     return 0;
   }
   const std::size_t pixels = static_cast<std::size_t>(this->Width) * this->Height;
-  return pixels * (2 + this->LayerCount) * 4;
+  const std::size_t normals = this->SurfaceNormals->GetHandle() ? 8 : 0;
+  return pixels * ((2 + this->LayerCount) * 4 + normals);
 }
 
 void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
@@ -104,6 +129,7 @@ void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
   this->DepthCopy->ReleaseGraphicsResources(window);
   ReleaseFramebuffer(this->DepthCopyFramebuffer, window);
   this->Layers->ReleaseGraphicsResources(window);
+  this->SurfaceNormals->ReleaseGraphicsResources(window);
   this->Width = this->Height = this->LayerCount = 0;
   this->RefusedBytes = 0;
 }

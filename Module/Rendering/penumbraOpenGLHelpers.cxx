@@ -9,6 +9,7 @@
 #include "vtk_glew.h"
 
 #include "penumbraDepthPointDec.h"
+#include "penumbraSurfaceSideDec.h"
 
 #include <algorithm>
 
@@ -109,9 +110,10 @@ ScopedDrawState::~ScopedDrawState()
 vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const char* vertexShader,
   const char* fragmentShader, const char* name, const char* instead)
 {
-  // The pass's fragment shaders share one reconstruction of a pixel's point from depth.
+  // The pass's fragment shaders share one reconstruction of a pixel's point and plane from depth.
   std::string fragment = fragmentShader;
   vtkShaderProgram::Substitute(fragment, "//PENUMBRA::DepthPoint::Dec", penumbraDepthPointDec);
+  vtkShaderProgram::Substitute(fragment, "//PENUMBRA::SurfaceSide::Dec", penumbraSurfaceSideDec);
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragment.c_str(), "");
   if (!program && this->Failed.insert(name).second)

@@ -93,6 +93,15 @@ void ShadowFrame::SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& or
   program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(uniform)));
 }
 
+void ShadowFrame::SetSurfaceSideUniforms(vtkShaderProgram* program) const
+{
+  program->SetUniformi("surfaceNormalsDrawn", this->SurfaceNormals ? 1 : 0);
+  if (this->SurfaceNormals)
+  {
+    program->SetUniformi("surfaceNormals", this->SurfaceNormals->GetTextureUnit());
+  }
+}
+
 void ShadowFrame::DrawResolve(float lightIntensity)
 {
   vtkShaderProgram* program = this->Programs->Ready(this->Window, penumbraResolveVS,

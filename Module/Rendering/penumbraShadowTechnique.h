@@ -114,6 +114,9 @@ struct ShadowFrame
   /// The buffer's depth copy, for the shaders to read, and its layers.
   vtkTextureObject* DepthCopy() const;
   vtkTextureObject* Layers() const;
+  /// The visible triangles' normals where caster meshes drew the depth (LightIntensityBuffer::
+  /// AttachClearedSurfaceNormals), or nullptr where no light asked for them this frame.
+  vtkTextureObject* SurfaceNormals = nullptr;
   ShaderPrograms* Programs = nullptr;
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
@@ -149,6 +152,9 @@ struct ShadowFrame
   /// the scene, the depth then takes no float cancellation: depth - 1 is exact, and the columns'
   /// sum, which cancels, is taken here in double.
   void SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& origin) const;
+  /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface normals' texture unit, or
+  /// that there are none. The caller activates SurfaceNormals (where it is not nullptr).
+  void SetSurfaceSideUniforms(vtkShaderProgram* program) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.
   void DrawResolve(float lightIntensity);
@@ -177,6 +183,8 @@ public:
   virtual bool CountsInColour(const ShadowLight&) const { return this->CountsCentreInColour(); }
   /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
   virtual bool ReadsDepthCopy() const { return true; }
+  /// Whether it reads the surface normals (LightIntensityBuffer::AttachClearedSurfaceNormals).
+  virtual bool ReadsSurfaceNormals() const { return false; }
   /// Whether translucent casters shadow by their opacity (otherwise they are left out).
   virtual bool ShadowsTranslucentCasters() const { return false; }
   /// Brings this technique's caches of one caster for the light, beyond the samples' volumes,

@@ -229,6 +229,14 @@ public:
   penumbra::CasterDepth CasterDepth;
   /// The props whose depth RenderCasterDepth draws from their caster meshes this frame.
   std::vector<vtkProp*> DepthFromMeshes;
+  /// Whether the depth kept in LI has its surfaces' normals where caster meshes drew it (a
+  /// counted light reads them), and whether this frame's lights want them.
+  bool SurfaceNormalsDrawn = false;
+  bool SurfaceNormalsWanted() const
+  {
+    return std::any_of(this->Lights.begin(), this->Lights.end(),
+      [](const ShadowLight& light) { return light.Technique->ReadsSurfaceNormals(); });
+  }
   vtkNew<vtkLightsPass> LightsPass;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   /// Releases the GPU resources in Window's context when that window goes, even while the pass
@@ -687,6 +695,7 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   vtkCamera* camera = renderer->GetActiveCamera();
   scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
   scene.AddCoincidentTopologySettings();
+  scene.Add(internals.SurfaceNormalsWanted() ? 1.0 : 0.0);
   // A culler's settings (vtkFrustumCoverageCuller's MinimumCoverage) choose the casters too.
   scene.Add(static_cast<double>(internals.CulledInView.size()));
   for (vtkProp* culled : internals.CulledInView)
@@ -979,6 +988,7 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
   internals.DepthFromMeshes.clear();
+  internals.SurfaceNormalsDrawn = false;
   std::vector<vtkProp*> drawnByVTK;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -1003,12 +1013,23 @@ void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglDisable(GL_BLEND);
-  std::vector<vtkProp*> left =
-    internals.CasterDepth.Draw(internals.MakeFrame(), internals.DepthFromMeshes);
+  const penumbra::ShadowFrame frame = internals.MakeFrame();
+  // VTK first: it writes no normals, so a surface it drew later could hide a mesh's normal
+  // under its own depth.
+  std::vector<vtkProp*> drawnByVTK = internals.CasterDepth.Select(frame, internals.DepthFromMeshes);
+  this->RenderDepthWithVTK(s, drawnByVTK);
+  internals.SurfaceNormalsDrawn =
+    internals.SurfaceNormalsWanted() && internals.LI.AttachClearedSurfaceNormals(internals.Window);
+  std::vector<vtkProp*> left = internals.CasterDepth.Draw(frame, internals.SurfaceNormalsDrawn);
+  if (!left.empty())
+  {
+    internals.SurfaceNormalsDrawn = false; // (VTK draws them without)
+    ostate->vtkglDrawBuffer(GL_NONE);
+    this->RenderDepthWithVTK(s, left);
+  }
   this->NumberOfPropsWithDepthFromMeshes =
-    static_cast<vtkIdType>(internals.DepthFromMeshes.size() - left.size());
+    static_cast<vtkIdType>(internals.DepthFromMeshes.size() - drawnByVTK.size() - left.size());
   this->NumberOfPropsWithCulledDepth = internals.CasterDepth.GetCulledProps();
-  this->RenderDepthWithVTK(s, left);
 }
 
 void vtkSoftShadowPass::RenderDepthWithVTK(const vtkRenderState* s, std::vector<vtkProp*>& props)
@@ -1238,6 +1259,7 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
   frame.Buffer = &this->LI;
+  frame.SurfaceNormals = this->SurfaceNormalsDrawn ? this->LI.GetSurfaceNormals() : nullptr;
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;

@@ -586,11 +586,67 @@ void TestCountingReference()
     "a directional light's reference is its direction turned off the planes holding it");
 }
 
+/// Triangle normals survive the depth pass's octahedral encoding to float precision, over the
+/// whole sphere (both halves, the axes, the fold's edges), and the own-surface test keeps the
+/// samples on the side the eye sees, whichever way the normal points.
+void TestSurfaceSide(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<glm::dvec3> directions = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 }, { 1, 1, 0 }, { -1, 0, -1 }, { 0, -1, -1 } };
+  for (int i = 0; i < 2000; ++i)
+  {
+    directions.emplace_back(unit(rng), unit(rng), unit(rng));
+  }
+  double worst = 0.0, worstFloat = 0.0;
+  bool inSquare = true;
+  for (const glm::dvec3& direction : directions)
+  {
+    const glm::dvec2 code = OctahedralEncode(direction);
+    const glm::dvec3 unitDirection = glm::normalize(direction);
+    inSquare = inSquare && std::abs(code.x) <= 1.0 && std::abs(code.y) <= 1.0;
+    worst = std::max(worst, glm::length(OctahedralDecode(code) - unitDirection));
+    // As the depth pass stores it: two floats.
+    const glm::dvec2 stored = glm::dvec2(glm::vec2(code));
+    worstFloat = std::max(worstFloat, glm::length(OctahedralDecode(stored) - unitDirection));
+  }
+  Check(inSquare && worst < 1e-12 && worstFloat < 1e-6,
+    "octahedral normals decode to within 1e-6 from float codes (" +
+      std::to_string(worstFloat * 1e9) + "e-9)");
+
+  int wrong = 0;
+  for (int i = 0; i < 500; ++i)
+  {
+    const glm::dvec3 p(unit(rng), unit(rng), unit(rng));
+    const glm::dvec3 normal = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+    const glm::dvec3 eye = p + 3.0 * normal + glm::dvec3(unit(rng), unit(rng), unit(rng));
+    const bool eyeAbove = glm::dot(normal, eye - p) > 0.0;
+    const glm::dvec3 seen = eyeAbove ? normal : -normal;
+    const glm::dvec4 front(p + seen + 0.5 * glm::cross(seen, glm::dvec3(0.3, 0.1, 0.9)), 1.0);
+    const glm::dvec4 behind(p - seen, 1.0);
+    for (const double flip : { 1.0, -1.0 })
+    {
+      wrong += SeesAboveSurface(flip * normal, eye - p, p, front) &&
+          !SeesAboveSurface(flip * normal, eye - p, p, behind) &&
+          SeesAboveSurface(flip * normal, eye - p, p, glm::dvec4(seen, 0.0)) &&
+          !SeesAboveSurface(flip * normal, eye - p, p, glm::dvec4(-seen, 0.0))
+        ? 0
+        : 1;
+    }
+  }
+  Check(wrong == 0 &&
+      SeesAboveSurface(
+        glm::dvec3(0.0), { 0.0, 0.0, 1.0 }, glm::dvec3(0.0), { 0.0, 0.0, -1.0, 0.0 }),
+    "the own-surface test keeps the eye's side whichever way the normal points (" +
+      std::to_string(wrong) + " wrong); no plane known sees all");
+}
+
 int main()
 {
   std::mt19937 rng(7);
   TestCasterAngularRadius();
   TestCountingReference();
+  TestSurfaceSide(rng);
   TestFacingOverLight();
   TestDegenerate();
   TestPotentialSilhouetteIsSmall();

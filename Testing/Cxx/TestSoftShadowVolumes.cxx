@@ -830,6 +830,73 @@ void TestLampInsideCasterBox()
   Check(view.Pass->GetNumberOfCountedLights() == 1 && view.Pass->GetNumberOfAveragedLights() == 0,
     "a lamp inside a caster's box, in its hole: Automatic counts");
 }
+
+/// A finely faceted sphere's terminator under a small light, its facets a pixel or two wide:
+/// counting's point lies a float step or two off its facet, towards the eye, and from there the
+/// path to a light sample just behind the facet's plane can pass the facet's next edge. Without
+/// the own-surface test (the facets' normals from the depth pass) the terminator counted
+/// samples the facet hides: brighter than the ray-traced truth by 0.035 on average over its
+/// penumbra pixels (MAE 0.058; averaging 0.023 and 0.049, its volumes missing some of the same
+/// samples); with it -0.006 (MAE 0.034).
+void TestFacetedTerminator()
+{
+  Scene scene;
+  scene.Name = "faceted terminator";
+  scene.Add(MakeActor(SphereSource(0.0, 0.9, 0.0, 0.8, 200, 100), 0.5, 0.5, 0.9));
+  scene.AddLight(true, { -6.0, 2.0, 0.0 }, 0.03, { 0.0, 0.9, 0.0 });
+  scene.SetCamera({ 1.0, 1.5, 3.5 }, { 0.0, 0.9, 0.0 }, { 0.0, 1.0, 0.0 }, 30.0);
+  SceneWindow view(scene);
+  vtkSoftShadowPass* pass = view.Pass;
+  pass->SetMethodToAveragedHardShadows();
+  view.Window->Render();
+  const std::vector<float> averaged = Visibility(pass);
+  pass->SetMethodToSoftShadowVolumes();
+  pass->DepthFromCasterMeshesOff(); // VTK draws the depth: no normals, no own-surface test
+  view.Window->Render();
+  const std::vector<float> withoutNormals = Visibility(pass);
+  pass->DepthFromCasterMeshesOn();
+  view.Window->Render();
+  const std::vector<float> counted = Visibility(pass);
+  Check(
+    pass->GetNumberOfPropsWithDepthFromMeshes() == 1, "faceted terminator: depth from the mesh");
+
+  vtkNew<vtkRayTracedVisibility> truth;
+  truth->SetRenderer(view.Renderer);
+  truth->SetSamplesPerLight(1024);
+  Check(truth->Update(), "faceted terminator: ray tracer ran");
+  const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(0));
+  const std::vector<float> truthDepth = ImageValues(truth->GetDepthImage());
+  const std::vector<float> zbuffer = WindowDepth(view.Window, view.Renderer);
+  // The terminator's penumbra: where the truth or averaging is neither lit nor dark, on the
+  // surface both see.
+  const auto inPenumbra = [](float v) { return v > 0.02f && v < 0.98f; };
+  double error[3] = { 0.0, 0.0, 0.0 }, absolute[3] = { 0.0, 0.0, 0.0 };
+  int pixels = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i)
+  {
+    if (truthDepth[i] >= 1.0f || std::abs(truthDepth[i] - zbuffer[i]) > 1e-3f ||
+      !(inPenumbra(expected[i]) || inPenumbra(averaged[i])))
+    {
+      continue;
+    }
+    ++pixels;
+    const float values[3] = { counted[i], withoutNormals[i], averaged[i] };
+    for (int k = 0; k < 3; ++k)
+    {
+      error[k] += values[k] - expected[i];
+      absolute[k] += std::abs(values[k] - expected[i]);
+    }
+  }
+  const double n = std::max(pixels, 1);
+  std::printf("faceted terminator, %d penumbra px, mean error and MAE against the truth: counted "
+              "%+.4f %.4f, without normals %+.4f %.4f, averaged %+.4f %.4f\n",
+    pixels, error[0] / n, absolute[0] / n, error[1] / n, absolute[1] / n, error[2] / n,
+    absolute[2] / n);
+  Check(pixels > 100, "faceted terminator: a penumbra in view");
+  Check(error[0] / n <= 0.015 && absolute[0] <= absolute[2] + 0.005 * n,
+    "faceted terminator: counting sees no sample behind a facet, and is as accurate as "
+    "averaging there");
+}
 } // namespace
 
 int main()
@@ -1015,6 +1082,7 @@ int main()
   TestNoFullViewportWedges(scenes[4]);
   TestAutomaticChoice(scenes[0]);
   TestLampInsideCasterBox();
+  TestFacetedTerminator();
   TestSampleCounts(scenes[0]);
   TestReceiversBox();
   TestStageTimes(scenes[0]);

@@ -6,7 +6,10 @@ in vec4 vertexMC;
 
 uniform mat4 MCDCMatrix;
 
+out vec3 positionMC; // relative to the mesh's origin: small, so its differences are precise
+
 void main()
 {
+  positionMC = vertexMC.xyz;
   gl_Position = MCDCMatrix * vec4(vertexMC.xyz, 1.0);
 }

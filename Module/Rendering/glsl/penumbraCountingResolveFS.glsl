@@ -3,8 +3,9 @@
 //VTK::Output::Dec
 //PENUMBRA::SampleCount
 // Turns the per-sample counters into the light's visibility: sample i is visible where its depth
-// complexity, the centre's count plus the edges' changes (penumbraCountingWedgeFS.glsl), is 0.
-// Pixels that no wedge reached (useCounters 0) see every sample as the centre sees it.
+// complexity, the centre's count plus the edges' changes (penumbraCountingWedgeFS.glsl), is 0,
+// and it lies in front of the point's own surface (penumbraSurfaceSideDec.glsl). Pixels that no
+// wedge reached (useCounters 0) see every sample in front of their surface as the centre sees it.
 //
 // A depth complexity cannot be negative. Where one is, the rasterized centre count missed a
 // crossing that the edge terms, taken at the pixel's centre, assume (by one or two surfaces):
@@ -41,24 +42,34 @@ const int bias = 4;
 layout(r32ui) uniform uimage2D deepCounts;
 uniform int deepCountSlot; // this light's texel of deepCounts; -1: not reported
 uniform int reportedCount;
+//PENUMBRA::DepthPoint::Dec
+//PENUMBRA::SurfaceSide::Dec
 
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int centre =
     int(round(-texelFetch(centreCount, texel * counterStride, 0).r));
+#ifndef PENUMBRA_COUNT_OFFSET
+  penumbraFindSurface(texel * counterStride);
+#endif
   if (useCounters == 0)
   {
 #ifdef PENUMBRA_COUNT_OFFSET
     gl_FragData[0] = vec4(float(centre)); // the counters hold 0: visible where the centre is 0
 #else
-    gl_FragData[0] = vec4(centre == 0 ? 1.0 : 0.0);
+    int seen = centre == 0 && penumbraSurfaceCut > 0 ? sampleCount : 0;
+    for (int i = 0; centre == 0 && penumbraSurfaceCut == 0 && i < sampleCount; ++i)
+    {
+      seen += penumbraSampleInFront(i) ? 1 : 0;
+    }
+    gl_FragData[0] = vec4(float(seen) / float(sampleCount));
 #endif
     return;
   }
   uint offset = (uint(centre + bias) & 0xFFu) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
-  int visible = 0; // samples whose count equals it
+  int visible = 0; // samples in front of the surface whose count equals it
   int deepest = centre;
   for (int word = 0; word * 4 < sampleCount; ++word)
   {
@@ -71,7 +82,9 @@ void main()
         lowest = count;
         visible = 0;
       }
-      visible += count == lowest ? 1 : 0;
+#ifndef PENUMBRA_COUNT_OFFSET
+      visible += count == lowest && penumbraSampleInFront(word * 4 + field) ? 1 : 0;
+#endif
       deepest = max(deepest, count);
     }
   }
