@@ -183,6 +183,10 @@ public:
   virtual bool CountsInColour(const ShadowLight&) const { return this->CountsCentreInColour(); }
   /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
   virtual bool ReadsDepthCopy() const { return true; }
+  /// NDC depth by which its opaque volumes' sides are pushed away from the eye at the caster:
+  /// the point the volumes count at then lies that much towards the eye, as the point its other
+  /// terms are taken at may.
+  virtual float VolumeDepthBias() const { return 0.0f; }
   /// Whether it reads the surface normals (LightIntensityBuffer::AttachClearedSurfaceNormals).
   virtual bool ReadsSurfaceNormals() const { return false; }
   /// Whether translucent casters shadow by their opacity (otherwise they are left out).

@@ -13,6 +13,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -147,7 +148,8 @@ void ShadowVolumeRenderer::DrawOpaqueSample(
     if (!rect.Empty())
     {
       SetScissor(ostate, rect);
-      this->DrawVolume(frame, *caster, light.VolumeKey(k), light.Samples[k], countInColour, 1.0f);
+      this->DrawVolume(frame, *caster, light.VolumeKey(k), light.Samples[k], countInColour, 1.0f,
+        light.Technique ? light.Technique->VolumeDepthBias() : 0.0f);
     }
   }
 }
@@ -213,7 +215,8 @@ PixelRect ShadowVolumeRenderer::DrawTranslucent(const ShadowFrame& frame, const 
 }
 
 void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& caster,
-  const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour, float weight)
+  const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour, float weight,
+  float sideDepthBias)
 {
   VolumeCache& volume = caster.Volumes[key];
   if (volume.Volume.CastingTriangles == 0)
@@ -256,14 +259,16 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
     // Entering a volume takes the light away.
+    program->SetUniformf("depthBias", sideDepthBias);
     this->Triangles += static_cast<vtkIdType>(
       DrawCounted(program, -weight, countInColour, volume.Volume.SideRuns, 0, sides));
+    program->SetUniformf("depthBias", 0.0f);
     if (plan.LightCap)
     {
       program->SetUniformf("frontFaceValue", -weight);
-      program->SetUniformf("capDepthBias", SeenThroughCapDepthBias);
+      program->SetUniformf("depthBias", SeenThroughCapDepthBias);
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
-      program->SetUniformf("capDepthBias", 0.0f);
+      program->SetUniformf("depthBias", 0.0f);
       this->Triangles += static_cast<vtkIdType>(lightCap / 3);
     }
   }
@@ -286,6 +291,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     // Leaving a volume behind the point takes the light away.
+    program->SetUniformf("depthBias", sideDepthBias);
     this->Triangles += static_cast<vtkIdType>(
       DrawCounted(program, weight, countInColour, volume.Volume.SideRuns, 0, sides) +
       DrawCounted(program, weight, countInColour, volume.Volume.DarkCapRuns, sides, darkCap));
@@ -296,10 +302,10 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     // push cannot move it behind any other visible point.
     // A caster seen through is not in the depth pass: a generous push could move its cap behind
     // an opaque point just behind it, so it is pushed by SeenThroughCapDepthBias only.
-    program->SetUniformf(
-      "capDepthBias", caster.SeenThrough ? SeenThroughCapDepthBias : CapDepthBias);
+    program->SetUniformf("depthBias",
+      std::max(sideDepthBias, caster.SeenThrough ? SeenThroughCapDepthBias : CapDepthBias));
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
-    program->SetUniformf("capDepthBias", 0.0f);
+    program->SetUniformf("depthBias", 0.0f);
     this->Triangles += static_cast<vtkIdType>(lightCap / 3);
     ++this->ZFailVolumes;
   }

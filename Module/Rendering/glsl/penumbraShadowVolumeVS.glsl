@@ -15,15 +15,17 @@ uniform vec4 endPlaneMC;
 // z-fail under a parallel projection, which draws infinity nowhere: the object-space length the
 // swept directions are scaled to (penumbra::ParallelSweepLength); 0 otherwise.
 uniform float sweepLength;
-// Pushes the light cap away from the eye (NDC depth units); see ShadowVolumeRenderer::DrawVolume.
-uniform float capDepthBias;
+// Pushes the volume's faces at the caster away from the eye (NDC depth units): the light cap's,
+// and for soft shadow volumes the sides' (ShadowTechnique::VolumeDepthBias); see
+// ShadowVolumeRenderer::DrawVolume.
+uniform float depthBias;
 
 void main()
 {
   if (vertexMC.w > 0.5)
   {
     gl_Position = MCDCMatrix * vec4(vertexMC.xyz, 1.0);
-    gl_Position.z += capDepthBias * gl_Position.w;
+    gl_Position.z += depthBias * gl_Position.w;
   }
   else
   {
