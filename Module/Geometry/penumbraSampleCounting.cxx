@@ -278,6 +278,14 @@ bool SeesAboveSurface(const glm::dvec3& normal, const glm::dvec3& towardsEye, co
     seenSide * glm::dot(normal, glm::dvec3(light) - light.w * p) > 0.0;
 }
 
+int SurfaceCutsLight(
+  const glm::dvec3& unitNormal, const glm::dvec3& towardsReference, double spread)
+{
+  const double side = glm::dot(unitNormal, towardsReference);
+  const double reach = 1.0001 * spread;
+  return side > reach ? 1 : (side < -reach ? -1 : 0);
+}
+
 namespace
 {
 /// +1 or -1 as x >= 0 or not: the fold keeps the quadrant of a coordinate that is 0.

@@ -143,10 +143,23 @@ VTKPENUMBRAGEOMETRY_EXPORT bool SeesAboveSurface(const glm::dvec3& normal,
   const glm::dvec3& towardsEye, const glm::dvec3& p, const glm::dvec4& light);
 
 /**
+ * Whether every light sample within `spread` of the reference lies in front of a surface's
+ * plane (1), none does (-1), or some may (0; each is then tested with SeesAboveSurface):
+ * `unitNormal` is the plane's unit normal on the seen side, `towardsReference` the reference
+ * point minus the surface point (spread: the samples' largest distance from it) or the
+ * reference direction (spread: the largest |direction - reference direction|). A resolve tests
+ * each sample only where the plane cuts the light (penumbraSurfaceSideDec.glsl). The margin of
+ * 1e-4 of the spread keeps the shader's float copy on the safe side.
+ */
+VTKPENUMBRAGEOMETRY_EXPORT int SurfaceCutsLight(
+  const glm::dvec3& unitNormal, const glm::dvec3& towardsReference, double spread);
+
+/**
  * A direction's octahedral encoding (Meyer et al. 2010): two numbers in [-1, 1], the direction
  * projected on the octahedron |x| + |y| + |z| = 1, the lower half folded out over the upper.
  * The caster meshes' depth pass stores triangle normals so (penumbraCasterDepthFS.glsl) in two
- * float channels; OctahedralDecode undoes it. A zero direction gives (0, 0).
+ * float channels; OctahedralDecode undoes it. A zero direction gives (0, 0); the depth pass
+ * stores none for one (LightIntensityBuffer::NoSurfaceNormal).
  */
 VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 OctahedralEncode(const glm::dvec3& direction);
 /// The unit direction of OctahedralEncode's `code`.

@@ -8,7 +8,8 @@
  * the light loop) and VTK's per-prop set-up, although only the depth is kept. A prop that VTK
  * draws as nothing but its polydata's triangles has the same triangles in its caster's cached
  * mesh (penumbra::CasterTopology: welded, degenerate ones dropped, polygons cut as VTK's fan
- * cuts them): drawn from there, its depth needs a position-only shader and one draw call. A
+ * cuts them): drawn from there, its depth needs a position-only shader and one draw call (which
+ * also writes each visible triangle's normal while a light is counted). A
  * composite mapper's blocks are drawn the same way, one mesh each: VTK draws them from one vertex
  * buffer shifted to the data's centre, so that a block far from it gets coarse depth.
  * Everything else (other mappers, clipping planes, lines and points, custom shaders, a
@@ -60,6 +61,8 @@ public:
   /// shadow, say), for VTK to draw before Draw: VTK writes no normals, so a surface it drew
   /// later could hide a mesh's normal under its own depth.
   std::vector<vtkProp*> Select(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
+  /// Whether Select chose any prop.
+  bool HasSelected() const { return !this->Selected.empty(); }
   /// Draws into the bound depth buffer the depth of the props Select chose, with the caller's
   /// depth state, and with `writeNormals` each fragment's triangle normal into colour
   /// attachment 0 (LightIntensityBuffer::AttachClearedSurfaceNormals). Returns the props it could

@@ -167,6 +167,21 @@ private:
   vtkTextureObject* Normals;
 };
 
+/// Sets what //PENUMBRA::SurfaceSide::Dec reads for a full-screen resolve while ActiveTextures
+/// lives: the textures' units (ShadowFrame::SetSurfaceSideUniforms) and, with `light`, the
+/// depth point about counting's reference and the light's samples, which a program keeps.
+void SetSurfaceSide(
+  const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight* light = nullptr)
+{
+  frame.SetDepthUniforms(program);
+  frame.SetSurfaceSideUniforms(program);
+  if (light)
+  {
+    SetReferenceFrame(frame, program, *light);
+    SetLightSamples(program, *light);
+  }
+}
+
 /// Draws the wedges of every caster counted for the light, with the wedge program bound.
 void DrawCountedWedges(ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light)
 {
@@ -503,10 +518,10 @@ bool CountingTechnique::Resolve(ShadowFrame& frame, const ShadowLight& light, Re
   SetSampleCount(resolve, light.CountingSamples.size());
   this->Deep.Bind(window, resolve, DeepCountsImageUnit, light.Light);
   ActiveTextures surface(frame);
-  frame.SetDepthUniforms(resolve);
-  frame.SetSurfaceSideUniforms(resolve);
-  SetReferenceFrame(frame, resolve, light);
-  SetLightSamples(resolve, light);
+  if (!countOffset)
+  {
+    SetSurfaceSide(frame, resolve, &light);
+  }
   // Counted again only at the uncertain pixels (CountWedges); every other pixel is written.
   const int counted =
     target == ResolveInto::UncertainPixels ? HalfResolutionCounts::UncertainStencil : 0;
@@ -554,6 +569,7 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
   const std::size_t samples = light.CountingSamples.size();
   const float share = 1.0f / static_cast<float>(samples);
   bool offsetResolved = false;
+  bool lightSet = false;
   for (std::size_t first = 0; first < samples; first += 4)
   {
     const std::size_t group = std::min<std::size_t>(4, samples - first);
@@ -575,10 +591,8 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
       return false;
     }
     ActiveTextures surface(frame);
-    frame.SetDepthUniforms(program);
-    frame.SetSurfaceSideUniforms(program);
-    SetReferenceFrame(frame, program, light);
-    SetLightSamples(program, light);
+    SetSurfaceSide(frame, program, lightSet ? nullptr : &light);
+    lightSet = true;
     this->CountOffset->Activate();
     this->SampleCounters->Activate();
     this->LogTransmission->Activate();

@@ -106,6 +106,14 @@ bool LightIntensityBuffer::AttachClearedSurfaceNormals(vtkOpenGLRenderWindow* wi
   return true;
 }
 
+void LightIntensityBuffer::ReleaseSurfaceNormals(vtkWindow* window)
+{
+  if (this->SurfaceNormals->GetHandle())
+  {
+    this->SurfaceNormals->ReleaseGraphicsResources(window);
+  }
+}
+
 vtkTextureObject* LightIntensityBuffer::GetSurfaceNormals()
 {
   return this->SurfaceNormals->GetHandle() ? this->SurfaceNormals.GetPointer() : nullptr;
@@ -118,8 +126,7 @@ std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
     return 0;
   }
   const std::size_t pixels = static_cast<std::size_t>(this->Width) * this->Height;
-  const std::size_t normals = this->SurfaceNormals->GetHandle() ? 8 : 0;
-  return pixels * ((2 + this->LayerCount) * 4 + normals);
+  return pixels * (2 + this->LayerCount) * 4 + TextureBytes(this->SurfaceNormals);
 }
 
 void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)

@@ -50,6 +50,8 @@ public:
   /// world space, octahedral (penumbra::OctahedralEncode), which counting's own-surface test
   /// reads (penumbra::SeesAboveSurface). False, with nothing attached, where OpenGL refuses it.
   bool AttachClearedSurfaceNormals(vtkOpenGLRenderWindow* window);
+  /// Releases the surface normals, where no light asks for them.
+  void ReleaseSurfaceNormals(vtkWindow* window);
   /// The normals' first channel where no caster mesh drew the visible surface (VTK did, or
   /// nothing): outside the octahedral codes' [-1, 1].
   static constexpr float NoSurfaceNormal = 3.0e38f;

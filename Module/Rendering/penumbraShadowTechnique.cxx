@@ -96,10 +96,9 @@ void ShadowFrame::SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& or
 void ShadowFrame::SetSurfaceSideUniforms(vtkShaderProgram* program) const
 {
   program->SetUniformi("surfaceNormalsDrawn", this->SurfaceNormals ? 1 : 0);
-  if (this->SurfaceNormals)
-  {
-    program->SetUniformi("surfaceNormals", this->SurfaceNormals->GetTextureUnit());
-  }
+  // Without normals the sampler, unread, still needs a unit of its own type: the depth copy's.
+  program->SetUniformi("surfaceNormals",
+    (this->SurfaceNormals ? this->SurfaceNormals : this->DepthCopy())->GetTextureUnit());
 }
 
 void ShadowFrame::DrawResolve(float lightIntensity)

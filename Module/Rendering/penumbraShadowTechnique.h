@@ -153,7 +153,8 @@ struct ShadowFrame
   /// sum, which cancels, is taken here in double.
   void SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& origin) const;
   /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface normals' texture unit, or
-  /// that there are none. The caller activates SurfaceNormals (where it is not nullptr).
+  /// that there are none. The caller activates SurfaceNormals (where it is not nullptr) and the
+  /// depth copy.
   void SetSurfaceSideUniforms(vtkShaderProgram* program) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
   /// tests pass for the full-screen triangle at the far plane.

@@ -230,8 +230,11 @@ public:
   /// The props whose depth RenderCasterDepth draws from their caster meshes this frame.
   std::vector<vtkProp*> DepthFromMeshes;
   /// Whether the depth kept in LI has its surfaces' normals where caster meshes drew it (a
-  /// counted light reads them), and whether this frame's lights want them.
+  /// counted light reads them); whether this frame's lights want them, as chosen before their
+  /// casters are updated (the scene's inputs record that, and Automatic may then turn a counted
+  /// light to averaging, which a later frame with the depth kept may undo).
   bool SurfaceNormalsDrawn = false;
+  bool SurfaceNormalsForDepth = false;
   bool SurfaceNormalsWanted() const
   {
     return std::any_of(this->Lights.begin(), this->Lights.end(),
@@ -735,6 +738,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
   using Stage = penumbra::StageTimes::Stage;
   this->ResetShadowStatistics(internals.DepthKept);
   internals.VisibilityImages.clear();
+  internals.SurfaceNormalsForDepth = internals.SurfaceNormalsWanted();
   if (!internals.DepthKept)
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
@@ -951,9 +955,10 @@ void vtkSoftShadowPass::RemoveReceiverKeys()
 //------------------------------------------------------------------------------
 namespace
 {
-/// Binds the LI framebuffer for the depth pass: no colour output at all (the LI texture is
-/// bound for sampling while it draws), the viewport's size, depth test and writes on. The
-/// bindings and state are restored when it goes out of scope.
+/// Binds the LI framebuffer for the depth pass: no colour output (the LI texture is bound for
+/// sampling while it draws; the caster meshes' draw attaches the surface normals itself), the
+/// viewport's size, depth test and writes on. The bindings and state are restored when it goes
+/// out of scope.
 class ScopedDepthDrawing
 {
 public:
@@ -1018,8 +1023,15 @@ void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
   // under its own depth.
   std::vector<vtkProp*> drawnByVTK = internals.CasterDepth.Select(frame, internals.DepthFromMeshes);
   this->RenderDepthWithVTK(s, drawnByVTK);
+  const bool normals = internals.SurfaceNormalsForDepth && internals.CasterDepth.HasSelected();
+  if (!normals)
+  {
+    internals.LI.ReleaseSurfaceNormals(internals.Window);
+  }
   internals.SurfaceNormalsDrawn =
-    internals.SurfaceNormalsWanted() && internals.LI.AttachClearedSurfaceNormals(internals.Window);
+    normals && internals.LI.AttachClearedSurfaceNormals(internals.Window);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
   std::vector<vtkProp*> left = internals.CasterDepth.Draw(frame, internals.SurfaceNormalsDrawn);
   if (!left.empty())
   {

@@ -606,20 +606,24 @@ void TestSurfaceSide(std::mt19937& rng)
     const glm::dvec3 unitDirection = glm::normalize(direction);
     inSquare = inSquare && std::abs(code.x) <= 1.0 && std::abs(code.y) <= 1.0;
     worst = std::max(worst, glm::length(OctahedralDecode(code) - unitDirection));
-    // As the depth pass stores it: two floats.
-    const glm::dvec2 stored = glm::dvec2(glm::vec2(code));
+    // As the depth pass stores it: two floats (volatile: GCC 12 at -O3 kept the doubles).
+    const volatile float storedX = static_cast<float>(code.x), storedY = static_cast<float>(code.y);
+    const glm::dvec2 stored(storedX, storedY);
     worstFloat = std::max(worstFloat, glm::length(OctahedralDecode(stored) - unitDirection));
   }
-  Check(inSquare && worst < 1e-12 && worstFloat < 1e-6,
-    "octahedral normals decode to within 1e-6 from float codes (" +
-      std::to_string(worstFloat * 1e9) + "e-9)");
+  char text[160];
+  std::snprintf(text, sizeof(text),
+    "octahedral normals decode to within 1e-6 (%.2g from double codes, %.2g from float ones)",
+    worst, worstFloat);
+  Check(inSquare && worst < 1e-12 && worstFloat < 1e-6, text);
 
   int wrong = 0;
   for (int i = 0; i < 500; ++i)
   {
     const glm::dvec3 p(unit(rng), unit(rng), unit(rng));
     const glm::dvec3 normal = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
-    const glm::dvec3 eye = p + 3.0 * normal + glm::dvec3(unit(rng), unit(rng), unit(rng));
+    const double eyeSide = i % 2 == 0 ? 1.0 : -1.0;
+    const glm::dvec3 eye = p + 3.0 * eyeSide * normal + glm::dvec3(unit(rng), unit(rng), unit(rng));
     const bool eyeAbove = glm::dot(normal, eye - p) > 0.0;
     const glm::dvec3 seen = eyeAbove ? normal : -normal;
     const glm::dvec4 front(p + seen + 0.5 * glm::cross(seen, glm::dvec3(0.3, 0.1, 0.9)), 1.0);
@@ -634,6 +638,31 @@ void TestSurfaceSide(std::mt19937& rng)
         : 1;
     }
   }
+  // The shortcut: where it says all or none, every sample within the spread agrees.
+  int cuts[3] = { 0, 0, 0 }, disagree = 0;
+  for (int i = 0; i < 3000; ++i)
+  {
+    const glm::dvec3 normal = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+    const bool positional = i % 2 == 0;
+    const glm::dvec3 p(unit(rng), unit(rng), unit(rng));
+    const glm::dvec3 reference = positional ? p + 2.0 * glm::dvec3(unit(rng), unit(rng), unit(rng))
+                                            : glm::normalize(glm::dvec3(unit(rng), unit(rng), 1.0));
+    const double spread = 0.3 * std::abs(unit(rng));
+    const glm::dvec3 towards = positional ? reference - p : reference;
+    const int cut = SurfaceCutsLight(normal, towards, spread);
+    ++cuts[cut + 1];
+    for (int k = 0; k < 16 && cut != 0; ++k)
+    {
+      // A sample at the spread's edge, in any direction.
+      const glm::dvec3 off = spread * glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+      const glm::dvec4 sample =
+        positional ? glm::dvec4(reference + off, 1.0) : glm::dvec4(reference + off, 0.0);
+      disagree += SeesAboveSurface(normal, normal, p, sample) != (cut > 0) ? 1 : 0;
+    }
+  }
+  Check(disagree == 0 && cuts[0] > 100 && cuts[1] > 100 && cuts[2] > 100,
+    "the all-or-none shortcut agrees with every sample it skips (" + std::to_string(disagree) +
+      " disagree)");
   Check(wrong == 0 &&
       SeesAboveSurface(
         glm::dvec3(0.0), { 0.0, 0.0, 1.0 }, glm::dvec3(0.0), { 0.0, 0.0, -1.0, 0.0 }),

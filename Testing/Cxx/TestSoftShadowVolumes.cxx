@@ -894,6 +894,7 @@ void TestFacetedTerminator()
     pixels, error[0] / n, absolute[0] / n, error[1] / n, absolute[1] / n, error[2] / n,
     absolute[2] / n);
   Check(pixels > 100, "faceted terminator: a penumbra in view");
+  Check(error[1] > error[0] + 0.01, "faceted terminator: the normals make the difference here");
   Check(error[0] / n <= 0.015 && absolute[0] <= absolute[2] + 0.005 * n,
     "faceted terminator: counting sees no sample behind a facet, and is as accurate as "
     "averaging there");

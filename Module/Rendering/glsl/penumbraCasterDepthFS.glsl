@@ -22,6 +22,6 @@ void main()
   {
     vec3 n = normalToWorld * cross(dFdx(positionMC), dFdy(positionMC));
     // (A triangle too small for its derivatives: no plane.)
-    gl_FragData[0] = vec4(dot(n, n) > 0.0 ? octahedral(n) : vec2(3.0e38), 0.0, 0.0);
+    gl_FragData[0] = vec4(any(notEqual(n, vec3(0.0))) ? octahedral(n) : vec2(3.0e38), 0.0, 0.0);
   }
 }

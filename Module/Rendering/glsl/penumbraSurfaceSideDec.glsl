@@ -40,7 +40,7 @@ vec3 penumbraSeenSurfaceNormal(ivec2 pixel, vec3 towardsEye)
 
 /// Whether the samples, within `spread` of the light point or direction `towardsReference` (from
 /// the surface point), lie in front of the plane of unit normal n: 1 all, -1 none, 0 some (each
-/// sample then tested alone).
+/// sample then tested alone). penumbra::SurfaceCutsLight.
 int penumbraSurfaceCutsLight(vec3 n, vec3 towardsReference, float spread)
 {
   float side = dot(n, towardsReference);
