@@ -50,18 +50,22 @@ void main()
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int centre =
     int(round(-texelFetch(centreCount, texel * counterStride, 0).r));
-#ifndef PENUMBRA_COUNT_OFFSET
-  penumbraFindSurface(texel * counterStride);
-#endif
+  // The surface's plane is found only where some sample's count is 0 (below): most pixels of
+  // a view are wholly lit or wholly in an umbra.
   if (useCounters == 0)
   {
 #ifdef PENUMBRA_COUNT_OFFSET
     gl_FragData[0] = vec4(float(centre)); // the counters hold 0: visible where the centre is 0
 #else
-    int seen = centre == 0 && penumbraSurfaceCut > 0 ? sampleCount : 0;
-    for (int i = 0; centre == 0 && penumbraSurfaceCut == 0 && i < sampleCount; ++i)
+    int seen = 0;
+    if (centre == 0)
     {
-      seen += penumbraSampleInFront(i) ? 1 : 0;
+      penumbraFindSurface(texel * counterStride);
+      seen = penumbraSurfaceCut > 0 ? sampleCount : 0;
+      for (int i = 0; penumbraSurfaceCut == 0 && i < sampleCount; ++i)
+      {
+        seen += penumbraSampleInFront(i) ? 1 : 0;
+      }
     }
     gl_FragData[0] = vec4(float(seen) / float(sampleCount));
 #endif
@@ -69,7 +73,7 @@ void main()
   }
   uint offset = (uint(centre + bias) & 0xFFu) * 0x01010101u;
   int lowest = 0;  // min(0, smallest count)
-  int visible = 0; // samples in front of the surface whose count equals it
+  int visible = 0; // samples whose count equals it
   int deepest = centre;
   for (int word = 0; word * 4 < sampleCount; ++word)
   {
@@ -82,9 +86,7 @@ void main()
         lowest = count;
         visible = 0;
       }
-#ifndef PENUMBRA_COUNT_OFFSET
-      visible += count == lowest && penumbraSampleInFront(word * 4 + field) ? 1 : 0;
-#endif
+      visible += count == lowest ? 1 : 0;
       deepest = max(deepest, count);
     }
   }
@@ -95,6 +97,28 @@ void main()
 #ifdef PENUMBRA_COUNT_OFFSET
   gl_FragData[0] = vec4(float(centre - lowest));
 #else
+  if (visible > 0)
+  {
+    penumbraFindSurface(texel * counterStride);
+    if (penumbraSurfaceCut < 0)
+    {
+      visible = 0;
+    }
+    else if (penumbraSurfaceCut == 0)
+    {
+      // Again, those of the samples at the lowest count that lie in front.
+      visible = 0;
+      for (int word = 0; word * 4 < sampleCount; ++word)
+      {
+        uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
+        for (int field = 0; field < 4 && word * 4 + field < sampleCount; ++field)
+        {
+          int count = int((counts >> uint(8 * field)) & 0xFFu) - bias;
+          visible += count == lowest && penumbraSampleInFront(word * 4 + field) ? 1 : 0;
+        }
+      }
+    }
+  }
   gl_FragData[0] = vec4(float(visible) / float(sampleCount));
 #endif
 }
