@@ -838,16 +838,21 @@ void TestLampInsideCasterBox()
 /// samples the facet hides: brighter than the ray-traced truth by 0.032 on average over its
 /// penumbra pixels (MAE 0.060; averaging 0.023 and 0.049, its volumes missing some of the same
 /// samples); with it -0.008 (MAE 0.036). Most of what is left is a pixel or two that a side of
-/// the centre's volume, starting on the surface there, still darkens within float rounding.
-void TestFacetedTerminator()
+/// the centre's volume, starting on the surface there, still darkens within float rounding. At
+/// VTK's depth range, whose steps are coarser, that happened on three pixels counted dark where
+/// the truth is about half (MAE 0.042, averaging 0.040) until the sides were pushed back by the
+/// point's depth bias (ShadowTechnique::VolumeDepthBias): none now, MAE 0.034.
+void TestFacetedTerminator(bool tightDepthRange)
 {
   Scene scene;
   scene.Name = "faceted terminator";
   scene.Add(MakeActor(SphereSource(0.0, 0.9, 0.0, 0.8, 200, 100), 0.5, 0.5, 0.9));
   scene.AddLight(true, { -6.0, 2.0, 0.0 }, 0.03, { 0.0, 0.9, 0.0 });
   scene.SetCamera({ 1.0, 1.5, 3.5 }, { 0.0, 0.9, 0.0 }, { 0.0, 1.0, 0.0 }, 30.0);
-  SceneWindow view(scene);
+  SceneWindow view(scene, tightDepthRange);
   vtkSoftShadowPass* pass = view.Pass;
+  const std::string what =
+    std::string("faceted terminator, ") + (tightDepthRange ? "tight range" : "VTK's range");
   pass->SetMethodToAveragedHardShadows();
   view.Window->Render();
   const std::vector<float> averaged = Visibility(pass);
@@ -858,13 +863,12 @@ void TestFacetedTerminator()
   pass->DepthFromCasterMeshesOn();
   view.Window->Render();
   const std::vector<float> counted = Visibility(pass);
-  Check(
-    pass->GetNumberOfPropsWithDepthFromMeshes() == 1, "faceted terminator: depth from the mesh");
+  Check(pass->GetNumberOfPropsWithDepthFromMeshes() == 1, what + ": depth from the mesh");
 
   vtkNew<vtkRayTracedVisibility> truth;
   truth->SetRenderer(view.Renderer);
   truth->SetSamplesPerLight(1024);
-  Check(truth->Update(), "faceted terminator: ray tracer ran");
+  Check(truth->Update(), what + ": ray tracer ran");
   const std::vector<float> expected = ImageValues(truth->GetVisibilityImage(0));
   const std::vector<float> truthDepth = ImageValues(truth->GetDepthImage());
   const std::vector<float> zbuffer = WindowDepth(view.Window, view.Renderer);
@@ -872,7 +876,7 @@ void TestFacetedTerminator()
   // surface both see.
   const auto inPenumbra = [](float v) { return v > 0.02f && v < 0.98f; };
   double error[3] = { 0.0, 0.0, 0.0 }, absolute[3] = { 0.0, 0.0, 0.0 };
-  int pixels = 0;
+  int pixels = 0, dark = 0;
   for (std::size_t i = 0; i < expected.size(); ++i)
   {
     if (truthDepth[i] >= 1.0f || std::abs(truthDepth[i] - zbuffer[i]) > 1e-3f ||
@@ -881,6 +885,7 @@ void TestFacetedTerminator()
       continue;
     }
     ++pixels;
+    dark += counted[i] < expected[i] - 0.3f ? 1 : 0;
     const float values[3] = { counted[i], withoutNormals[i], averaged[i] };
     for (int k = 0; k < 3; ++k)
     {
@@ -889,15 +894,19 @@ void TestFacetedTerminator()
     }
   }
   const double n = std::max(pixels, 1);
-  std::printf("faceted terminator, %d penumbra px, mean error and MAE against the truth: counted "
-              "%+.4f %.4f, without normals %+.4f %.4f, averaged %+.4f %.4f\n",
-    pixels, error[0] / n, absolute[0] / n, error[1] / n, absolute[1] / n, error[2] / n,
-    absolute[2] / n);
-  Check(pixels > 100, "faceted terminator: a penumbra in view");
-  Check(error[1] > error[0] + 0.01, "faceted terminator: the normals make the difference here");
+  std::printf("%s, %d penumbra px, mean error and MAE against the truth: counted %+.4f %.4f "
+              "(%d px more than 0.3 too dark), without normals %+.4f %.4f, averaged %+.4f %.4f\n",
+    what.c_str(), pixels, error[0] / n, absolute[0] / n, dark, error[1] / n, absolute[1] / n,
+    error[2] / n, absolute[2] / n);
+  Check(pixels > 100, what + ": a penumbra in view");
+  Check(error[1] > error[0] + 0.01, what + ": the normals make the difference here");
   Check(error[0] / n <= 0.015 && absolute[0] <= absolute[2] + 0.005 * n,
-    "faceted terminator: counting sees no sample behind a facet, and is as accurate as "
-    "averaging there");
+    what + ": counting sees no sample behind a facet, and is as accurate as averaging there");
+  if (!tightDepthRange)
+  {
+    Check(dark == 0 && absolute[0] <= absolute[2],
+      what + ": no pixel darkened by a side of the centre's volume at the surface");
+  }
 }
 } // namespace
 
@@ -1084,7 +1093,8 @@ int main()
   TestNoFullViewportWedges(scenes[4]);
   TestAutomaticChoice(scenes[0]);
   TestLampInsideCasterBox();
-  TestFacetedTerminator();
+  TestFacetedTerminator(true);
+  TestFacetedTerminator(false);
   TestSampleCounts(scenes[0]);
   TestReceiversBox();
   TestStageTimes(scenes[0]);
