@@ -125,18 +125,6 @@ void SetLightSamples(vtkShaderProgram* program, const ShadowLight& light)
   program->SetUniformf("sampleSpread", static_cast<float>(spread));
 }
 
-/// Places clipToLocal's origin, and lightWedge, at counting's reference: the frame in which
-/// SetLightSamples gives the samples.
-void SetReferenceFrame(
-  const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light)
-{
-  const glm::dvec4& reference = light.Samples.front(); // CountingReference
-  const bool positional = reference.w != 0.0;
-  frame.SetClipToLocal(program, positional ? glm::dvec3(reference) : glm::dvec3(0.0));
-  const glm::vec4 lightWedge(positional ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : reference);
-  program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
-}
-
 /// The depth copy and surface normals, active for the full-screen resolves while it lives.
 class ActiveTextures
 {
@@ -177,7 +165,8 @@ void SetSurfaceSide(
   frame.SetSurfaceSideUniforms(program);
   if (light)
   {
-    SetReferenceFrame(frame, program, *light);
+    // About counting's reference: the frame in which SetLightSamples gives the samples.
+    frame.SetClipToLight(program, light->Samples.front());
     SetLightSamples(program, *light);
   }
 }

@@ -93,6 +93,14 @@ void ShadowFrame::SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& or
   program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(glm::value_ptr(uniform)));
 }
 
+void ShadowFrame::SetClipToLight(vtkShaderProgram* program, const glm::dvec4& light) const
+{
+  const bool positional = light.w != 0.0;
+  this->SetClipToLocal(program, positional ? glm::dvec3(light) : glm::dvec3(0.0));
+  const glm::vec4 lightWedge(positional ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : light);
+  program->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+}
+
 void ShadowFrame::SetSurfaceSideUniforms(vtkShaderProgram* program) const
 {
   program->SetUniformi("surfaceNormalsDrawn", this->SurfaceNormals ? 1 : 0);

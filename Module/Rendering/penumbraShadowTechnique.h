@@ -152,6 +152,9 @@ struct ShadowFrame
   /// the scene, the depth then takes no float cancellation: depth - 1 is exact, and the columns'
   /// sum, which cancels, is taken here in double.
   void SetClipToLocal(vtkShaderProgram* program, const glm::dvec3& origin) const;
+  /// SetClipToLocal about a light point (x, y, z, 1), and `lightWedge` (0, 0, 0, 1) there; or,
+  /// for a direction (x, y, z, 0), about the world's origin, with `lightWedge` the direction.
+  void SetClipToLight(vtkShaderProgram* program, const glm::dvec4& light) const;
   /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface normals' texture unit, or
   /// that there are none. The caller activates SurfaceNormals (where it is not nullptr) and the
   /// depth copy.

@@ -13,7 +13,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -302,8 +301,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     // push cannot move it behind any other visible point.
     // A caster seen through is not in the depth pass: a generous push could move its cap behind
     // an opaque point just behind it, so it is pushed by SeenThroughCapDepthBias only.
-    program->SetUniformf("depthBias",
-      std::max(sideDepthBias, caster.SeenThrough ? SeenThroughCapDepthBias : CapDepthBias));
+    program->SetUniformf("depthBias", caster.SeenThrough ? SeenThroughCapDepthBias : CapDepthBias);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lightCap), GL_UNSIGNED_INT, lightCapStart);
     program->SetUniformf("depthBias", 0.0f);
     this->Triangles += static_cast<vtkIdType>(lightCap / 3);

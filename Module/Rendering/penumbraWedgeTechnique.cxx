@@ -11,9 +11,6 @@
 #include "penumbraWedgeFS.h"
 #include "penumbraWedgeVS.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
-
 namespace penumbra
 {
 
@@ -67,12 +64,9 @@ void WedgeTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
     "horizon cap", "the wedges' horizon cap is left out");
   if (horizon)
   {
-    const glm::dvec3 origin = light.World.w != 0.0 ? glm::dvec3(light.World) : glm::dvec3(0.0);
-    const glm::vec4 lightWedge(light.World.w != 0.0 ? glm::dvec4(0, 0, 0, 1) : light.World);
     frame.SetDepthUniforms(horizon);
     horizon->SetUniformf("lightRadius", static_cast<float>(light.SoftRadius));
-    frame.SetClipToLocal(horizon, origin);
-    horizon->SetUniform4f("lightWedge", glm::value_ptr(lightWedge));
+    frame.SetClipToLight(horizon, light.World);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglBlendEquation(GL_MIN);
     frame.FullScreen->Draw(horizon, this->HorizonVAO);

@@ -45,6 +45,12 @@ uniform int reportedCount;
 //PENUMBRA::DepthPoint::Dec
 //PENUMBRA::SurfaceSide::Dec
 
+/// Field `field` of a counters' word with the centre's offset added: that sample's count.
+int fieldCount(uint counts, int field)
+{
+  return int((counts >> uint(8 * field)) & 0xFFu) - bias;
+}
+
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -80,7 +86,7 @@ void main()
     uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
     for (int field = 0; field < 4 && word * 4 + field < sampleCount; ++field)
     {
-      int count = int((counts >> uint(8 * field)) & 0xFFu) - bias;
+      int count = fieldCount(counts, field);
       if (count < lowest)
       {
         lowest = count;
@@ -113,8 +119,8 @@ void main()
         uint counts = texelFetch(counters, ivec3(texel, word), 0).r + offset;
         for (int field = 0; field < 4 && word * 4 + field < sampleCount; ++field)
         {
-          int count = int((counts >> uint(8 * field)) & 0xFFu) - bias;
-          visible += count == lowest && penumbraSampleInFront(word * 4 + field) ? 1 : 0;
+          visible +=
+            fieldCount(counts, field) == lowest && penumbraSampleInFront(word * 4 + field) ? 1 : 0;
         }
       }
     }
