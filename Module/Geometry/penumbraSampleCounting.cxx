@@ -286,37 +286,42 @@ int SurfaceCutsLight(
   return side > reach ? 1 : (side < -reach ? -1 : 0);
 }
 
-namespace
+double CountingPointDepth(double sceneDepth, const ViewRay& ray, const glm::dvec4& plane,
+  double depthBias, double planeBias)
 {
-/// +1 or -1 as x >= 0 or not: the fold keeps the quadrant of a coordinate that is 0.
-glm::dvec2 SignNotZero(const glm::dvec2& v)
-{
-  return { v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0 };
-}
-} // namespace
-
-glm::dvec2 OctahedralEncode(const glm::dvec3& direction)
-{
-  const double sum = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
-  if (!(sum > 0.0))
+  if (!(sceneDepth < 1.0))
   {
-    return glm::dvec2(0.0);
+    return 1.0;
   }
-  const glm::dvec3 n = direction / sum;
-  const glm::dvec2 upper(n.x, n.y);
-  return n.z >= 0.0 ? upper : (1.0 - glm::abs(glm::dvec2(n.y, n.x))) * SignNotZero(upper);
-}
-
-glm::dvec3 OctahedralDecode(const glm::dvec2& code)
-{
-  glm::dvec3 n(code, 1.0 - std::abs(code.x) - std::abs(code.y));
-  if (n.z < 0.0)
+  const double moved = sceneDepth - std::min(depthBias, sceneDepth);
+  const glm::dvec3 normal(plane);
+  // Heights above the plane of the ray's ends, the near one on the seen side: between the eye
+  // and the visible point the ray does not cross the plane.
+  double nearHeight = glm::dot(normal, ray.Near) - plane.w;
+  double farHeight = glm::dot(normal, ray.Far) - plane.w;
+  if (nearHeight < 0.0)
   {
-    const glm::dvec2 folded = (1.0 - glm::abs(glm::dvec2(n.y, n.x))) * SignNotZero(code);
-    n.x = folded.x;
-    n.y = folded.y;
+    nearHeight = -nearHeight;
+    farHeight = -farHeight;
   }
-  return glm::normalize(n);
+  if (normal == glm::dvec3(0.0) || !(farHeight < 0.0 && nearHeight > 0.0))
+  {
+    return moved;
+  }
+  // Window depth - 1 at the share u of the way from the far end back to the near one: the clip
+  // coordinates are linear along the ray, NDC z is their ratio.
+  const double wRatio = ray.FarW / ray.NearW;
+  const auto depthMinusOne = [&](double u) { return -u / (u + (1.0 - u) * wRatio); };
+  const double span = nearHeight - farHeight;
+  const double onPlane = depthMinusOne(-farHeight / span);
+  const double tolerance = std::max(16.0 * depthBias, 0.01 * (1.0 - sceneDepth));
+  if (!(std::abs(1.0 + onPlane - sceneDepth) <= tolerance))
+  {
+    return moved;
+  }
+  const double clearance = planeBias * (glm::length(ray.Near) + glm::length(ray.Far));
+  const double offPlane = depthMinusOne(std::min((clearance - farHeight) / span, 1.0));
+  return std::max(1.0 + std::min(onPlane - depthBias, offPlane), 0.0);
 }
 
 } // namespace penumbra

@@ -154,16 +154,34 @@ VTKPENUMBRAGEOMETRY_EXPORT bool SeesAboveSurface(const glm::dvec3& normal,
 VTKPENUMBRAGEOMETRY_EXPORT int SurfaceCutsLight(
   const glm::dvec3& unitNormal, const glm::dvec3& towardsReference, double spread);
 
+/// A pixel's view ray, as CountingPointDepth takes it: its points at window depth 0 and 1 (on
+/// the near and far planes) about some origin, and their clip-space w (equal under a parallel
+/// projection).
+struct ViewRay
+{
+  glm::dvec3 Near{ 0.0 };
+  glm::dvec3 Far{ 0.0 };
+  double NearW = 1.0;
+  double FarW = 1.0;
+};
+
 /**
- * A direction's octahedral encoding (Meyer et al. 2010): two numbers in [-1, 1], the direction
- * projected on the octahedron |x| + |y| + |z| = 1, the lower half folded out over the upper.
- * The caster meshes' depth pass stores triangle normals so (penumbraCasterDepthFS.glsl) in two
- * float channels; OctahedralDecode undoes it. A zero direction gives (0, 0); the depth pass
- * stores none for one (LightIntensityBuffer::NoSurfaceNormal).
+ * The window depth at which counting takes a pixel's point: both the wedges' edge terms and the
+ * centre's rasterized count read it (penumbraCountingDepthFS.glsl is the shader's copy), so both
+ * judge one point. It lies on the view ray in front of the visible surface, on the side the eye
+ * sees, so that the sides of the surface's own shadow volume start behind it:
+ * - `depthBias` (window depth) in front of the scene depth;
+ * - where the surface's plane is known (`plane`: unit normal and offset, n . x = w, about the
+ *   ray's origin; zero where unknown), `depthBias` in front of the plane's exact depth on the
+ *   ray instead, and at least `planeBias` times the ray's ends' distances from the origin off
+ *   the plane along its normal. A rasterized depth at a grazing view can be off by more than
+ * depthBias, and a move along the view ray barely leaves the plane there. A plane whose depth is
+ * not within 1% of the scene depth's distance from the far plane (or 16 depthBias) is not the
+ * pixel's and is ignored. The background (sceneDepth >= 1) stays 1, and the result is never below
+ * 0.
  */
-VTKPENUMBRAGEOMETRY_EXPORT glm::dvec2 OctahedralEncode(const glm::dvec3& direction);
-/// The unit direction of OctahedralEncode's `code`.
-VTKPENUMBRAGEOMETRY_EXPORT glm::dvec3 OctahedralDecode(const glm::dvec2& code);
+VTKPENUMBRAGEOMETRY_EXPORT double CountingPointDepth(double sceneDepth, const ViewRay& ray,
+  const glm::dvec4& plane, double depthBias, double planeBias);
 
 /// What the choice between counting and averaging the same light samples needs of one caster.
 struct CountingCost

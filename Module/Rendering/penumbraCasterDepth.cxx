@@ -19,6 +19,7 @@
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
@@ -144,7 +145,7 @@ std::vector<vtkProp*> CasterDepth::Select(
   return left;
 }
 
-std::vector<vtkProp*> CasterDepth::Draw(const ShadowFrame& frame, bool writeNormals)
+std::vector<vtkProp*> CasterDepth::Draw(const ShadowFrame& frame, bool writePlanes)
 {
   this->CulledProps = 0;
   std::vector<vtkProp*> left;
@@ -162,7 +163,7 @@ std::vector<vtkProp*> CasterDepth::Draw(const ShadowFrame& frame, bool writeNorm
     }
     return left;
   }
-  this->Program->SetUniformi("writeNormals", writeNormals ? 1 : 0);
+  this->Program->SetUniformi("writePlanes", writePlanes ? 1 : 0);
   for (const SelectedProp& selected : this->Selected)
   {
     bool culled = false;
@@ -194,6 +195,12 @@ bool CasterDepth::DrawCaster(const ShadowFrame& frame, CasterCache& caster)
   const glm::mat3 normalToWorld(glm::transpose(glm::inverse(glm::dmat3(caster.ObjectToWorld))));
   this->Program->SetUniformMatrix3x3(
     "normalToWorld", const_cast<float*>(glm::value_ptr(normalToWorld)));
+  // The planes' offsets about an origin near the eye, summed in double: small where the
+  // counting point's view rays need them precise.
+  const glm::mat4 positionToOrigin(
+    glm::translate(glm::dmat4(1.0), -frame.SurfaceOrigin()) * caster.ObjectToWorld);
+  this->Program->SetUniformMatrix4x4(
+    "positionToOrigin", const_cast<float*>(glm::value_ptr(positionToOrigin)));
   caster.Mesh->Bind(this->Program);
   caster.Mesh->BindTriangles();
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * caster.Mesh->Topology.Triangles.size()),

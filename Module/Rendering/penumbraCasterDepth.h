@@ -9,7 +9,7 @@
  * draws as nothing but its polydata's triangles has the same triangles in its caster's cached
  * mesh (penumbra::CasterTopology: welded, degenerate ones dropped, polygons cut as VTK's fan
  * cuts them): drawn from there, its depth needs a position-only shader and one draw call (which
- * also writes each visible triangle's normal while a light is counted). A
+ * also writes each visible triangle's plane while a light is counted). A
  * composite mapper's blocks are drawn the same way, one mesh each: VTK draws them from one vertex
  * buffer shifted to the data's centre, so that a block far from it gets coarse depth.
  * Everything else (other mappers, clipping planes, lines and points, custom shaders, a
@@ -58,16 +58,16 @@ public:
 
   /// Chooses which of `props` (all DrawnAsItsTriangles) Draw draws: each whose caster among
   /// frame.Casters is opaque and cut as VTK draws it. Returns the others (a prop that casts no
-  /// shadow, say), for VTK to draw before Draw: VTK writes no normals, so a surface it drew
-  /// later could hide a mesh's normal under its own depth.
+  /// shadow, say), for VTK to draw before Draw: VTK writes no planes, so a surface it drew
+  /// later could hide a mesh's plane under its own depth.
   std::vector<vtkProp*> Select(const ShadowFrame& frame, const std::vector<vtkProp*>& props);
   /// Whether Select chose any prop.
   bool HasSelected() const { return !this->Selected.empty(); }
   /// Draws into the bound depth buffer the depth of the props Select chose, with the caller's
-  /// depth state, and with `writeNormals` each fragment's triangle normal into colour
-  /// attachment 0 (LightIntensityBuffer::AttachClearedSurfaceNormals). Returns the props it could
+  /// depth state, and with `writePlanes` each fragment's triangle plane into colour
+  /// attachment 0 (LightIntensityBuffer::AttachClearedSurfacePlanes). Returns the props it could
   /// not draw (all of them where its shader does not build), for VTK to draw.
-  std::vector<vtkProp*> Draw(const ShadowFrame& frame, bool writeNormals);
+  std::vector<vtkProp*> Draw(const ShadowFrame& frame, bool writePlanes);
   /// Props the last Draw drew with the hidden faces of their mesh, or of some of their blocks,
   /// culled: closed casters whose pieces all wind one way (CasterTopology::OutwardWinding),
   /// wholly beyond the near plane.

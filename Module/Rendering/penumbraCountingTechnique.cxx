@@ -12,6 +12,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "penumbraCountingDepthFS.h"
 #include "penumbraCountingResolveFS.h"
 #include "penumbraCountingTransmissionFS.h"
 #include "penumbraCountingWedgeFS.h"
@@ -25,11 +26,16 @@ namespace penumbra
 
 namespace
 {
-/// NDC depth by which soft shadow volumes move a pixel's point towards the eye, so that it lies
-/// on the side of its own surface that it is seen from: four steps of a 24-bit depth buffer.
+/// Window depth by which counting takes a pixel's point in front of its surface, so that the
+/// sides of the surface's own volume start behind it: four steps of a 24-bit depth buffer.
 /// Much more moves it measurably off the surface where the depth range is wide (a near plane at
 /// 1/1000 of the far one makes 5e-5 a tenth of the scene's unit).
-constexpr float CountingEyeDepthBias = 8.0f / 16777216.0f;
+constexpr float CountingDepthBias = 4.0f / 16777216.0f;
+/// Where the surface's plane is known, the point lies off the plane along its normal by at least
+/// this share of its view ray's ends' distances from the planes' origin: the float rounding of
+/// the ray, the plane and the wedges' point. (1, 16 or 64 steps instead of 4 left more of a
+/// sweep of random scenes off averaging, Documentation/wedges.md.)
+constexpr float CountingPlaneBias = 4.0f / 16777216.0f;
 /// And the share of the point's and the eye's distances from the caster's origin by which it
 /// moves further: where the tight depth range makes depth steps finer than the float rounding
 /// of the coordinates the depth was drawn from, the depth is off by that rounding (a cylinder's
@@ -125,25 +131,25 @@ void SetLightSamples(vtkShaderProgram* program, const ShadowLight& light)
   program->SetUniformf("sampleSpread", static_cast<float>(spread));
 }
 
-/// The depth copy and surface normals, active for the full-screen resolves while it lives.
+/// The depth copy and surface planes, active for the full-screen passes while it lives.
 class ActiveTextures
 {
 public:
   explicit ActiveTextures(const ShadowFrame& frame)
     : Depth(frame.DepthCopy())
-    , Normals(frame.SurfaceNormals)
+    , Planes(frame.SurfacePlanes)
   {
     this->Depth->Activate();
-    if (this->Normals)
+    if (this->Planes)
     {
-      this->Normals->Activate();
+      this->Planes->Activate();
     }
   }
   ~ActiveTextures()
   {
-    if (this->Normals)
+    if (this->Planes)
     {
-      this->Normals->Deactivate();
+      this->Planes->Deactivate();
     }
     this->Depth->Deactivate();
   }
@@ -152,7 +158,7 @@ public:
 
 private:
   vtkTextureObject* Depth;
-  vtkTextureObject* Normals;
+  vtkTextureObject* Planes;
 };
 
 /// Sets what //PENUMBRA::SurfaceSide::Dec reads for a full-screen resolve while ActiveTextures
@@ -186,14 +192,6 @@ void DrawCountedWedges(ShadowFrame& frame, vtkShaderProgram* program, const Shad
   }
 }
 } // namespace
-
-float CountingTechnique::VolumeDepthBias() const
-{
-  // The centre's count is taken at the point the edges' terms are: near a silhouette of the
-  // centre through the point's neighbourhood, a side starts on the surface, within depth
-  // rounding of the point, and it counted there at random (a whole pixel dark on terminators).
-  return CountingEyeDepthBias;
-}
 
 bool CountingTechnique::Supported(vtkObject* owner)
 {
@@ -275,7 +273,43 @@ vtkIdType CountingTechnique::UpdateCaster(
 
 void CountingTechnique::BeginVolumes(ShadowFrame& frame, const ShadowLight&)
 {
+  this->CountingDepthDrawn = this->DrawCountingDepth(frame);
   frame.AttachClearedFloatTarget(this->CentreCount);
+}
+
+bool CountingTechnique::DrawCountingDepth(ShadowFrame& frame)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkShaderProgram* program =
+    frame.Programs->Ready(window, penumbraResolveVS, penumbraCountingDepthFS,
+      "soft shadow volume point", "soft shadows average hard shadows instead");
+  if (!program)
+  {
+    return false;
+  }
+  if (TextureNeedsAllocation(this->CountingDepth, window, frame.Size[0], frame.Size[1], 1, 1,
+        vtkTextureObject::Nearest) &&
+    !this->CountingDepth->AllocateDepth(frame.Size[0], frame.Size[1], vtkTextureObject::Float32))
+  {
+    return false;
+  }
+  // The centre's volumes are counted against it: it stays attached until Finish.
+  frame.AttachDepth(this->CountingDepth);
+  vtkOpenGLState* ostate = window->GetState();
+  ScopedDrawState saved(ostate);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ActiveTextures surface(frame);
+  frame.SetDepthUniforms(program);
+  frame.SetSurfaceSideUniforms(program);
+  frame.SetClipToLocal(program, frame.SurfaceOrigin());
+  program->SetUniformf("depthBias", CountingDepthBias);
+  program->SetUniformf("planeBias", CountingPlaneBias);
+  frame.FullScreen->Draw(program, this->DepthVAO);
+  return true;
 }
 
 bool CountingTechnique::AllocateCounters(
@@ -326,9 +360,10 @@ void CountingTechnique::ClearCounters()
 
 void CountingTechnique::Finish(ShadowFrame& frame, const ShadowLight& light)
 {
+  frame.AttachDepth(nullptr);
   // A shader that does not build turns counting off: from the next frame on such lights
   // average the same samples.
-  const bool drawn = this->Draw(frame, light) &&
+  const bool drawn = this->CountingDepthDrawn && this->Draw(frame, light) &&
     (!light.ShadowedByTranslucentCasters || this->DrawTransmission(frame, light));
   if (!drawn)
   {
@@ -400,7 +435,7 @@ bool CountingTechnique::CountWedges(
   ScopedDrawState saved(ostate);
   SetWedgeState(ostate, pixels);
   glBindImageTexture(0, this->SampleCounters->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  frame.DepthCopy()->Activate();
+  this->CountingDepth->Activate();
   SetWedgeUniforms(frame, program, light, pixels);
   const TechniqueCounts before = frame.Counts;
   DrawCountedWedges(frame, program, light);
@@ -411,7 +446,7 @@ bool CountingTechnique::CountWedges(
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   // For the resolve's reads and for the clear of a second count (glClearTexImage).
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  frame.DepthCopy()->Deactivate();
+  this->CountingDepth->Deactivate();
   return true;
 }
 
@@ -445,18 +480,17 @@ void CountingTechnique::SetWedgeState(vtkOpenGLState* ostate, WedgePixels pixels
   ostate->vtkglEnable(GL_DEPTH_CLAMP);
 }
 
-void CountingTechnique::SetWedgeUniforms(
-  const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight& light, WedgePixels pixels)
+void CountingTechnique::SetWedgeUniforms(const ShadowFrame& frame, vtkShaderProgram* program,
+  const ShadowLight& light, WedgePixels pixels) const
 {
   const bool counted = pixels == WedgePixels::Counted;
-  frame.SetDepthUniforms(program);
+  frame.SetDepthUniforms(program, this->CountingDepth);
   const glm::vec4 clipToCounters =
     counted ? HalfResolutionCounts::ClipToCounters(frame.Size) : glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
   program->SetUniform4f("clipToCounters", glm::value_ptr(clipToCounters));
   program->SetUniformi("counterStride", counted ? 2 : 1);
   SetSampleCount(program, light.CountingSamples.size());
   program->SetUniformi("counters", 0);
-  program->SetUniformf("eyeDepthBias", CountingEyeDepthBias);
   program->SetUniformf("eyeFloatBias", CountingEyeFloatBias);
   SetLightSamples(program, light);
 }
@@ -601,19 +635,22 @@ bool CountingTechnique::DrawTransmission(ShadowFrame& frame, const ShadowLight& 
 
 std::size_t CountingTechnique::GraphicsMemoryBytes() const
 {
-  return TextureBytes(this->CentreCount) + TextureBytes(this->SampleCounters) +
-    TextureBytes(this->CountOffset) + TextureBytes(this->LogTransmission) +
-    this->HalfResolutionTargets.GraphicsMemoryBytes() + this->Deep.GraphicsMemoryBytes();
+  return TextureBytes(this->CentreCount) + TextureBytes(this->CountingDepth) +
+    TextureBytes(this->SampleCounters) + TextureBytes(this->CountOffset) +
+    TextureBytes(this->LogTransmission) + this->HalfResolutionTargets.GraphicsMemoryBytes() +
+    this->Deep.GraphicsMemoryBytes();
 }
 
 void CountingTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->CentreCount->ReleaseGraphicsResources(window);
+  this->CountingDepth->ReleaseGraphicsResources(window);
   this->SampleCounters->ReleaseGraphicsResources(window);
   this->CountOffset->ReleaseGraphicsResources(window);
   this->LogTransmission->ReleaseGraphicsResources(window);
   this->HalfResolutionTargets.ReleaseGraphicsResources(window);
   this->Deep.ReleaseGraphicsResources(window);
+  this->DepthVAO.ReleaseGraphicsResources();
   this->ResolveVAO.ReleaseGraphicsResources();
   this->OffsetVAO.ReleaseGraphicsResources();
   this->TransmissionVAO.ReleaseGraphicsResources();

@@ -59,8 +59,7 @@ public:
   /// in each direction (vtkSoftShadowPass::HalfResolutionCounting).
   void SetHalfResolution(bool half) { this->HalfResolution = half; }
   bool CountsCentreInColour() const override { return true; }
-  bool ReadsSurfaceNormals() const override { return true; }
-  float VolumeDepthBias() const override;
+  bool ReadsSurfacePlanes() const override { return true; }
   bool ShadowsTranslucentCasters() const override { return true; }
   /// Builds the wedges of the opaque casters that are not culled (after the chooser kept
   /// counting).
@@ -69,15 +68,16 @@ public:
   /// counting rule changed.
   vtkIdType UpdateCaster(
     const ShadowLight& light, CasterCache& caster, const ReceiverBounds& receivers) override;
-  /// The centre's count goes to a texture of its own, for the resolve to read.
+  /// Writes each pixel's counting depth (DrawCountingDepth), which the centre's volumes are then
+  /// counted against, into a texture of their own for the resolve to read.
   void BeginVolumes(ShadowFrame& frame, const ShadowLight& light) override;
   void ResolveSample(ShadowFrame&, const ShadowLight&, std::size_t) override {}
   /// Counts the samples over the wedges and writes the share of visible ones into the layer,
   /// then multiplies each visible sample's share by its translucent casters' transmission.
   void Finish(ShadowFrame& frame, const ShadowLight& light) override;
-  /// The centre count and counters: 4 + N bytes per pixel, and 20 more for the count offset and
-  /// the transmission of four samples once a light with translucent casters was counted; at
-  /// half resolution the counted pixels' depth-stencil and visibility, 2 more.
+  /// The counting depth, centre count and counters: 8 + N bytes per pixel, and 20 more for the
+  /// count offset and the transmission of four samples once a light with translucent casters was
+  /// counted; at half resolution the counted pixels' depth-stencil and visibility, 2 more.
   std::size_t GraphicsMemoryBytes() const override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -101,16 +101,21 @@ private:
     Counted,
     Uncertain
   };
+  /// Writes into CountingDepth, and leaves attached as the LI framebuffer's depth, the depth of
+  /// each pixel's point that the centre's volumes and the wedges count at
+  /// (penumbra::CountingPointDepth). False where its shader does not build or OpenGL refuses the
+  /// texture.
+  bool DrawCountingDepth(ShadowFrame& frame);
   bool Draw(ShadowFrame& frame, const ShadowLight& light);
   /// Adds every opaque caster's wedges' changes into the counters at `pixels`.
   bool CountWedges(ShadowFrame& frame, const ShadowLight& light, WedgePixels pixels);
   /// The draw state of CountWedges: no colour, and the stencil marking the pixels that wedges
   /// reach (among the uncertain ones only, for WedgePixels::Uncertain).
   static void SetWedgeState(vtkOpenGLState* ostate, WedgePixels pixels);
-  /// The wedge program's uniforms for counting the light's samples at `pixels`; the depth copy
-  /// must be active.
-  static void SetWedgeUniforms(const ShadowFrame& frame, vtkShaderProgram* program,
-    const ShadowLight& light, WedgePixels pixels);
+  /// The wedge program's uniforms for counting the light's samples at `pixels`; CountingDepth,
+  /// which the wedges read as their depth, must be active.
+  void SetWedgeUniforms(const ShadowFrame& frame, vtkShaderProgram* program,
+    const ShadowLight& light, WedgePixels pixels) const;
   /// Sizes the counters for `texels` and `samples`; false when OpenGL refuses them.
   bool AllocateCounters(
     vtkOpenGLRenderWindow* window, const glm::ivec2& texels, std::size_t samples);
@@ -126,6 +131,9 @@ private:
   /// ReleaseGraphicsResources (GetGraphicsMemoryBytes counts them while they are held).
   vtkNew<vtkTextureObject> CentreCount;
   vtkNew<vtkPenumbraLayeredTexture> SampleCounters;
+  /// The depth of each pixel's counting point (DEPTH_COMPONENT32F).
+  vtkNew<vtkTextureObject> CountingDepth;
+  bool CountingDepthDrawn = false;
   /// The smallest counters' size OpenGL refused (0: none).
   std::size_t RefusedCounterBytes = 0;
   /// Per pixel, what makes a visible sample's counter field 0 (R32F), for the translucent
@@ -135,7 +143,7 @@ private:
   vtkNew<vtkTextureObject> LogTransmission;
   HalfResolutionCounts HalfResolutionTargets;
   DeepCounts Deep;
-  FullScreenTriangle::VAO ResolveVAO, OffsetVAO, TransmissionVAO;
+  FullScreenTriangle::VAO DepthVAO, ResolveVAO, OffsetVAO, TransmissionVAO;
   int Support = -1;
   bool WarnedSamples = false;
   bool HalfResolution = false;

@@ -52,8 +52,7 @@ bool LightIntensityBuffer::Prepare(vtkOpenGLRenderWindow* window, int width, int
 void LightIntensityBuffer::BindLayer(int layer)
 {
   this->Framebuffer->Bind();
-  glFramebufferTexture2D(
-    GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, this->DepthStencil->GetHandle(), 0);
+  this->AttachDepth(nullptr);
   this->AttachColour(this->Layers, layer);
 }
 
@@ -87,36 +86,51 @@ void LightIntensityBuffer::CopyDepth(vtkOpenGLState* ostate)
     GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 }
 
-bool LightIntensityBuffer::AttachClearedSurfaceNormals(vtkOpenGLRenderWindow* window)
+void LightIntensityBuffer::AttachDepth(vtkTextureObject* depth)
+{
+  if (depth)
+  {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+    glFramebufferTexture2D(
+      GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth->GetHandle(), 0);
+  }
+  else
+  {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+      this->DepthStencil->GetHandle(), 0);
+  }
+}
+
+bool LightIntensityBuffer::AttachClearedSurfacePlanes(vtkOpenGLRenderWindow* window)
 {
   if (TextureNeedsAllocation(
-        this->SurfaceNormals, window, this->Width, this->Height, 1, 2, vtkTextureObject::Nearest) &&
-    !this->SurfaceNormals->Allocate2D(this->Width, this->Height, 2, VTK_FLOAT))
+        this->SurfacePlanes, window, this->Width, this->Height, 1, 4, vtkTextureObject::Nearest) &&
+    !this->SurfacePlanes->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT))
   {
-    this->SurfaceNormals->ReleaseGraphicsResources(window);
+    this->SurfacePlanes->ReleaseGraphicsResources(window);
     return false;
   }
   vtkOpenGLState* ostate = window->GetState();
-  this->AttachColour(this->SurfaceNormals, 0);
+  this->AttachColour(this->SurfacePlanes, 0);
   vtkOpenGLState::ScopedglColorMask colorMask(ostate);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   vtkOpenGLState::ScopedglClearColor clearColor(ostate);
-  ostate->vtkglClearColor(NoSurfaceNormal, NoSurfaceNormal, 0.0f, 0.0f);
+  ostate->vtkglClearColor(NoSurfacePlane, 0.0f, 0.0f, 0.0f);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
   return true;
 }
 
-void LightIntensityBuffer::ReleaseSurfaceNormals(vtkWindow* window)
+void LightIntensityBuffer::ReleaseSurfacePlanes(vtkWindow* window)
 {
-  if (this->SurfaceNormals->GetHandle())
+  if (this->SurfacePlanes->GetHandle())
   {
-    this->SurfaceNormals->ReleaseGraphicsResources(window);
+    this->SurfacePlanes->ReleaseGraphicsResources(window);
   }
 }
 
-vtkTextureObject* LightIntensityBuffer::GetSurfaceNormals()
+vtkTextureObject* LightIntensityBuffer::GetSurfacePlanes()
 {
-  return this->SurfaceNormals->GetHandle() ? this->SurfaceNormals.GetPointer() : nullptr;
+  return this->SurfacePlanes->GetHandle() ? this->SurfacePlanes.GetPointer() : nullptr;
 }
 
 std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
@@ -126,7 +140,7 @@ std::size_t LightIntensityBuffer::GraphicsMemoryBytes() const
     return 0;
   }
   const std::size_t pixels = static_cast<std::size_t>(this->Width) * this->Height;
-  return pixels * (2 + this->LayerCount) * 4 + TextureBytes(this->SurfaceNormals);
+  return pixels * (2 + this->LayerCount) * 4 + TextureBytes(this->SurfacePlanes);
 }
 
 void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
@@ -136,7 +150,7 @@ void LightIntensityBuffer::ReleaseGraphicsResources(vtkWindow* window)
   this->DepthCopy->ReleaseGraphicsResources(window);
   ReleaseFramebuffer(this->DepthCopyFramebuffer, window);
   this->Layers->ReleaseGraphicsResources(window);
-  this->SurfaceNormals->ReleaseGraphicsResources(window);
+  this->SurfacePlanes->ReleaseGraphicsResources(window);
   this->Width = this->Height = this->LayerCount = 0;
   this->RefusedBytes = 0;
 }

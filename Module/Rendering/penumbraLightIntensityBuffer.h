@@ -3,7 +3,7 @@
  * @brief   The light-intensity (LI) buffer: one R32F layer per shadowing light, the framebuffer
  *          they are drawn through with its depth-stencil attachment, a copy of that depth
  *          for the shaders that read the scene's depth while testing against it, and the
- *          visible triangles' normals where the pass drew the depth from caster meshes.
+ *          visible triangles' planes where the pass drew the depth from caster meshes.
  *
  * VTK 9.1's window has no stencil, and vtkOpenGLFramebufferObject attaches depth without
  * stencil and ignores a new slice of an attached texture: this class attaches both itself.
@@ -44,28 +44,32 @@ public:
   void AttachColour(vtkTextureObject* texture, int layer);
   /// Copies the depth attachment into DepthCopy.
   void CopyDepth(vtkOpenGLState* ostate);
-  /// Makes the surface normals (an RG32F texture of the buffer's size, allocated on first use)
-  /// colour attachment 0 and the draw buffer, cleared to NoSurfaceNormal; the framebuffer must
-  /// be bound. The caster meshes' depth shader writes there each fragment's triangle normal in
-  /// world space, octahedral (penumbra::OctahedralEncode), which counting's own-surface test
-  /// reads (penumbra::SeesAboveSurface). False, with nothing attached, where OpenGL refuses it.
-  bool AttachClearedSurfaceNormals(vtkOpenGLRenderWindow* window);
-  /// Releases the surface normals, where no light asks for them.
-  void ReleaseSurfaceNormals(vtkWindow* window);
-  /// The normals' first channel where no caster mesh drew the visible surface (VTK did, or
-  /// nothing): outside the octahedral codes' [-1, 1].
-  static constexpr float NoSurfaceNormal = 3.0e38f;
+  /// Makes `depth` (a depth texture of the buffer's size) the framebuffer's depth attachment in
+  /// place of the depth-stencil, which nullptr attaches again; the framebuffer must be bound.
+  void AttachDepth(vtkTextureObject* depth);
+  /// Makes the surface planes (an RGBA32F texture of the buffer's size, allocated on first use)
+  /// colour attachment 0 and the draw buffer, cleared to NoSurfacePlane; the framebuffer must
+  /// be bound. The caster meshes' depth shader writes there each fragment's triangle plane, its
+  /// unit normal in world space and its offset about ShadowFrame::SurfaceOrigin, which
+  /// counting's point (penumbra::CountingPointDepth) and own-surface test
+  /// (penumbra::SeesAboveSurface) read. False, with nothing attached, where OpenGL refuses it.
+  bool AttachClearedSurfacePlanes(vtkOpenGLRenderWindow* window);
+  /// Releases the surface planes, where no light asks for them.
+  void ReleaseSurfacePlanes(vtkWindow* window);
+  /// The planes' first channel where no caster mesh drew the visible surface (VTK did, or
+  /// nothing): outside a unit normal's [-1, 1].
+  static constexpr float NoSurfacePlane = 3.0e38f;
 
   vtkOpenGLFramebufferObject* GetFramebuffer() { return this->Framebuffer; }
   /// The LI layers (a 2D array texture, one layer per light), for the receivers to sample.
   vtkTextureObject* GetLayers() { return this->Layers; }
   vtkTextureObject* GetDepthCopy() { return this->DepthCopy; }
-  /// The surface normals, or nullptr before AttachClearedSurfaceNormals first allocated them.
-  vtkTextureObject* GetSurfaceNormals();
+  /// The surface planes, or nullptr before AttachClearedSurfacePlanes first allocated them.
+  vtkTextureObject* GetSurfacePlanes();
   int GetLayerCount() const { return this->LayerCount; }
 
-  /// Bytes held: 4 per texel of the depth-stencil, its copy and every layer, and 8 per texel of
-  /// the surface normals where they were allocated.
+  /// Bytes held: 4 per texel of the depth-stencil, its copy and every layer, and 16 per texel
+  /// of the surface planes where they were allocated.
   std::size_t GraphicsMemoryBytes() const;
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -77,7 +81,7 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthCopyFramebuffer =
     vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   vtkNew<vtkPenumbraLayeredTexture> Layers;
-  vtkNew<vtkTextureObject> SurfaceNormals;
+  vtkNew<vtkTextureObject> SurfacePlanes;
   int Width = 0, Height = 0, LayerCount = 0;
   /// The smallest layers' size OpenGL refused (0: none).
   std::size_t RefusedBytes = 0;

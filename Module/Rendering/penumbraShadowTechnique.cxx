@@ -61,6 +61,17 @@ void ShadowFrame::AttachColour(vtkTextureObject* texture, int layer) const
   this->Buffer->AttachColour(texture, layer);
 }
 
+void ShadowFrame::AttachDepth(vtkTextureObject* depth) const
+{
+  this->Buffer->AttachDepth(depth);
+}
+
+glm::dvec3 ShadowFrame::SurfaceOrigin() const
+{
+  return 0.25 *
+    (this->NearCorners[0] + this->NearCorners[1] + this->NearCorners[2] + this->NearCorners[3]);
+}
+
 void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture, int components) const
 {
   if (TextureNeedsAllocation(texture, this->Window, this->Size[0], this->Size[1], 1, components,
@@ -77,11 +88,11 @@ void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture, int compon
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
 
-void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program) const
+void ShadowFrame::SetDepthUniforms(vtkShaderProgram* program, vtkTextureObject* depth) const
 {
   const float viewport[2] = { static_cast<float>(this->Size[0]),
     static_cast<float>(this->Size[1]) };
-  program->SetUniformi("depthTexture", this->DepthCopy()->GetTextureUnit());
+  program->SetUniformi("depthTexture", (depth ? depth : this->DepthCopy())->GetTextureUnit());
   program->SetUniform2f("viewportSize", viewport);
 }
 
@@ -103,10 +114,10 @@ void ShadowFrame::SetClipToLight(vtkShaderProgram* program, const glm::dvec4& li
 
 void ShadowFrame::SetSurfaceSideUniforms(vtkShaderProgram* program) const
 {
-  program->SetUniformi("surfaceNormalsDrawn", this->SurfaceNormals ? 1 : 0);
-  // Without normals the sampler, unread, still needs a unit of its own type: the depth copy's.
-  program->SetUniformi("surfaceNormals",
-    (this->SurfaceNormals ? this->SurfaceNormals : this->DepthCopy())->GetTextureUnit());
+  program->SetUniformi("surfacePlanesDrawn", this->SurfacePlanes ? 1 : 0);
+  // Without planes the sampler, unread, still needs a unit of its own type: the depth copy's.
+  program->SetUniformi("surfacePlanes",
+    (this->SurfacePlanes ? this->SurfacePlanes : this->DepthCopy())->GetTextureUnit());
 }
 
 void ShadowFrame::DrawResolve(float lightIntensity)

@@ -114,9 +114,9 @@ struct ShadowFrame
   /// The buffer's depth copy, for the shaders to read, and its layers.
   vtkTextureObject* DepthCopy() const;
   vtkTextureObject* Layers() const;
-  /// The visible triangles' normals where caster meshes drew the depth (LightIntensityBuffer::
-  /// AttachClearedSurfaceNormals), or nullptr where no light asked for them this frame.
-  vtkTextureObject* SurfaceNormals = nullptr;
+  /// The visible triangles' planes where caster meshes drew the depth (LightIntensityBuffer::
+  /// AttachClearedSurfacePlanes), or nullptr where no light asked for them this frame.
+  vtkTextureObject* SurfacePlanes = nullptr;
   ShaderPrograms* Programs = nullptr;
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
@@ -138,14 +138,19 @@ struct ShadowFrame
   /// Makes `texture` (layer `layer` of a vtkPenumbraLayeredTexture, or a 2D texture) the LI
   /// framebuffer's colour attachment 0 and its draw buffer; the framebuffer must be bound.
   void AttachColour(vtkTextureObject* texture, int layer) const;
+  /// Makes `depth` the LI framebuffer's depth attachment in place of its depth-stencil, or with
+  /// nullptr the depth-stencil again (LightIntensityBuffer::AttachDepth).
+  void AttachDepth(vtkTextureObject* depth) const;
+  /// The origin about which the surface planes' offsets are given: the near plane's centre.
+  glm::dvec3 SurfaceOrigin() const;
   /// Makes `texture` a float target of `components` channels (R32F, RGBA32F) and the
   /// viewport's size in this window, allocating it when it is not one yet, attaches it as
   /// AttachColour does and clears it to 0 (within the scissor box, when the scissor test is on)
   /// with colour writes on: where a technique adds counts with additive blending.
   void AttachClearedFloatTarget(vtkTextureObject* texture, int components = 1) const;
-  /// Sets the uniforms every shader that reads the scene depth declares: the depth copy's
-  /// texture unit (activated by the caller) and the viewport size.
-  void SetDepthUniforms(vtkShaderProgram* program) const;
+  /// Sets the uniforms every shader that reads the scene depth declares: the texture unit of
+  /// `depth` (activated by the caller; nullptr: the depth copy) and the viewport size.
+  void SetDepthUniforms(vtkShaderProgram* program, vtkTextureObject* depth = nullptr) const;
   /// Sets `clipToLocal`, which penumbraPointAt reads: NDC to world space relative to `origin`,
   /// with the NDC depth's column added into the constant one, so that the shader multiplies by
   /// the NDC depth minus 1. Near the far plane, where a perspective depth buffer holds most of
@@ -155,8 +160,8 @@ struct ShadowFrame
   /// SetClipToLocal about a light point (x, y, z, 1), and `lightWedge` (0, 0, 0, 1) there; or,
   /// for a direction (x, y, z, 0), about the world's origin, with `lightWedge` the direction.
   void SetClipToLight(vtkShaderProgram* program, const glm::dvec4& light) const;
-  /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface normals' texture unit, or
-  /// that there are none. The caller activates SurfaceNormals (where it is not nullptr) and the
+  /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface planes' texture unit, or
+  /// that there are none. The caller activates SurfacePlanes (where it is not nullptr) and the
   /// depth copy.
   void SetSurfaceSideUniforms(vtkShaderProgram* program) const;
   /// Adds `lightIntensity` into the bound layer at every pixel the current depth and stencil
@@ -187,12 +192,8 @@ public:
   virtual bool CountsInColour(const ShadowLight&) const { return this->CountsCentreInColour(); }
   /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
   virtual bool ReadsDepthCopy() const { return true; }
-  /// NDC depth by which its opaque volumes' sides are pushed away from the eye at the caster:
-  /// the point the volumes count at then lies that much towards the eye, as the point its other
-  /// terms are taken at may.
-  virtual float VolumeDepthBias() const { return 0.0f; }
-  /// Whether it reads the surface normals (LightIntensityBuffer::AttachClearedSurfaceNormals).
-  virtual bool ReadsSurfaceNormals() const { return false; }
+  /// Whether it reads the surface planes (LightIntensityBuffer::AttachClearedSurfacePlanes).
+  virtual bool ReadsSurfacePlanes() const { return false; }
   /// Whether translucent casters shadow by their opacity (otherwise they are left out).
   virtual bool ShadowsTranslucentCasters() const { return false; }
   /// Brings this technique's caches of one caster for the light, beyond the samples' volumes,

@@ -233,12 +233,12 @@ public:
   /// counted light reads them); whether this frame's lights want them, as chosen before their
   /// casters are updated (the scene's inputs record that, and Automatic may then turn a counted
   /// light to averaging, which a later frame with the depth kept may undo).
-  bool SurfaceNormalsDrawn = false;
-  bool SurfaceNormalsForDepth = false;
-  bool SurfaceNormalsWanted() const
+  bool SurfacePlanesDrawn = false;
+  bool SurfacePlanesForDepth = false;
+  bool SurfacePlanesWanted() const
   {
     return std::any_of(this->Lights.begin(), this->Lights.end(),
-      [](const ShadowLight& light) { return light.Technique->ReadsSurfaceNormals(); });
+      [](const ShadowLight& light) { return light.Technique->ReadsSurfacePlanes(); });
   }
   vtkNew<vtkLightsPass> LightsPass;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
@@ -698,7 +698,7 @@ bool vtkSoftShadowPass::ShadowsUnchanged(const vtkRenderState* s)
   vtkCamera* camera = renderer->GetActiveCamera();
   scene.Add(glm::dvec4(glm::make_vec3(camera->GetFocalPoint()), camera->GetDistance()));
   scene.AddCoincidentTopologySettings();
-  scene.Add(internals.SurfaceNormalsWanted() ? 1.0 : 0.0);
+  scene.Add(internals.SurfacePlanesWanted() ? 1.0 : 0.0);
   // A culler's settings (vtkFrustumCoverageCuller's MinimumCoverage) choose the casters too.
   scene.Add(static_cast<double>(internals.CulledInView.size()));
   for (vtkProp* culled : internals.CulledInView)
@@ -738,7 +738,7 @@ void vtkSoftShadowPass::DrawShadows(const vtkRenderState* s, vtkOpenGLRenderWind
   using Stage = penumbra::StageTimes::Stage;
   this->ResetShadowStatistics(internals.DepthKept);
   internals.VisibilityImages.clear();
-  internals.SurfaceNormalsForDepth = internals.SurfaceNormalsWanted();
+  internals.SurfacePlanesForDepth = internals.SurfacePlanesWanted();
   if (!internals.DepthKept)
   {
     penumbra::StageTimes::Scope timed(internals.StageTimes, Stage::Depth);
@@ -993,7 +993,7 @@ void vtkSoftShadowPass::RenderDepth(const vtkRenderState* s)
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
   internals.DepthFromMeshes.clear();
-  internals.SurfaceNormalsDrawn = false;
+  internals.SurfacePlanesDrawn = false;
   std::vector<vtkProp*> drawnByVTK;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -1023,19 +1023,19 @@ void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
   // under its own depth.
   std::vector<vtkProp*> drawnByVTK = internals.CasterDepth.Select(frame, internals.DepthFromMeshes);
   this->RenderDepthWithVTK(s, drawnByVTK);
-  const bool normals = internals.SurfaceNormalsForDepth && internals.CasterDepth.HasSelected();
+  const bool normals = internals.SurfacePlanesForDepth && internals.CasterDepth.HasSelected();
   if (!normals)
   {
-    internals.LI.ReleaseSurfaceNormals(internals.Window);
+    internals.LI.ReleaseSurfacePlanes(internals.Window);
   }
-  internals.SurfaceNormalsDrawn =
-    normals && internals.LI.AttachClearedSurfaceNormals(internals.Window);
+  internals.SurfacePlanesDrawn =
+    normals && internals.LI.AttachClearedSurfacePlanes(internals.Window);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
-  std::vector<vtkProp*> left = internals.CasterDepth.Draw(frame, internals.SurfaceNormalsDrawn);
+  std::vector<vtkProp*> left = internals.CasterDepth.Draw(frame, internals.SurfacePlanesDrawn);
   if (!left.empty())
   {
-    internals.SurfaceNormalsDrawn = false; // (VTK draws them without)
+    internals.SurfacePlanesDrawn = false; // (VTK draws them without)
     ostate->vtkglDrawBuffer(GL_NONE);
     this->RenderDepthWithVTK(s, left);
   }
@@ -1271,7 +1271,7 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.NearCorners = this->NearCorners;
   frame.Casters = &this->Casters;
   frame.Buffer = &this->LI;
-  frame.SurfaceNormals = this->SurfaceNormalsDrawn ? this->LI.GetSurfaceNormals() : nullptr;
+  frame.SurfacePlanes = this->SurfacePlanesDrawn ? this->LI.GetSurfacePlanes() : nullptr;
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;

@@ -586,37 +586,100 @@ void TestCountingReference()
     "a directional light's reference is its direction turned off the planes holding it");
 }
 
-/// Triangle normals survive the depth pass's octahedral encoding to float precision, over the
-/// whole sphere (both halves, the axes, the fold's edges), and the own-surface test keeps the
-/// samples on the side the eye sees, whichever way the normal points.
+/// The view ray of NDC (x, y) under `clip` (world to clip), about the world's origin.
+ViewRay RayAt(const glm::dmat4& clip, double x, double y)
+{
+  const glm::dmat4 toWorld = glm::inverse(clip);
+  const glm::dvec4 nearPoint = toWorld * glm::dvec4(x, y, -1.0, 1.0);
+  const glm::dvec4 farPoint = toWorld * glm::dvec4(x, y, 1.0, 1.0);
+  ViewRay ray;
+  ray.Near = glm::dvec3(nearPoint) / nearPoint.w;
+  ray.Far = glm::dvec3(farPoint) / farPoint.w;
+  ray.NearW = (clip * glm::dvec4(ray.Near, 1.0)).w;
+  ray.FarW = (clip * glm::dvec4(ray.Far, 1.0)).w;
+  return ray;
+}
+
+/// The window depth of `point` under `clip`.
+double WindowDepth(const glm::dmat4& clip, const glm::dvec3& point)
+{
+  const glm::dvec4 p = clip * glm::dvec4(point, 1.0);
+  return 0.5 * (p.z / p.w + 1.0);
+}
+
+/// Counting's point stays on the seen side of its surface's plane wherever the rasterized depth
+/// is off, at grazing views too (where a move along the view ray barely leaves the plane), and
+/// takes the scene depth moved towards the eye where no plane is known, or where the plane is
+/// not the pixel's; the background stays at the far plane.
+void TestCountingPointDepth(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double step = 1.0 / 16777216.0; // a 24-bit depth step
+  const double depthBias = 4.0 * step, planeBias = 4.0 * step;
+  const glm::dvec3 eye(0.0, -20.0, 3.0);
+  const glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0, 0.0, 0.0), glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 clips[2] = { glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.5, 60.0) * view,
+    glm::ortho(-8.0, 8.0, -6.0, 6.0, 0.5, 60.0) * view };
+  int below = 0, belowWithoutPlane = 0, tooFar = 0, tried = 0;
+  for (int i = 0; i < 4000; ++i)
+  {
+    const glm::dmat4& clip = clips[i % 2];
+    const ViewRay ray = RayAt(clip, 0.9 * unit(rng), 0.9 * unit(rng));
+    // A plane through a point on the ray, tilted from head-on to 0.5 degrees off edge-on.
+    const glm::dvec3 along = glm::normalize(ray.Far - ray.Near);
+    const double t = 0.2 + 0.6 * std::abs(unit(rng));
+    const glm::dvec3 hit = ray.Near + t * (ray.Far - ray.Near);
+    const double grazing = glm::radians(0.5 + 89.0 * std::pow(std::abs(unit(rng)), 3.0));
+    glm::dvec3 across = glm::normalize(glm::cross(along, glm::dvec3(unit(rng), unit(rng), 1.0)));
+    const glm::dvec3 normal = std::sin(grazing) * -along + std::cos(grazing) * across;
+    const glm::dvec4 plane(normal, glm::dot(normal, hit));
+    // The rasterized depth, off by up to 40 steps either way.
+    const double exact = WindowDepth(clip, hit);
+    const double scene = exact + std::round(40.0 * unit(rng)) * step;
+    const auto height = [&](double depth)
+    {
+      // The point at that depth on this ray: clip coordinates are linear along it.
+      const double u = (1.0 - depth) * ray.FarW / ((1.0 - depth) * ray.FarW + depth * ray.NearW);
+      const glm::dvec3 point = ray.Far + u * (ray.Near - ray.Far);
+      return glm::dot(normal, point) - plane.w; // positive on the eye's side
+    };
+    const double counted = CountingPointDepth(scene, ray, plane, depthBias, planeBias);
+    const double clearance = planeBias * (glm::length(ray.Near) + glm::length(ray.Far));
+    ++tried;
+    below += height(counted) >= 0.9 * clearance ? 0 : 1;
+    belowWithoutPlane +=
+      height(CountingPointDepth(scene, ray, glm::dvec4(0.0), depthBias, planeBias)) > 0.0 ? 0 : 1;
+    // Not further towards the eye than the bias, or the clearance, ask.
+    tooFar += counted >= exact - depthBias - 1e-12 ||
+        std::abs(height(counted) - clearance) <= 1e-3 * clearance + 1e-12
+      ? 0
+      : 1;
+  }
+  char text[200];
+  std::snprintf(text, sizeof(text),
+    "counting's point clears its plane on the seen side: %d of %d below (%d from the scene "
+    "depth alone), %d farther than asked",
+    below, tried, belowWithoutPlane, tooFar);
+  Check(below == 0 && tooFar == 0 && belowWithoutPlane > 100, text);
+
+  const ViewRay ray = RayAt(clips[0], 0.1, -0.2);
+  const glm::dvec3 hit = ray.Near + 0.5 * (ray.Far - ray.Near);
+  const glm::dvec3 normal = glm::normalize(ray.Near - ray.Far);
+  const double exact = WindowDepth(clips[0], hit);
+  const glm::dvec4 elsewhere(normal, glm::dot(normal, ray.Near + 0.3 * (ray.Far - ray.Near)));
+  Check(CountingPointDepth(1.0, ray, glm::dvec4(normal, 0.0), depthBias, planeBias) == 1.0 &&
+      CountingPointDepth(exact, ray, glm::dvec4(0.0), depthBias, planeBias) == exact - depthBias &&
+      CountingPointDepth(exact, ray, elsewhere, depthBias, planeBias) == exact - depthBias &&
+      CountingPointDepth(0.5 * depthBias, ray, glm::dvec4(0.0), depthBias, planeBias) == 0.0,
+    "the background stays at the far plane; no plane, or another surface's, takes the scene "
+    "depth moved; never below 0");
+}
+
+/// The own-surface test keeps the samples on the side the eye sees, whichever way the normal
+/// points.
 void TestSurfaceSide(std::mt19937& rng)
 {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<glm::dvec3> directions = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
-    { 0, 0, 1 }, { 0, 0, -1 }, { 1, 1, 0 }, { -1, 0, -1 }, { 0, -1, -1 } };
-  for (int i = 0; i < 2000; ++i)
-  {
-    directions.emplace_back(unit(rng), unit(rng), unit(rng));
-  }
-  double worst = 0.0, worstFloat = 0.0;
-  bool inSquare = true;
-  for (const glm::dvec3& direction : directions)
-  {
-    const glm::dvec2 code = OctahedralEncode(direction);
-    const glm::dvec3 unitDirection = glm::normalize(direction);
-    inSquare = inSquare && std::abs(code.x) <= 1.0 && std::abs(code.y) <= 1.0;
-    worst = std::max(worst, glm::length(OctahedralDecode(code) - unitDirection));
-    // As the depth pass stores it: two floats (volatile: GCC 12 at -O3 kept the doubles).
-    const volatile float storedX = static_cast<float>(code.x), storedY = static_cast<float>(code.y);
-    const glm::dvec2 stored(storedX, storedY);
-    worstFloat = std::max(worstFloat, glm::length(OctahedralDecode(stored) - unitDirection));
-  }
-  char text[160];
-  std::snprintf(text, sizeof(text),
-    "octahedral normals decode to within 1e-6 (%.2g from double codes, %.2g from float ones)",
-    worst, worstFloat);
-  Check(inSquare && worst < 1e-12 && worstFloat < 1e-6, text);
-
   int wrong = 0;
   for (int i = 0; i < 500; ++i)
   {
@@ -676,6 +739,7 @@ int main()
   TestCasterAngularRadius();
   TestCountingReference();
   TestSurfaceSide(rng);
+  TestCountingPointDepth(rng);
   TestFacingOverLight();
   TestDegenerate();
   TestPotentialSilhouetteIsSmall();

@@ -1,27 +1,33 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Depth, and where the pass asks for them (writeNormals), each fragment's triangle normal in
-// world space, octahedral (penumbra::OctahedralEncode), for counting's own-surface test
-// (penumbraSurfaceSideDec.glsl): the position's derivatives across the pixel quad lie in the
-// triangle's plane. With no colour attachment drawn to, only the depth is kept.
-uniform int writeNormals;
-uniform mat3 normalToWorld; // the inverse transpose of the mesh's matrix
+// Depth, and where the pass asks for them (writePlanes), each fragment's triangle plane: its
+// unit normal in world space and its offset about ShadowFrame::SurfaceOrigin, for counting's
+// point (penumbraCountingDepthFS.glsl) and own-surface test (penumbraSurfaceSideDec.glsl). The
+// position's derivatives across the pixel quad lie in the triangle's plane, and any
+// interpolated position lies on it up to the rounding of its coordinates, however the
+// rasterized depth is off. With no colour attachment drawn to, only the depth is kept.
+uniform int writePlanes;
+uniform mat3 normalToWorld;     // the inverse transpose of the mesh's matrix
+uniform mat4 positionToOrigin;  // the mesh's matrix, about ShadowFrame::SurfaceOrigin
+const float noSurfacePlane = 3.0e38; // LightIntensityBuffer::NoSurfacePlane
 
 in vec3 positionMC;
 
-vec2 octahedral(vec3 n)
-{
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 folded = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  return n.z >= 0.0 ? n.xy : folded;
-}
-
 void main()
 {
-  if (writeNormals != 0)
+  if (writePlanes != 0)
   {
     vec3 n = normalToWorld * cross(dFdx(positionMC), dFdy(positionMC));
+    float size = max(max(abs(n.x), abs(n.y)), abs(n.z));
     // (A triangle too small for its derivatives: no plane.)
-    gl_FragData[0] = vec4(any(notEqual(n, vec3(0.0))) ? octahedral(n) : vec2(3.0e38), 0.0, 0.0);
+    if (size > 0.0)
+    {
+      n = normalize(n / size);
+      gl_FragData[0] = vec4(n, dot(n, (positionToOrigin * vec4(positionMC, 1.0)).xyz));
+    }
+    else
+    {
+      gl_FragData[0] = vec4(noSurfacePlane, 0.0, 0.0, 0.0);
+    }
   }
 }

@@ -27,8 +27,8 @@ uniform int sampleCount; // samples set in lightSamples
 #endif
 uniform float sampleSpread; // the largest |sample - centre|, wedge coordinates
 uniform int frontFacesOnly; // the counting rule of this caster's centre volume
-uniform float eyeDepthBias; // NDC depth by which p moves towards the eye, off its own surface
-uniform float eyeFloatBias; // and the share of its frame's coordinates' size by which it moves
+// The share of its frame's coordinates' size by which p moves further towards the eye.
+uniform float eyeFloatBias;
 uniform int counterStride;  // pixels between counter texels: 1, or 2 at half resolution
 layout(r32ui) uniform uimage2DArray counters;
 
@@ -52,9 +52,9 @@ void main()
   ivec2 texel = ivec2(gl_FragCoord.xy);
   ivec2 pixel = texel * counterStride;
   float depth = penumbraSceneDepth(pixel);
-  // The point as seen: on the eye's side of its own surface, as the centre volume counts it.
-  // (Not past the near plane, from where the eye would lie behind the point.)
-  vec3 p = penumbraPointAt(pixel, depth, min(eyeDepthBias, 2.0 * depth));
+  // The point as seen, on the eye's side of its own surface: depthTexture holds counting's
+  // depth (penumbraCountingDepthFS.glsl), which the centre's volume was counted against.
+  vec3 p = penumbraPointAt(pixel, depth, 0.0);
   vec3 towardsEye = penumbraPointAt(pixel, 0.0, 0.0) - p;
   p += towardsEye *
     (eyeFloatBias * (length(p) + length(p + towardsEye)) / max(length(towardsEye), 1e-30));

@@ -8,15 +8,22 @@ uniform sampler2D depthTexture;
 uniform mat4 clipToLocal;
 uniform vec2 viewportSize;
 
-/// `eyeDepthBias`: NDC depth by which the point moves towards the eye (0 for the point itself).
-vec3 penumbraPointAt(ivec2 pixel, float depth, float eyeDepthBias)
+/// The pixel's point at window `depth`, moved towards the eye by `eyeDepthBias` (NDC depth; 0
+/// for the point itself), in homogeneous coordinates of the local frame: w is the same multiple
+/// of 1 / clip w for every point.
+vec4 penumbraHomogeneousAt(ivec2 pixel, float depth, float eyeDepthBias)
 {
   // depth - 1 is exact in float for depth >= 0.5, and the matrix's constant column already
   // holds its depth column (summed in double): multiplying NDC z itself, those two columns
   // cancelled in float near the far plane, where a perspective range keeps most of its steps.
   vec4 ndcFromFar = vec4((vec2(pixel) + 0.5) / viewportSize * 2.0 - 1.0,
     (depth - 1.0) * 2.0 - eyeDepthBias, 1.0);
-  vec4 point = clipToLocal * ndcFromFar;
+  return clipToLocal * ndcFromFar;
+}
+
+vec3 penumbraPointAt(ivec2 pixel, float depth, float eyeDepthBias)
+{
+  vec4 point = penumbraHomogeneousAt(pixel, depth, eyeDepthBias);
   return point.xyz / point.w;
 }
 

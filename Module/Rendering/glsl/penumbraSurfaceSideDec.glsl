@@ -1,14 +1,14 @@
 // No point of an opaque surface sees a light sample behind its own plane
 // (penumbra::SeesAboveSurface). Counting needs this beside its counts: it takes the point a
 // little off the surface, towards the eye, for float rounding, and from there the segment to a
-// sample just behind the plane can pass the surface's next edge. The plane's normal comes from
-// the caster meshes' depth pass (LightIntensityBuffer::AttachClearedSurfaceNormals); where VTK
-// drew the visible surface every sample is in front. For counting's shaders: it needs
+// sample just behind the plane can pass the surface's next edge. The plane comes from the caster
+// meshes' depth pass (LightIntensityBuffer::AttachClearedSurfacePlanes); where VTK drew the
+// visible surface every sample is in front. For counting's shaders: it needs
 // //PENUMBRA::DepthPoint::Dec with clipToLocal's origin at counting's reference, and
 // PENUMBRA_SAMPLE_CAPACITY (CountingShader).
-uniform sampler2D surfaceNormals; // octahedral world normals (penumbra::OctahedralEncode)
-uniform int surfaceNormalsDrawn;  // 0: no normal is known anywhere
-const float noSurfaceNormal = 3.0e38; // LightIntensityBuffer::NoSurfaceNormal
+uniform sampler2D surfacePlanes; // world unit normals and offsets (penumbraCasterDepthFS.glsl)
+uniform int surfacePlanesDrawn;  // 0: no plane is known anywhere
+const float noSurfacePlane = 3.0e38; // LightIntensityBuffer::NoSurfacePlane
 // As the wedges' shader has them: the reference point (0, 0, 0, 1) or direction (x, y, z, 0),
 // the samples' offsets from it or their directions, and their largest distance from it.
 uniform vec4 lightWedge;
@@ -19,22 +19,15 @@ uniform float sampleSpread;
 /// where it is not known.
 vec3 penumbraSeenSurfaceNormal(ivec2 pixel, vec3 towardsEye)
 {
-  if (surfaceNormalsDrawn == 0)
+  if (surfacePlanesDrawn == 0)
   {
     return vec3(0.0);
   }
-  vec2 code = texelFetch(surfaceNormals, pixel, 0).rg;
-  if (code.x >= noSurfaceNormal)
+  vec3 n = texelFetch(surfacePlanes, pixel, 0).xyz;
+  if (n.x >= noSurfacePlane)
   {
     return vec3(0.0);
   }
-  // penumbra::OctahedralDecode
-  vec3 n = vec3(code, 1.0 - abs(code.x) - abs(code.y));
-  if (n.z < 0.0)
-  {
-    n.xy = (1.0 - abs(n.yx)) * vec2(code.x >= 0.0 ? 1.0 : -1.0, code.y >= 0.0 ? 1.0 : -1.0);
-  }
-  n = normalize(n);
   return dot(n, towardsEye) < 0.0 ? -n : n;
 }
 
