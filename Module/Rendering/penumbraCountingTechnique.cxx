@@ -193,6 +193,16 @@ void DrawCountedWedges(ShadowFrame& frame, vtkShaderProgram* program, const Shad
 }
 } // namespace
 
+float CountingTechnique::VolumeDepthBias() const
+{
+  // A side that starts on the surface near the point (a silhouette of the centre through the
+  // point's neighbourhood) is rasterized from vertices snapped to the pixel grid, and its depth
+  // there can be off by more than the point's four steps: it counted at random (whole pixels
+  // dark on terminators). Pushed back by as much again at the caster, where it starts; far
+  // from it the push fades, and the counting depth's own margin is what separates them.
+  return 2.0f * CountingDepthBias; // NDC: twice the window depth
+}
+
 bool CountingTechnique::Supported(vtkObject* owner)
 {
   if (this->Support < 0)

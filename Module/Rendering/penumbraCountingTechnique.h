@@ -60,6 +60,7 @@ public:
   void SetHalfResolution(bool half) { this->HalfResolution = half; }
   bool CountsCentreInColour() const override { return true; }
   bool ReadsSurfacePlanes() const override { return true; }
+  float VolumeDepthBias() const override;
   bool ShadowsTranslucentCasters() const override { return true; }
   /// Builds the wedges of the opaque casters that are not culled (after the chooser kept
   /// counting).

@@ -192,6 +192,10 @@ public:
   virtual bool CountsInColour(const ShadowLight&) const { return this->CountsCentreInColour(); }
   /// Whether it reads the scene's depth copy (LightIntensityBuffer::CopyDepth) while drawing.
   virtual bool ReadsDepthCopy() const { return true; }
+  /// NDC depth by which its opaque volumes' sides are pushed away from the eye at the caster,
+  /// where they start on a surface and their rasterized depth is off by more than the point's
+  /// margin in front of it.
+  virtual float VolumeDepthBias() const { return 0.0f; }
   /// Whether it reads the surface planes (LightIntensityBuffer::AttachClearedSurfacePlanes).
   virtual bool ReadsSurfacePlanes() const { return false; }
   /// Whether translucent casters shadow by their opacity (otherwise they are left out).

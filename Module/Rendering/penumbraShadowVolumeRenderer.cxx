@@ -147,7 +147,8 @@ void ShadowVolumeRenderer::DrawOpaqueSample(
     if (!rect.Empty())
     {
       SetScissor(ostate, rect);
-      this->DrawVolume(frame, *caster, light.VolumeKey(k), light.Samples[k], countInColour, 1.0f);
+      this->DrawVolume(frame, *caster, light.VolumeKey(k), light.Samples[k], countInColour, 1.0f,
+        light.Technique ? light.Technique->VolumeDepthBias() : 0.0f);
     }
   }
 }
@@ -213,7 +214,8 @@ PixelRect ShadowVolumeRenderer::DrawTranslucent(const ShadowFrame& frame, const 
 }
 
 void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& caster,
-  const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour, float weight)
+  const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour, float weight,
+  float sideDepthBias)
 {
   VolumeCache& volume = caster.Volumes[key];
   if (volume.Volume.CastingTriangles == 0)
@@ -256,8 +258,10 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     ostate->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
     ostate->vtkglDepthFunc(GL_LESS);
     // Entering a volume takes the light away.
+    program->SetUniformf("depthBias", sideDepthBias);
     this->Triangles += static_cast<vtkIdType>(
       DrawCounted(program, -weight, countInColour, volume.Volume.SideRuns, 0, sides));
+    program->SetUniformf("depthBias", 0.0f);
     if (plan.LightCap)
     {
       program->SetUniformf("frontFaceValue", -weight);
@@ -286,6 +290,7 @@ void ShadowVolumeRenderer::DrawVolume(const ShadowFrame& frame, CasterCache& cas
     vtkOpenGLState::ScopedglEnableDisable depthClamp(ostate, GL_DEPTH_CLAMP);
     ostate->vtkglEnable(GL_DEPTH_CLAMP);
     // Leaving a volume behind the point takes the light away.
+    program->SetUniformf("depthBias", sideDepthBias);
     this->Triangles += static_cast<vtkIdType>(
       DrawCounted(program, weight, countInColour, volume.Volume.SideRuns, 0, sides) +
       DrawCounted(program, weight, countInColour, volume.Volume.DarkCapRuns, sides, darkCap));

@@ -62,11 +62,13 @@ public:
 private:
   /// Draws one caster's volume from `sample` into the stencil or, with `countInColour`, as
   /// -weight per crossing in front of the point (z-pass) or the same total from those behind it
-  /// (z-fail) into colour. It sets the stencil operations and depth function of its draws: its
-  /// callers hold the ScopedDrawState, not it, as it runs per caster and sample.
+  /// (z-fail) into colour, its sides' ends at the caster pushed away from the eye by
+  /// `sideDepthBias` (ShadowTechnique::VolumeDepthBias). It sets the stencil operations and depth
+  /// function of its draws: its callers hold the ScopedDrawState, not it, as it runs per caster
+  /// and sample.
   void DrawVolume(const ShadowFrame& frame, CasterCache& caster,
     const std::pair<vtkLight*, int>& key, const glm::dvec4& sample, bool countInColour,
-    float weight);
+    float weight, float sideDepthBias = 0.0f);
 
   vtkShaderProgram* Program = nullptr;
   vtkIdType Triangles = 0;

@@ -15,8 +15,9 @@ uniform vec4 endPlaneMC;
 // z-fail under a parallel projection, which draws infinity nowhere: the object-space length the
 // swept directions are scaled to (penumbra::ParallelSweepLength); 0 otherwise.
 uniform float sweepLength;
-// Pushes the volume's faces at the caster away from the eye (NDC depth units): the light cap's;
-// see ShadowVolumeRenderer::DrawVolume.
+// Pushes the volume's faces at the caster away from the eye (NDC depth units): the light cap's,
+// and for soft shadow volumes the sides' (ShadowTechnique::VolumeDepthBias); see
+// ShadowVolumeRenderer::DrawVolume.
 uniform float depthBias;
 
 void main()
