@@ -267,11 +267,11 @@ public:
   vtkGetMacro(NumberOfSilhouetteUpdates, vtkIdType);
   /// Bytes of GPU memory the pass held after the last frame: its framebuffer textures (depth
   /// and stencil, depth copy, one light-intensity layer per light, for soft shadow volumes the
-  /// centre count, one byte per pixel and light sample, the visible triangles' normals (8 bytes
-  /// per pixel, with depth from caster meshes), the count offsets, the half-resolution
-  /// targets once used and the deep-count report, the averaged samples' count target once open
-  /// casters were averaged, the plateaus' depth texture and buffer once drawn, and the
-  /// translucent casters' transmission targets once one was drawn) and the casters' vertex,
+  /// counting depth and centre count, one byte per pixel and light sample, the visible
+  /// triangles' planes (16 bytes per pixel, with depth from caster meshes), the count offsets, the
+  /// half-resolution targets once used and the deep-count report, the averaged samples' count
+  /// target once open casters were averaged, the plateaus' depth texture and buffer once drawn, and
+  /// the translucent casters' transmission targets once one was drawn) and the casters' vertex,
   /// index and wedge buffers.
   vtkGetMacro(GraphicsMemoryBytes, vtkIdType);
 
@@ -349,10 +349,11 @@ public:
    * polydata mapper, a surface with no edges, clipping planes or custom shaders; see
    * penumbraCasterDepth.h): one position-only draw each instead of VTK's full shaders, and a
    * closed caster seen from outside only with its hidden faces culled. The depth is the same; on
-   * by default. For soft shadow volumes the same draw also keeps each visible triangle's normal,
-   * which keeps the light samples behind a surface's own facet off it (wedges.md, "Facets at the
-   * terminator"). Off, VTK draws every prop's depth, and near terminators counting may see
-   * samples a facet hides.
+   * by default. For soft shadow volumes the same draw also keeps each visible triangle's plane,
+   * from which counting takes its point on the seen side of the surface, even seen nearly
+   * edge-on, and which keeps the light samples behind a surface's own facet off it (wedges.md,
+   * "Facets at the terminator"). Off, VTK draws every prop's depth, and near terminators or on
+   * far grazing receivers counting may see samples a facet hides or lose ones it does not.
    */
   vtkSetMacro(DepthFromCasterMeshes, bool);
   vtkGetMacro(DepthFromCasterMeshes, bool);
