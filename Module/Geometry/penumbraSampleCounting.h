@@ -168,17 +168,19 @@ struct ViewRay
 /**
  * The window depth at which counting takes a pixel's point: both the wedges' edge terms and the
  * centre's rasterized count read it (penumbraCountingDepthFS.glsl is the shader's copy), so both
- * judge one point. It lies on the view ray in front of the visible surface, on the side the eye
- * sees, so that the sides of the surface's own shadow volume start behind it:
+ * judge one point (the wedges move it two float steps further, for their own frame's rounding).
+ * It lies on the view ray in front of the visible surface, on the side the eye sees, so that
+ * the sides of the surface's own shadow volume start behind it:
  * - `depthBias` (window depth) in front of the scene depth;
  * - where the surface's plane is known (`plane`: unit normal and offset, n . x = w, about the
  *   ray's origin; zero where unknown), `depthBias` in front of the plane's exact depth on the
  *   ray instead, and at least `planeBias` times the ray's ends' distances from the origin off
- *   the plane along its normal. A rasterized depth at a grazing view can be off by more than
- * depthBias, and a move along the view ray barely leaves the plane there. A plane whose depth is
- * not within 1% of the scene depth's distance from the far plane (or 16 depthBias) is not the
- * pixel's and is ignored. The background (sceneDepth >= 1) stays 1, and the result is never below
- * 0.
+ *   the plane along its normal.
+ *
+ * A rasterized depth at a grazing view can be off by more than depthBias, and a move along the
+ * view ray barely leaves the plane there. A plane whose depth is not within 1% of the scene
+ * depth's distance from the far plane (or 16 depthBias) is not the pixel's and is ignored. The
+ * background (sceneDepth >= 1) stays 1, and the result is never below 0.
  */
 VTKPENUMBRAGEOMETRY_EXPORT double CountingPointDepth(double sceneDepth, const ViewRay& ray,
   const glm::dvec4& plane, double depthBias, double planeBias);

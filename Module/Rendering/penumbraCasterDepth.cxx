@@ -198,7 +198,7 @@ bool CasterDepth::DrawCaster(const ShadowFrame& frame, CasterCache& caster)
   // The planes' offsets about an origin near the eye, summed in double: small where the
   // counting point's view rays need them precise.
   const glm::mat4 positionToOrigin(
-    glm::translate(glm::dmat4(1.0), -frame.SurfaceOrigin()) * caster.ObjectToWorld);
+    glm::translate(glm::dmat4(1.0), -frame.SurfacePlanesOrigin) * caster.ObjectToWorld);
   this->Program->SetUniformMatrix4x4(
     "positionToOrigin", const_cast<float*>(glm::value_ptr(positionToOrigin)));
   caster.Mesh->Bind(this->Program);

@@ -36,12 +36,12 @@ constexpr float CountingDepthBias = 4.0f / 16777216.0f;
 /// the ray, the plane and the wedges' point. (1, 16 or 64 steps instead of 4 left more of a
 /// sweep of random scenes off averaging, Documentation/wedges.md.)
 constexpr float CountingPlaneBias = 4.0f / 16777216.0f;
-/// And the share of the point's and the eye's distances from the caster's origin by which it
-/// moves further: where the tight depth range makes depth steps finer than the float rounding
-/// of the coordinates the depth was drawn from, the depth is off by that rounding (a cylinder's
-/// cap drawn 2e-7 off its plane in a user trial, half a depth step then). Two float steps: four
-/// moved grazing terminators of the benchmark's large torus a sample brighter, one left edges
-/// seen at grazing angles off in a sweep of scenes (wedges.md).
+/// The share of the point's and the eye's distances from the caster's origin by which the wedges
+/// move the point further towards the eye: where the tight depth range makes depth steps finer than
+/// the float rounding of the coordinates the depth was drawn from, the depth is off by that
+/// rounding (a cylinder's cap drawn 2e-7 off its plane in a user trial, half a depth step then).
+/// Two float steps: four moved grazing terminators of the benchmark's large torus a sample
+/// brighter, one left edges seen at grazing angles off in a sweep of scenes (wedges.md).
 constexpr float CountingEyeFloatBias = 2.0f / 16777216.0f;
 
 /// The largest difference of counted neighbours' visibilities that half-resolution counting
@@ -301,6 +301,11 @@ bool CountingTechnique::DrawCountingDepth(ShadowFrame& frame)
         vtkTextureObject::Nearest) &&
     !this->CountingDepth->AllocateDepth(frame.Size[0], frame.Size[1], vtkTextureObject::Float32))
   {
+    this->CountingDepth->ReleaseGraphicsResources(window);
+    vtkWarningWithObjectMacro(frame.Programs->Owner,
+      "OpenGL refused a " << frame.Size[0] << "x" << frame.Size[1]
+                          << " float depth texture for soft shadow volumes' points: lights average "
+                             "their samples' hard shadows instead (the same image, more slowly).");
     return false;
   }
   // The centre's volumes are counted against it: it stays attached until Finish.
@@ -312,10 +317,11 @@ bool CountingTechnique::DrawCountingDepth(ShadowFrame& frame)
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
   ActiveTextures surface(frame);
   frame.SetDepthUniforms(program);
   frame.SetSurfaceSideUniforms(program);
-  frame.SetClipToLocal(program, frame.SurfaceOrigin());
+  frame.SetClipToLocal(program, frame.SurfacePlanesOrigin);
   program->SetUniformf("depthBias", CountingDepthBias);
   program->SetUniformf("planeBias", CountingPlaneBias);
   frame.FullScreen->Draw(program, this->DepthVAO);

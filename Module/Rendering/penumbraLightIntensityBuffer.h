@@ -50,7 +50,7 @@ public:
   /// Makes the surface planes (an RGBA32F texture of the buffer's size, allocated on first use)
   /// colour attachment 0 and the draw buffer, cleared to NoSurfacePlane; the framebuffer must
   /// be bound. The caster meshes' depth shader writes there each fragment's triangle plane, its
-  /// unit normal in world space and its offset about ShadowFrame::SurfaceOrigin, which
+  /// unit normal in world space and its offset about ShadowFrame::SurfacePlanesOrigin, which
   /// counting's point (penumbra::CountingPointDepth) and own-surface test
   /// (penumbra::SeesAboveSurface) read. False, with nothing attached, where OpenGL refuses it.
   bool AttachClearedSurfacePlanes(vtkOpenGLRenderWindow* window);

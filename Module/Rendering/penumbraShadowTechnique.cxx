@@ -66,12 +66,6 @@ void ShadowFrame::AttachDepth(vtkTextureObject* depth) const
   this->Buffer->AttachDepth(depth);
 }
 
-glm::dvec3 ShadowFrame::SurfaceOrigin() const
-{
-  return 0.25 *
-    (this->NearCorners[0] + this->NearCorners[1] + this->NearCorners[2] + this->NearCorners[3]);
-}
-
 void ShadowFrame::AttachClearedFloatTarget(vtkTextureObject* texture, int components) const
 {
   if (TextureNeedsAllocation(texture, this->Window, this->Size[0], this->Size[1], 1, components,

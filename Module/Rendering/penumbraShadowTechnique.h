@@ -117,6 +117,9 @@ struct ShadowFrame
   /// The visible triangles' planes where caster meshes drew the depth (LightIntensityBuffer::
   /// AttachClearedSurfacePlanes), or nullptr where no light asked for them this frame.
   vtkTextureObject* SurfacePlanes = nullptr;
+  /// The origin about which the surface planes' offsets are given: the near plane's centre in
+  /// the frame that drew them (a kept depth keeps them from an earlier frame).
+  glm::dvec3 SurfacePlanesOrigin{ 0.0 };
   ShaderPrograms* Programs = nullptr;
   FullScreenTriangle* FullScreen = nullptr;
   FullScreenTriangle::VAO* ResolveVAO = nullptr;
@@ -141,8 +144,6 @@ struct ShadowFrame
   /// Makes `depth` the LI framebuffer's depth attachment in place of its depth-stencil, or with
   /// nullptr the depth-stencil again (LightIntensityBuffer::AttachDepth).
   void AttachDepth(vtkTextureObject* depth) const;
-  /// The origin about which the surface planes' offsets are given: the near plane's centre.
-  glm::dvec3 SurfaceOrigin() const;
   /// Makes `texture` a float target of `components` channels (R32F, RGBA32F) and the
   /// viewport's size in this window, allocating it when it is not one yet, attaches it as
   /// AttachColour does and clears it to 0 (within the scissor box, when the scissor test is on)

@@ -229,11 +229,13 @@ public:
   penumbra::CasterDepth CasterDepth;
   /// The props whose depth RenderCasterDepth draws from their caster meshes this frame.
   std::vector<vtkProp*> DepthFromMeshes;
-  /// Whether the depth kept in LI has its surfaces' normals where caster meshes drew it (a
-  /// counted light reads them); whether this frame's lights want them, as chosen before their
-  /// casters are updated (the scene's inputs record that, and Automatic may then turn a counted
-  /// light to averaging, which a later frame with the depth kept may undo).
+  /// Whether the depth kept in LI has its surfaces' planes where caster meshes drew it (a
+  /// counted light reads them), and the origin of their offsets; whether this frame's lights
+  /// want them, as chosen before their casters are updated (the scene's inputs record that,
+  /// and Automatic may then turn a counted light to averaging, which a later frame with the
+  /// depth kept may undo).
   bool SurfacePlanesDrawn = false;
+  glm::dvec3 SurfacePlanesOrigin{ 0.0 };
   bool SurfacePlanesForDepth = false;
   bool SurfacePlanesWanted() const
   {
@@ -1018,18 +1020,21 @@ void vtkSoftShadowPass::RenderCasterDepth(const vtkRenderState* s)
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglDisable(GL_STENCIL_TEST);
   ostate->vtkglDisable(GL_BLEND);
+  // The planes' offsets about the near plane's centre: small where the view rays need them.
+  const std::array<glm::dvec3, 4>& corners = internals.NearCorners;
+  internals.SurfacePlanesOrigin = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
   const penumbra::ShadowFrame frame = internals.MakeFrame();
-  // VTK first: it writes no normals, so a surface it drew later could hide a mesh's normal
-  // under its own depth.
+  // VTK first: it writes no planes, so a surface it drew later could hide a mesh's plane under
+  // its own depth.
   std::vector<vtkProp*> drawnByVTK = internals.CasterDepth.Select(frame, internals.DepthFromMeshes);
   this->RenderDepthWithVTK(s, drawnByVTK);
-  const bool normals = internals.SurfacePlanesForDepth && internals.CasterDepth.HasSelected();
-  if (!normals)
+  const bool planes = internals.SurfacePlanesForDepth && internals.CasterDepth.HasSelected();
+  if (!planes)
   {
     internals.LI.ReleaseSurfacePlanes(internals.Window);
   }
   internals.SurfacePlanesDrawn =
-    normals && internals.LI.AttachClearedSurfacePlanes(internals.Window);
+    planes && internals.LI.AttachClearedSurfacePlanes(internals.Window);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   std::vector<vtkProp*> left = internals.CasterDepth.Draw(frame, internals.SurfacePlanesDrawn);
@@ -1220,8 +1225,8 @@ bool vtkSoftShadowPass::RenderLightIntensity(vtkOpenGLRenderWindow* window)
     internals.LI.BindLayer(light.Layer);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    internals.StageTimes.Begin(penumbra::StageTimes::Volumes); // counting's depth included
     light.Technique->BeginVolumes(frame, light);
-    internals.StageTimes.Begin(penumbra::StageTimes::Volumes);
     for (std::size_t k = 0; k < light.Samples.size(); ++k)
     {
       internals.Volumes.DrawOpaqueSample(frame, light, k);
@@ -1272,6 +1277,7 @@ penumbra::ShadowFrame vtkSoftShadowPass::vtkInternals::MakeFrame()
   frame.Casters = &this->Casters;
   frame.Buffer = &this->LI;
   frame.SurfacePlanes = this->SurfacePlanesDrawn ? this->LI.GetSurfacePlanes() : nullptr;
+  frame.SurfacePlanesOrigin = this->SurfacePlanesOrigin;
   frame.Programs = &this->Programs;
   frame.FullScreen = &this->FullScreen;
   frame.ResolveVAO = &this->ResolveVAO;

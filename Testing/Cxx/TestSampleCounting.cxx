@@ -667,12 +667,16 @@ void TestCountingPointDepth(std::mt19937& rng)
   const glm::dvec3 normal = glm::normalize(ray.Near - ray.Far);
   const double exact = WindowDepth(clips[0], hit);
   const glm::dvec4 elsewhere(normal, glm::dot(normal, ray.Near + 0.3 * (ray.Far - ray.Near)));
+  // A plane along the ray (seen exactly edge-on) gives no depth of its own.
+  const glm::dvec3 along = glm::normalize(glm::cross(ray.Far - ray.Near, glm::dvec3(0, 0, 1)));
+  const glm::dvec4 edgeOn(along, glm::dot(along, hit));
   Check(CountingPointDepth(1.0, ray, glm::dvec4(normal, 0.0), depthBias, planeBias) == 1.0 &&
       CountingPointDepth(exact, ray, glm::dvec4(0.0), depthBias, planeBias) == exact - depthBias &&
       CountingPointDepth(exact, ray, elsewhere, depthBias, planeBias) == exact - depthBias &&
+      CountingPointDepth(exact, ray, edgeOn, depthBias, planeBias) == exact - depthBias &&
       CountingPointDepth(0.5 * depthBias, ray, glm::dvec4(0.0), depthBias, planeBias) == 0.0,
-    "the background stays at the far plane; no plane, or another surface's, takes the scene "
-    "depth moved; never below 0");
+    "the background stays at the far plane; no plane, another surface's or one seen edge-on "
+    "takes the scene depth moved; never below 0");
 }
 
 /// The own-surface test keeps the samples on the side the eye sees, whichever way the normal

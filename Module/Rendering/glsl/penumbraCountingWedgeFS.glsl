@@ -13,7 +13,8 @@
 //
 // Counter texel t counts the pixel counterStride * t: every pixel, or at half
 // resolution every other pixel in each direction, whose texel centre the wedges' vertex shader
-// puts on that pixel's centre, so that the depth test and the point agree.
+// puts on that pixel's centre, so that the depth test (against the scene depth) and the point
+// (from counting's depth at that pixel) are the same pixel's.
 layout(early_fragment_tests) in;
 
 //PENUMBRA::DepthPoint::Dec

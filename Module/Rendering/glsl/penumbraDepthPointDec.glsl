@@ -1,4 +1,5 @@
-// The visible point of a pixel, from the scene depth, in the shader's local frame: world space
+// The point of a pixel at a depth (the scene's, or for the counting wedges counting's own,
+// penumbraCountingDepthFS.glsl), in the shader's local frame: world space
 // relative to the caster's origin for the wedge and counting shaders (WedgeBuffer::Origin),
 // relative to the light (world space for a directional light) for the horizon cap, relative to
 // the receiver plane's origin for the plateau resolve. Shared through //PENUMBRA::DepthPoint::Dec.
