@@ -161,9 +161,10 @@ private:
   vtkTextureObject* Planes;
 };
 
-/// Sets what //PENUMBRA::SurfaceSide::Dec reads for a full-screen resolve while ActiveTextures
-/// lives: the textures' units (ShadowFrame::SetSurfaceSideUniforms) and, with `light`, the
-/// depth point about counting's reference and the light's samples, which a program keeps.
+/// Sets what a full-screen pass reads of the scene depth and surface planes while ActiveTextures
+/// lives: the textures' units (ShadowFrame::SetSurfaceSideUniforms) and, with `light`, what
+/// //PENUMBRA::SurfaceSide::Dec reads besides: the depth point about counting's reference and the
+/// light's samples, which a program keeps.
 void SetSurfaceSide(
   const ShadowFrame& frame, vtkShaderProgram* program, const ShadowLight* light = nullptr)
 {
@@ -319,8 +320,7 @@ bool CountingTechnique::DrawCountingDepth(ShadowFrame& frame)
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglEnable(GL_DEPTH_CLAMP); // the full-screen triangle lies on the far plane
   ActiveTextures surface(frame);
-  frame.SetDepthUniforms(program);
-  frame.SetSurfaceSideUniforms(program);
+  SetSurfaceSide(frame, program);
   frame.SetClipToLocal(program, frame.SurfacePlanesOrigin);
   program->SetUniformf("depthBias", CountingDepthBias);
   program->SetUniformf("planeBias", CountingPlaneBias);

@@ -9,6 +9,7 @@
 #include "vtk_glew.h"
 
 #include "penumbraDepthPointDec.h"
+#include "penumbraSurfacePlaneDec.h"
 #include "penumbraSurfaceSideDec.h"
 
 #include <algorithm>
@@ -114,6 +115,8 @@ vtkShaderProgram* ShaderPrograms::Ready(vtkOpenGLRenderWindow* window, const cha
   std::string fragment = fragmentShader;
   vtkShaderProgram::Substitute(fragment, "//PENUMBRA::DepthPoint::Dec", penumbraDepthPointDec);
   vtkShaderProgram::Substitute(fragment, "//PENUMBRA::SurfaceSide::Dec", penumbraSurfaceSideDec);
+  // (After SurfaceSide, which holds it.)
+  vtkShaderProgram::Substitute(fragment, "//PENUMBRA::SurfacePlane::Dec", penumbraSurfacePlaneDec);
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vertexShader, fragment.c_str(), "");
   if (!program && this->Failed.insert(name).second)

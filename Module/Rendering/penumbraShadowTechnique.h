@@ -161,7 +161,7 @@ struct ShadowFrame
   /// SetClipToLocal about a light point (x, y, z, 1), and `lightWedge` (0, 0, 0, 1) there; or,
   /// for a direction (x, y, z, 0), about the world's origin, with `lightWedge` the direction.
   void SetClipToLight(vtkShaderProgram* program, const glm::dvec4& light) const;
-  /// Sets the uniforms of //PENUMBRA::SurfaceSide::Dec: the surface planes' texture unit, or
+  /// Sets the uniforms of //PENUMBRA::SurfacePlane::Dec: the surface planes' texture unit, or
   /// that there are none. The caller activates SurfacePlanes (where it is not nullptr) and the
   /// depth copy.
   void SetSurfaceSideUniforms(vtkShaderProgram* program) const;

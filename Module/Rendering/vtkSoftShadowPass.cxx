@@ -958,7 +958,7 @@ void vtkSoftShadowPass::RemoveReceiverKeys()
 namespace
 {
 /// Binds the LI framebuffer for the depth pass: no colour output (the LI texture is bound for
-/// sampling while it draws; the caster meshes' draw attaches the surface normals itself), the
+/// sampling while it draws; the caster meshes' draw attaches the surface planes itself), the
 /// viewport's size, depth test and writes on. The bindings and state are restored when it goes
 /// out of scope.
 class ScopedDepthDrawing

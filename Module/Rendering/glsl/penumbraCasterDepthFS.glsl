@@ -1,9 +1,9 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 // Depth, and where the pass asks for them (writePlanes), each fragment's triangle plane: its
-// unit normal in world space and its offset about ShadowFrame::SurfacePlanesOrigin, for
-// counting's
-// point (penumbraCountingDepthFS.glsl) and own-surface test (penumbraSurfaceSideDec.glsl). The
+// unit normal in world space and its offset about ShadowFrame::SurfacePlanesOrigin
+// (penumbraSurfacePlaneDec.glsl reads it back), for counting's point
+// (penumbraCountingDepthFS.glsl) and own-surface test (penumbraSurfaceSideDec.glsl). The
 // position's derivatives across the pixel quad lie in the triangle's plane, and any
 // interpolated position lies on it up to the rounding of its coordinates, however the
 // rasterized depth is off. With no colour attachment drawn to, only the depth is kept.

@@ -7,11 +7,9 @@
 // pass left the surface's plane, in front of the plane's own depth on the view ray and at least
 // a float margin off it.
 //PENUMBRA::DepthPoint::Dec
-uniform sampler2D surfacePlanes; // (unit normal, offset) about clipToLocal's origin
-uniform int surfacePlanesDrawn;  // 0: no plane is known anywhere
-uniform float depthBias;         // window depth
-uniform float planeBias;         // share of the ray's ends' distances from the origin
-const float noSurfacePlane = 3.0e38; // LightIntensityBuffer::NoSurfacePlane
+//PENUMBRA::SurfacePlane::Dec
+uniform float depthBias; // window depth
+uniform float planeBias; // share of the ray's ends' distances from clipToLocal's origin
 
 /// Window depth - 1 at the share u of the way from the ray's far end back to its near one.
 float depthMinusOne(float u, float farOverNearW)
@@ -29,8 +27,7 @@ void main()
     return;
   }
   gl_FragDepth = sceneDepth - min(depthBias, sceneDepth);
-  vec4 plane =
-    surfacePlanesDrawn != 0 ? texelFetch(surfacePlanes, pixel, 0) : vec4(noSurfacePlane);
+  vec4 plane = penumbraSurfacePlane(pixel); // about clipToLocal's origin
   if (plane.x >= noSurfacePlane)
   {
     return;

@@ -6,9 +6,7 @@
 // visible surface every sample is in front. For counting's shaders: it needs
 // //PENUMBRA::DepthPoint::Dec with clipToLocal's origin at counting's reference, and
 // PENUMBRA_SAMPLE_CAPACITY (CountingShader).
-uniform sampler2D surfacePlanes; // world unit normals and offsets (penumbraCasterDepthFS.glsl)
-uniform int surfacePlanesDrawn;  // 0: no plane is known anywhere
-const float noSurfacePlane = 3.0e38; // LightIntensityBuffer::NoSurfacePlane
+//PENUMBRA::SurfacePlane::Dec
 // As the wedges' shader has them: the reference point (0, 0, 0, 1) or direction (x, y, z, 0),
 // the samples' offsets from it or their directions, and their largest distance from it.
 uniform vec4 lightWedge;
@@ -19,11 +17,7 @@ uniform float sampleSpread;
 /// where it is not known.
 vec3 penumbraSeenSurfaceNormal(ivec2 pixel, vec3 towardsEye)
 {
-  if (surfacePlanesDrawn == 0)
-  {
-    return vec3(0.0);
-  }
-  vec3 n = texelFetch(surfacePlanes, pixel, 0).xyz;
+  vec3 n = penumbraSurfacePlane(pixel).xyz;
   if (n.x >= noSurfacePlane)
   {
     return vec3(0.0);
